@@ -1,0 +1,75 @@
+#pragma once
+/// \file
+/// The exceptions pgm throws for bad input. Programmer mistakes are PGM_ASSERTs instead
+/// (pgm/core/assert.hpp); everything here is something a user can cause and should read.
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pgm {
+
+/// Base of every error pgm reports about its input.
+class error : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Data that cannot be used: missing columns, values of the wrong kind, empty data.
+class data_error : public error {
+ public:
+  using error::error;
+};
+
+/// A problem at a known place in a text file (CSV, BIF, JSON): "file:line:column: what".
+class parse_error : public data_error {
+ public:
+  parse_error(std::string file, std::size_t line, std::size_t column, const std::string& what)
+      : data_error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + what),
+        file_(std::move(file)),
+        line_(line),
+        column_(column) {}
+
+  [[nodiscard]] const std::string& file() const noexcept { return file_; }
+  [[nodiscard]] std::size_t line() const noexcept { return line_; }
+  [[nodiscard]] std::size_t column() const noexcept { return column_; }
+
+ private:
+  std::string file_;
+  std::size_t line_;
+  std::size_t column_;
+};
+
+/// A model that is inconsistent: unknown variables or states, mismatched cardinalities, tables
+/// that are not distributions.
+class model_error : public error {
+ public:
+  using error::error;
+};
+
+/// An edge that would close a directed cycle. `cycle()` lists the nodes along it, first == last.
+class not_a_dag : public model_error {
+ public:
+  explicit not_a_dag(std::vector<std::string> cycle)
+      : model_error("adding this edge closes the cycle " + join(cycle)), cycle_(std::move(cycle)) {}
+
+  [[nodiscard]] const std::vector<std::string>& cycle() const noexcept { return cycle_; }
+
+ private:
+  static std::string join(const std::vector<std::string>& nodes) {
+    std::string text;
+    for (const auto& node : nodes) text += (text.empty() ? "" : " -> ") + node;
+    return text;
+  }
+  std::vector<std::string> cycle_;
+};
+
+/// A file that cannot be opened, read or written.
+class io_error : public error {
+ public:
+  using error::error;
+};
+
+}  // namespace pgm

@@ -1,0 +1,68 @@
+#pragma once
+/// \file
+/// Internal, do not depend on it: reading a whole file and writing one atomically. Output is
+/// written to a temporary file beside the target and renamed over it only once complete, so a
+/// failure never leaves a half-written file that looks finished.
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <system_error>
+
+#include <unistd.h>
+
+#include "pgm/core/error.hpp"
+
+namespace pgm::detail {
+
+[[nodiscard]] inline std::string read_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw io_error("cannot read '" + path.string() + "': it is a directory");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw io_error("cannot open '" + path.string() + "': " + std::strerror(errno));
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw io_error("cannot read '" + path.string() + "'");
+  return std::move(buffer).str();
+}
+
+/// Calls `write` with a stream to a temporary file and renames it to `path` on success.
+/// On any failure — including an exception from `write` — the temporary file is removed and
+/// the previous content of `path`, if any, is left untouched.
+inline void write_file_atomically(const std::filesystem::path& path,
+                                  const std::function<void(std::ostream&)>& write) {
+  const auto directory = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  std::error_code ec;
+  if (!std::filesystem::is_directory(directory, ec)) {
+    throw io_error("cannot write '" + path.string() + "': the directory '" + directory.string() +
+                   "' does not exist");
+  }
+  std::random_device entropy;
+  const auto temporary = std::filesystem::path(
+      path.string() + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(entropy()));
+  try {
+    {
+      std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+      if (!out) {
+        throw io_error("cannot write '" + path.string() + "': " + std::strerror(errno));
+      }
+      write(out);
+      out.flush();
+      if (!out) throw io_error("cannot write '" + path.string() + "' (disk full?)");
+    }
+    std::filesystem::rename(temporary, path, ec);
+    if (ec) throw io_error("cannot write '" + path.string() + "': " + ec.message());
+  } catch (...) {
+    std::filesystem::remove(temporary, ec);
+    throw;
+  }
+}
+
+}  // namespace pgm::detail

@@ -1,0 +1,550 @@
+#pragma once
+/// \file
+/// The Bayesian Interchange Format (BIF) that pgmpy, bnlearn and aGrUM read and write.
+/// State names and their order are kept. pgm also writes a variable's interval edges and
+/// semantic tags as `property` lines, which other tools ignore and pgm reads back.
+///
+/// Reading accepts `probability` blocks with one `(parent states) values;` line per
+/// configuration, `default values;` for the rest, and `table values;` for nodes without
+/// parents. (`table` for a node with parents is ordered differently by different tools, so
+/// it is refused rather than guessed.)
+
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/error.hpp"
+#include "pgm/detail/file.hpp"
+#include "pgm/detail/text.hpp"
+
+namespace pgm {
+
+namespace detail {
+
+struct bif_token {
+  enum class kind { word, symbol, end } type = kind::end;
+  std::string text;
+  std::size_t line = 0;
+  std::size_t column = 0;
+};
+
+class bif_lexer {
+ public:
+  bif_lexer(std::string_view text, std::string source) : text_(text), source_(std::move(source)) {}
+
+  [[nodiscard]] const std::string& source() const noexcept { return source_; }
+
+  bif_token next() {
+    skip_space_and_comments();
+    bif_token token;
+    token.line = line_;
+    token.column = pos_ - line_start_ + 1;
+    if (pos_ >= text_.size()) return token;
+    const char c = text_[pos_];
+    if (c == '"') {
+      ++pos_;
+      const auto start = pos_;
+      while (pos_ < text_.size() && text_[pos_] != '"' && text_[pos_] != '\n') ++pos_;
+      if (pos_ >= text_.size() || text_[pos_] != '"') {
+        throw parse_error(source_, token.line, token.column, "a quoted name is never closed");
+      }
+      token.type = bif_token::kind::word;
+      token.text = std::string(text_.substr(start, pos_ - start));
+      ++pos_;
+      return token;
+    }
+    if (is_symbol(c)) {
+      token.type = bif_token::kind::symbol;
+      token.text = std::string(1, c);
+      ++pos_;
+      return token;
+    }
+    const auto start = pos_;
+    while (pos_ < text_.size() && !is_symbol(text_[pos_]) && !is_space(text_[pos_]) &&
+           text_[pos_] != '"' && !comment_starts(pos_)) {
+      ++pos_;
+    }
+    token.type = bif_token::kind::word;
+    token.text = std::string(text_.substr(start, pos_ - start));
+    return token;
+  }
+
+  /// Everything up to (not including) the next ';', for property values.
+  std::string raw_until_semicolon() {
+    const auto start = pos_;
+    while (pos_ < text_.size() && text_[pos_] != ';') {
+      if (text_[pos_] == '\n') {
+        ++line_;
+        line_start_ = pos_ + 1;
+      }
+      ++pos_;
+    }
+    return std::string(trim(text_.substr(start, pos_ - start)));
+  }
+
+ private:
+  static bool is_symbol(char c) {
+    return c == '{' || c == '}' || c == '(' || c == ')' || c == '[' || c == ']' || c == ';' ||
+           c == ',' || c == '|';
+  }
+  static bool is_space(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
+  bool comment_starts(std::size_t p) const {
+    return p + 1 < text_.size() && text_[p] == '/' && (text_[p + 1] == '/' || text_[p + 1] == '*');
+  }
+
+  void skip_space_and_comments() {
+    while (pos_ < text_.size()) {
+      const char c = text_[pos_];
+      if (c == '\n') {
+        ++pos_;
+        ++line_;
+        line_start_ = pos_;
+      } else if (is_space(c)) {
+        ++pos_;
+      } else if (comment_starts(pos_) && text_[pos_ + 1] == '/') {
+        while (pos_ < text_.size() && text_[pos_] != '\n') ++pos_;
+      } else if (comment_starts(pos_)) {
+        const auto line = line_;
+        const auto column = pos_ - line_start_ + 1;
+        pos_ += 2;
+        while (pos_ + 1 < text_.size() && !(text_[pos_] == '*' && text_[pos_ + 1] == '/')) {
+          if (text_[pos_] == '\n') {
+            ++line_;
+            line_start_ = pos_ + 1;
+          }
+          ++pos_;
+        }
+        if (pos_ + 1 >= text_.size()) throw parse_error(source_, line, column, "a comment is never closed");
+        pos_ += 2;
+      } else {
+        return;
+      }
+    }
+  }
+
+  std::string_view text_;
+  std::string source_;
+  std::size_t pos_ = 0;
+  std::size_t line_ = 1;
+  std::size_t line_start_ = 0;
+};
+
+class bif_parser {
+ public:
+  bif_parser(std::string_view text, std::string source) : lexer_(text, std::move(source)) {
+    advance();
+  }
+
+  bayesian_network parse() {
+    while (current_.type != bif_token::kind::end) {
+      const auto keyword = expect_word("'network', 'variable' or 'probability'");
+      if (keyword.text == "network") {
+        parse_network();
+      } else if (keyword.text == "variable") {
+        parse_variable();
+      } else if (keyword.text == "probability") {
+        parse_probability();
+      } else {
+        fail(keyword, "expected 'network', 'variable' or 'probability', found '" + keyword.text + "'");
+      }
+    }
+    if (declared_.empty()) fail(current_, "the file declares no variables");
+    std::vector<cpt<double>> tables;
+    std::vector<variable> variables;
+    for (const auto& name : order_) {
+      const auto& decl = declared_.at(name);
+      if (!decl.table) {
+        throw parse_error(lexer_.source(), decl.where.line, decl.where.column,
+                          "variable '" + name + "' has no probability block");
+      }
+      variables.push_back(decl.var);
+    }
+    network_structure structure(variables);
+    for (const auto& name : order_) {
+      const auto& decl = declared_.at(name);
+      for (const auto& parent : decl.table->parents) structure.add_edge(parent, name);
+    }
+    for (const auto& name : order_) tables.push_back(build_table(declared_.at(name)));
+    return bayesian_network(std::move(structure), std::move(tables));
+  }
+
+ private:
+  struct probability_block {
+    bif_token where;
+    std::vector<std::string> parents;
+    std::map<std::vector<std::string>, std::pair<bif_token, std::vector<double>>> rows;
+    std::optional<std::vector<double>> table;
+    std::optional<std::vector<double>> fallback;  // `default`
+  };
+  struct declaration {
+    bif_token where;
+    variable var;
+    std::optional<probability_block> table;
+  };
+
+  void advance() { current_ = lexer_.next(); }
+
+  [[noreturn]] void fail(const bif_token& at, const std::string& what) const {
+    throw parse_error(lexer_.source(), at.line, at.column, what);
+  }
+
+  bif_token expect_word(const std::string& what) {
+    if (current_.type != bif_token::kind::word) {
+      fail(current_, "expected " + what + ", found " + describe(current_));
+    }
+    auto token = current_;
+    advance();
+    return token;
+  }
+  void expect_symbol(char symbol) {
+    if (current_.type != bif_token::kind::symbol || current_.text[0] != symbol) {
+      fail(current_, std::string("expected '") + symbol + "', found " + describe(current_));
+    }
+    advance();
+  }
+  bool accept_symbol(char symbol) {
+    if (current_.type == bif_token::kind::symbol && current_.text[0] == symbol) {
+      advance();
+      return true;
+    }
+    return false;
+  }
+  static std::string describe(const bif_token& token) {
+    return token.type == bif_token::kind::end ? "the end of the file" : "'" + token.text + "'";
+  }
+
+  /// The text of a `property` statement up to its ';'. The first token has been lexed
+  /// already (one token of lookahead), the rest is taken raw.
+  std::string property_value() {
+    if (accept_symbol(';')) return {};
+    auto value = current_.text + " " + lexer_.raw_until_semicolon();
+    advance();
+    expect_symbol(';');
+    return value;
+  }
+
+  void parse_network() {
+    if (current_.type == bif_token::kind::word) advance();  // the network's name
+    expect_symbol('{');
+    while (!accept_symbol('}')) {
+      const auto keyword = expect_word("'property' or '}'");
+      if (keyword.text != "property") fail(keyword, "expected 'property' or '}', found '" + keyword.text + "'");
+      property_value();
+    }
+  }
+
+  void parse_variable() {
+    const auto name = expect_word("a variable name");
+    if (declared_.contains(name.text)) fail(name, "variable '" + name.text + "' is declared twice");
+    expect_symbol('{');
+    std::optional<std::vector<std::string>> states;
+    semantic_tags tags;
+    std::optional<std::pair<bif_token, std::string>> edges_text;
+    while (!accept_symbol('}')) {
+      const auto keyword = expect_word("'type' or 'property'");
+      if (keyword.text == "type") {
+        const auto kind = expect_word("'discrete'");
+        if (kind.text != "discrete") fail(kind, "only discrete variables are supported, found '" + kind.text + "'");
+        expect_symbol('[');
+        const auto count_token = expect_word("the number of states");
+        const auto count = parse_double(count_token.text);
+        if (!count || *count < 1 || *count != static_cast<double>(static_cast<std::size_t>(*count))) {
+          fail(count_token, "expected the number of states, found '" + count_token.text + "'");
+        }
+        expect_symbol(']');
+        expect_symbol('{');
+        std::vector<std::string> labels;
+        while (!accept_symbol('}')) {
+          labels.push_back(expect_word("a state name").text);
+          accept_symbol(',');
+        }
+        if (labels.size() != static_cast<std::size_t>(*count)) {
+          fail(count_token, "variable '" + name.text + "' declares " + count_token.text +
+                                " states but lists " + std::to_string(labels.size()));
+        }
+        expect_symbol(';');
+        states = std::move(labels);
+      } else if (keyword.text == "property") {
+        const auto where = current_;
+        const auto text = property_value();
+        const auto eq = text.find('=');
+        const auto key = eq == std::string::npos ? std::string() : std::string(trim(text.substr(0, eq)));
+        const auto value = eq == std::string::npos ? std::string() : std::string(trim(text.substr(eq + 1)));
+        if (key == "quantity") tags.quantity = value;
+        if (key == "unit") tags.unit = value;
+        if (key == "role") tags.role = value;
+        if (key == "edges") edges_text = std::make_pair(where, value);
+      } else {
+        fail(keyword, "expected 'type' or 'property', found '" + keyword.text + "'");
+      }
+    }
+    if (!states) fail(name, "variable '" + name.text + "' has no 'type discrete' line");
+    try {
+      variable var(name.text, std::move(*states), tags);
+      if (edges_text) {
+        std::vector<double> edges;
+        for (const auto& piece : split(edges_text->second, ',')) {
+          const auto value = parse_double(piece);
+          if (!value) fail(edges_text->first, "the edges of '" + name.text + "' must be numbers");
+          edges.push_back(*value);
+        }
+        var.set_edges(std::move(edges));
+      }
+      declared_.emplace(name.text, declaration{name, std::move(var), std::nullopt});
+      order_.push_back(name.text);
+    } catch (const model_error& e) {
+      fail(name, e.what());
+    }
+  }
+
+  std::vector<double> parse_numbers() {
+    std::vector<double> values;
+    while (!accept_symbol(';')) {
+      const auto token = expect_word("a probability or ';'");
+      const auto value = parse_double(token.text);
+      if (!value || !std::isfinite(*value)) fail(token, "expected a probability, found '" + token.text + "'");
+      values.push_back(*value);
+      accept_symbol(',');
+    }
+    return values;
+  }
+
+  void parse_probability() {
+    expect_symbol('(');
+    const auto child = expect_word("the variable's name");
+    const auto it = declared_.find(child.text);
+    if (it == declared_.end()) fail(child, "probability block for '" + child.text + "', which is not declared");
+    if (it->second.table) fail(child, "'" + child.text + "' has two probability blocks");
+    probability_block block;
+    block.where = child;
+    if (accept_symbol('|')) {
+      while (!accept_symbol(')')) {
+        const auto parent = expect_word("a parent's name");
+        if (!declared_.contains(parent.text)) fail(parent, "parent '" + parent.text + "' is not declared");
+        block.parents.push_back(parent.text);
+        accept_symbol(',');
+      }
+    } else {
+      expect_symbol(')');
+    }
+    expect_symbol('{');
+    while (!accept_symbol('}')) {
+      const auto at = current_;
+      if (accept_symbol('(')) {
+        std::vector<std::string> labels;
+        while (!accept_symbol(')')) {
+          labels.push_back(expect_word("a parent state").text);
+          accept_symbol(',');
+        }
+        auto values = parse_numbers();
+        if (!block.rows.emplace(labels, std::make_pair(at, std::move(values))).second) {
+          fail(at, "this configuration of the parents of '" + child.text + "' is given twice");
+        }
+        continue;
+      }
+      const auto keyword = expect_word("'(', 'table', 'default' or '}'");
+      if (keyword.text == "table") {
+        block.table = parse_numbers();
+        block.where = keyword;
+      } else if (keyword.text == "default") {
+        block.fallback = parse_numbers();
+      } else if (keyword.text == "property") {
+        property_value();
+      } else {
+        fail(keyword, "expected '(', 'table', 'default' or '}', found '" + keyword.text + "'");
+      }
+    }
+    it->second.table = std::move(block);
+  }
+
+  cpt<double> build_table(const declaration& decl) {
+    const auto& block = *decl.table;
+    std::vector<variable> parents;
+    for (const auto& name : block.parents) parents.push_back(declared_.at(name).var);
+    const std::size_t j = decl.var.cardinality();
+    mixed_radix radix = [&] {
+      std::vector<std::size_t> cards;
+      for (const auto& p : parents) cards.push_back(p.cardinality());
+      return mixed_radix(cards);
+    }();
+    std::vector<double> values(j * radix.size());
+    auto check_count = [&](const bif_token& at, const std::vector<double>& row) {
+      if (row.size() != j) {
+        fail(at, "expected " + std::to_string(j) + " probabilities for '" + decl.var.name() +
+                     "', found " + std::to_string(row.size()));
+      }
+    };
+    if (block.table) {
+      if (!parents.empty()) {
+        fail(block.where, "'table' for '" + decl.var.name() +
+                              "', which has parents, is ordered differently by different tools; "
+                              "write one '(parent states) probabilities;' line per configuration");
+      }
+      check_count(block.where, *block.table);
+      values = *block.table;
+    } else {
+      std::vector<bool> filled(radix.size(), false);
+      for (const auto& [labels, row] : block.rows) {
+        const auto& [at, probabilities] = row;
+        if (labels.size() != parents.size()) {
+          fail(at, "expected states of " + std::to_string(parents.size()) + " parents of '" +
+                       decl.var.name() + "', found " + std::to_string(labels.size()));
+        }
+        std::vector<std::size_t> codes;
+        for (std::size_t i = 0; i < labels.size(); ++i) {
+          const auto state = parents[i].find_state(labels[i]);
+          if (!state) {
+            fail(at, "'" + labels[i] + "' is not a state of '" + parents[i].name() +
+                         "' (states: " + list_for_message(parents[i].states()) + ")");
+          }
+          codes.push_back(state->value());
+        }
+        check_count(at, probabilities);
+        const auto u = radix.encode(codes);
+        std::copy(probabilities.begin(), probabilities.end(), values.begin() + static_cast<std::ptrdiff_t>(u * j));
+        filled[u] = true;
+      }
+      for (std::size_t u = 0; u < radix.size(); ++u) {
+        if (filled[u]) continue;
+        if (!block.fallback) {
+          fail(block.where, "the probability block of '" + decl.var.name() +
+                                "' misses a parent configuration and has no 'default' line");
+        }
+        check_count(block.where, *block.fallback);
+        std::copy(block.fallback->begin(), block.fallback->end(),
+                  values.begin() + static_cast<std::ptrdiff_t>(u * j));
+      }
+    }
+    try {
+      return cpt<double>(decl.var, std::move(parents), std::move(values));
+    } catch (const model_error& e) {
+      fail(block.where, e.what());
+    }
+  }
+
+  bif_lexer lexer_;
+  bif_token current_;
+  std::map<std::string, declaration, std::less<>> declared_;
+  std::vector<std::string> order_;
+};
+
+inline bool bif_word(std::string_view text) {
+  if (text.empty()) return false;
+  for (char c : text) {
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) return false;
+  }
+  return true;
+}
+
+}  // namespace detail
+
+/// Parses BIF text; `source` names it in error messages.
+[[nodiscard]] inline bayesian_network parse_bif(std::string_view text, const std::string& source) {
+  return detail::bif_parser(text, source).parse();
+}
+
+[[nodiscard]] inline bayesian_network read_bif(const std::filesystem::path& path) {
+  return parse_bif(detail::read_file(path), path.string());
+}
+
+struct bif_write_options {
+  /// Write interval edges and semantic tags as `property` lines.
+  bool properties = true;
+  std::string network_name = "unknown";
+};
+
+/// Writes BIF as pgmpy does: one `(parent states) probabilities;` line per configuration.
+/// Throws model_error for a name or state that BIF cannot express (spaces, punctuation).
+inline void write_bif(const bayesian_network& network, std::ostream& out,
+                      const bif_write_options& options = {}) {
+  auto checked = [](const std::string& word, const std::string& what) -> const std::string& {
+    if (!detail::bif_word(word)) {
+      throw model_error(what + " '" + word + "' cannot be written to BIF (letters, digits, '_', "
+                        "'-' and '.' only)");
+    }
+    return word;
+  };
+  std::ostringstream text;
+  text << "network " << checked(options.network_name, "network name") << " {\n}\n";
+  for (const auto& v : network.variables()) {
+    text << "variable " << checked(v.name(), "variable name") << " {\n  type discrete [ "
+         << v.cardinality() << " ] { ";
+    for (std::size_t s = 0; s < v.cardinality(); ++s) {
+      text << (s ? ", " : "") << checked(v.states()[s], "state of '" + v.name() + "'");
+    }
+    text << " };\n";
+    if (options.properties) {
+      if (v.has_intervals()) {
+        text << "  property edges = ";
+        for (std::size_t e = 0; e < v.edges().size(); ++e) {
+          text << (e ? ", " : "") << detail::format_double(v.edges()[e]);
+        }
+        text << " ;\n";
+      }
+      const auto& tags = v.tags();
+      for (const auto& [key, value] : {std::pair<const char*, const std::string*>{"quantity", &tags.quantity},
+                                       {"unit", &tags.unit},
+                                       {"role", &tags.role}}) {
+        if (value->empty()) continue;
+        if (value->find(';') != std::string::npos) {
+          throw model_error("the " + std::string(key) + " tag of '" + v.name() + "' contains ';'");
+        }
+        text << "  property " << key << " = " << *value << " ;\n";
+      }
+    }
+    text << "}\n";
+  }
+  for (const auto& table : network.tables()) {
+    text << "probability ( " << table.child().name();
+    for (std::size_t p = 0; p < table.parents().size(); ++p) {
+      text << (p ? ", " : " | ") << table.parents()[p].name();
+    }
+    text << " ) {\n";
+    auto write_values = [&](std::span<const double> values) {
+      for (std::size_t x = 0; x < values.size(); ++x) {
+        text << (x ? ", " : " ") << detail::format_double(values[x]);
+      }
+      text << ";\n";
+    };
+    if (table.parents().empty()) {
+      text << "  table";
+      write_values(table.column(config_index(0)));
+    } else {
+      for (std::size_t u = 0; u < table.configurations(); ++u) {
+        const auto codes = table.parent_codes(config_index(u));
+        text << "  (";
+        for (std::size_t p = 0; p < codes.size(); ++p) {
+          text << (p ? ", " : "") << table.parents()[p].states()[codes[p]];
+        }
+        text << ")";
+        write_values(table.column(config_index(u)));
+      }
+    }
+    text << "}\n";
+  }
+  out << text.str();
+}
+
+[[nodiscard]] inline std::string to_bif(const bayesian_network& network,
+                                        const bif_write_options& options = {}) {
+  std::ostringstream out;
+  write_bif(network, out, options);
+  return out.str();
+}
+
+/// Writes a BIF file atomically.
+inline void write_bif(const bayesian_network& network, const std::filesystem::path& path,
+                      const bif_write_options& options = {}) {
+  const auto text = to_bif(network, options);  // fails before the file is touched
+  detail::write_file_atomically(path, [&](std::ostream& out) { out << text; });
+}
+
+}  // namespace pgm

@@ -1,0 +1,84 @@
+#pragma once
+/// \file
+/// A table as CSV, one row per parent configuration and child state:
+/// `parent_1,…,parent_k,child,probability`, configurations in table order.
+
+#include <filesystem>
+#include <map>
+#include <ostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "pgm/core/cpt.hpp"
+#include "pgm/data/csv.hpp"
+#include "pgm/detail/file.hpp"
+
+namespace pgm {
+
+/// Writes `table`; `value_column` names the last column.
+inline void write_cpt_csv(const cpt<double>& table, std::ostream& out,
+                          const std::string& value_column = "probability") {
+  std::string text;
+  for (const auto& p : table.parents()) text += detail::csv_escape(p.name(), ',') + ",";
+  text += detail::csv_escape(table.child().name(), ',') + "," + detail::csv_escape(value_column, ',') + "\n";
+  for (std::size_t u = 0; u < table.configurations(); ++u) {
+    const auto codes = table.parent_codes(config_index(u));
+    std::string prefix;
+    for (std::size_t p = 0; p < codes.size(); ++p) {
+      prefix += detail::csv_escape(table.parents()[p].states()[codes[p]], ',') + ",";
+    }
+    const auto column = table.column(config_index(u));
+    for (std::size_t x = 0; x < column.size(); ++x) {
+      text += prefix + detail::csv_escape(table.child().states()[x], ',') + "," +
+              detail::format_double(column[x]) + "\n";
+    }
+  }
+  out << text;
+}
+
+inline void write_cpt_csv(const cpt<double>& table, const std::filesystem::path& path,
+                          const std::string& value_column = "probability") {
+  detail::write_file_atomically(path, [&](std::ostream& out) { write_cpt_csv(table, out, value_column); });
+}
+
+/// Reads a table written by write_cpt_csv for known variables. Every configuration and state
+/// must appear exactly once.
+[[nodiscard]] inline cpt<double> parse_cpt_csv(std::string_view text, const std::string& source,
+                                               const variable& child,
+                                               const std::vector<variable>& parents) {
+  csv_options options;
+  for (const auto& p : parents) options.variables.emplace(p.name(), p);
+  options.variables.emplace(child.name(), child);
+  const auto data = parse_csv(text, source, options);
+  const auto names = data.names();
+  if (names.size() != parents.size() + 2) {
+    throw data_error(source + ": expected the columns " + [&] {
+      std::string list;
+      for (const auto& p : parents) list += p.name() + ", ";
+      return list + child.name() + " and a probability";
+    }());
+  }
+  const auto& probability = data.continuous(names.back());
+  cpt<double> shape(child, parents);
+  std::vector<double> values(shape.size(), 0.0);
+  std::vector<bool> seen(shape.size(), false);
+  for (std::size_t row = 0; row < data.rows(); ++row) {
+    std::vector<std::size_t> codes;
+    for (const auto& p : parents) codes.push_back(data.discrete(p.name()).code(row));
+    const auto cell = shape.configuration(codes).value() * child.cardinality() +
+                      data.discrete(child.name()).code(row);
+    if (seen[cell]) {
+      throw data_error(source + ": row " + std::to_string(row + 1) + " repeats a configuration");
+    }
+    seen[cell] = true;
+    values[cell] = probability.values()[row];
+  }
+  if (data.rows() != shape.size()) {
+    throw data_error(source + ": expected " + std::to_string(shape.size()) + " rows, found " +
+                     std::to_string(data.rows()));
+  }
+  return cpt<double>(child, parents, std::move(values));
+}
+
+}  // namespace pgm

@@ -1,0 +1,151 @@
+#pragma once
+/// \file
+/// Parameter estimation of one node from its counts: maximum likelihood (eq. 3) and Bayesian
+/// estimation with a Dirichlet prior (eq. 6), including the paper's weighted prior (eq. 7/8).
+
+#include <algorithm>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+#include "pgm/core/cpt.hpp"
+#include "pgm/core/error.hpp"
+#include "pgm/learn/parameter_prior.hpp"
+#include "pgm/learn/sufficient_statistics.hpp"
+
+namespace pgm {
+
+/// What to do for a parent configuration with no data and no prior counts.
+enum class empty_configuration {
+  uniform,  ///< 1/J for each state (the paper's 0.5 for a binary child)
+  fail,     ///< throw data_error naming the configuration
+};
+
+struct estimate_options {
+  empty_configuration empty = empty_configuration::uniform;
+};
+
+namespace detail {
+
+/// θ[x,u] = (α[x,u] + M[x,u]) / (α_u + M[u]) with α given cell by cell and α_u per column.
+template <class CellAlpha, class ColumnAlpha>
+std::vector<double> dirichlet_posterior_mean(const count_table& counts, CellAlpha cell_alpha,
+                                     ColumnAlpha column_alpha, const estimate_options& options) {
+  const std::size_t j = counts.child_cardinality();
+  std::vector<double> values(counts.counts().size());
+  for (std::size_t u = 0; u < counts.configurations(); ++u) {
+    const auto column = counts.column(config_index(u));
+    std::uint64_t total = 0;
+    for (auto c : column) total += c;
+    const double denominator = column_alpha(u) + static_cast<double>(total);
+    if (denominator == 0.0) {
+      if (options.empty == empty_configuration::fail) {
+        std::string where;
+        const auto codes = counts.parent_radix().decode(u);
+        for (std::size_t i = 0; i < codes.size(); ++i) {
+          where += (i ? ", " : " given ") + counts.parents()[i].name() + "=" +
+                   counts.parents()[i].states()[codes[i]];
+        }
+        throw data_error("no data for '" + counts.child().name() + "'" + where +
+                         ", and no prior to fall back on");
+      }
+      for (std::size_t x = 0; x < j; ++x) values[u * j + x] = 1.0 / static_cast<double>(j);
+      continue;
+    }
+    for (std::size_t x = 0; x < j; ++x) {
+      values[u * j + x] = (cell_alpha(u * j + x) + static_cast<double>(column[x])) / denominator;
+    }
+  }
+  return values;
+}
+
+inline cpt<double> table_of(const count_table& counts, std::vector<double> values) {
+  return cpt<double>(counts.child(), counts.parents(), std::move(values));
+}
+
+inline void check_shape(const count_table& counts, const cpt<double>& prior) {
+  if (prior.child_cardinality() != counts.child_cardinality() ||
+      prior.parent_radix() != counts.parent_radix()) {
+    throw model_error("the prior table of '" + prior.child().name() + "' (" +
+                      std::to_string(prior.child_cardinality()) + " states × " +
+                      std::to_string(prior.configurations()) +
+                      " configurations) does not match the shape of '" + counts.child().name() +
+                      "' (" + std::to_string(counts.child_cardinality()) + " × " +
+                      std::to_string(counts.configurations()) + ")");
+  }
+}
+
+}  // namespace detail
+
+/// Maximum likelihood, eq. 3: θ[x,u] = M[x,u] / M[u].
+[[nodiscard]] inline cpt<double> estimate_mle(const count_table& counts,
+                                              const estimate_options& options = {}) {
+  return detail::table_of(counts, detail::dirichlet_posterior_mean(
+                                      counts, [](std::size_t) { return 0.0; },
+                                      [](std::size_t) { return 0.0; }, options));
+}
+
+/// The estimate under any parameter prior (eq. 6; eq. 7/8 for `weighted_prior`).
+[[nodiscard]] inline cpt<double> estimate(const count_table& counts, const parameter_prior& prior,
+                                          const estimate_options& options = {}) {
+  const double j = static_cast<double>(counts.child_cardinality());
+  return std::visit(
+      [&](const auto& p) -> cpt<double> {
+        using prior_type = std::decay_t<decltype(p)>;
+        if constexpr (std::is_same_v<prior_type, no_prior>) {
+          return estimate_mle(counts, options);
+        } else if constexpr (std::is_same_v<prior_type, dirichlet_prior> ||
+                             std::is_same_v<prior_type, k2_prior> ||
+                             std::is_same_v<prior_type, bdeu_prior>) {
+          double alpha = 1.0;
+          if constexpr (std::is_same_v<prior_type, dirichlet_prior>) alpha = p.alpha;
+          if constexpr (std::is_same_v<prior_type, bdeu_prior>) {
+            detail::check_pseudo_count(p.equivalent_sample_size, "the equivalent sample size");
+            alpha = p.equivalent_sample_size / (j * static_cast<double>(counts.configurations()));
+          }
+          detail::check_pseudo_count(alpha, "the Dirichlet pseudo-count alpha");
+          return detail::table_of(counts, detail::dirichlet_posterior_mean(
+                                              counts, [alpha](std::size_t) { return alpha; },
+                                              [alpha, j](std::size_t) { return alpha * j; }, options));
+        } else if constexpr (std::is_same_v<prior_type, pseudo_counts_prior>) {
+          if (p.alpha.size() != counts.counts().size()) {
+            throw model_error("the pseudo-counts of '" + counts.child().name() + "' need " +
+                              std::to_string(counts.counts().size()) + " values, got " +
+                              std::to_string(p.alpha.size()));
+          }
+          std::vector<double> column_sums(counts.configurations(), 0.0);
+          const auto cells = static_cast<std::size_t>(j);
+          for (std::size_t i = 0; i < p.alpha.size(); ++i) {
+            detail::check_pseudo_count(p.alpha[i], "a pseudo-count");
+            column_sums[i / cells] += p.alpha[i];
+          }
+          return detail::table_of(counts, detail::dirichlet_posterior_mean(
+                                              counts, [&](std::size_t cell) { return p.alpha[cell]; },
+                                              [&](std::size_t u) { return column_sums[u]; }, options));
+        } else {
+          static_assert(std::is_same_v<prior_type, weighted_prior>);
+          detail::check_shape(counts, p.prior);
+          detail::check_pseudo_count(p.weight, "the prior weight w");
+          const auto f = p.prior.values();
+          const double w = p.weight;
+          // The denominator is w + M[u] exactly as in eq. 8, not the sum of w·f over states.
+          auto values = detail::dirichlet_posterior_mean(
+              counts, [&](std::size_t cell) { return w * f[cell]; }, [w](std::size_t) { return w; },
+              options);
+          // Where M[u] = 0 the formula is f itself; (w·f)/w can differ from f in the last bit.
+          const auto cells = counts.child_cardinality();
+          for (std::size_t u = 0; u < counts.configurations(); ++u) {
+            if (w > 0.0 && counts.total(config_index(u)) == 0) {
+              std::copy(f.begin() + static_cast<std::ptrdiff_t>(u * cells),
+                        f.begin() + static_cast<std::ptrdiff_t>((u + 1) * cells),
+                        values.begin() + static_cast<std::ptrdiff_t>(u * cells));
+            }
+          }
+          return detail::table_of(counts, std::move(values));
+        }
+      },
+      prior);
+}
+
+}  // namespace pgm

@@ -1,0 +1,95 @@
+#pragma once
+/// \file
+/// Fitting every table of a network from a data set in one call.
+
+#include <map>
+#include <set>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/error.hpp"
+#include "pgm/core/network_structure.hpp"
+#include "pgm/data/dataset.hpp"
+#include "pgm/learn/estimate.hpp"
+#include "pgm/learn/parameter_prior.hpp"
+#include "pgm/learn/sufficient_statistics.hpp"
+
+namespace pgm {
+
+struct fit_options {
+  /// The prior of every node without an entry in `node_priors`.
+  parameter_prior prior = no_prior{};
+  /// Priors of single nodes, by name (a transferred `weighted_prior`, say).
+  std::map<std::string, parameter_prior, std::less<>> node_priors;
+  estimate_options estimation;
+  count_options counting;
+  row_range rows;
+};
+
+/// The variables of a structure read off a data set: the discrete columns named by the
+/// edges, in the data's column order, with their states. Throws data_error for a column that
+/// is missing or continuous, not_a_dag for a cycle.
+[[nodiscard]] inline network_structure structure_from_data(const dataset& data,
+                                                           const std::vector<named_edge>& edges) {
+  std::set<std::string, std::less<>> named;
+  for (const auto& edge : edges) {
+    for (const auto* name : {&edge.from, &edge.to}) {
+      if (named.insert(*name).second) static_cast<void>(data.discrete(*name));  // exists, discrete
+    }
+  }
+  std::vector<variable> variables;
+  for (const auto& name : data.names()) {
+    if (named.contains(name)) variables.push_back(data.discrete(name).var());
+  }
+  return network_structure(std::move(variables), edges);
+}
+
+/// The count table of one node of a structure, with the structure's variables.
+[[nodiscard]] inline count_table count_node(const network_structure& structure, variable_id node,
+                                            const dataset& data, const count_options& counting = {},
+                                            row_range rows = {}) {
+  const auto& child = structure.at(node);
+  const auto parents = structure.parent_variables(node);
+  auto column_of = [&](const variable& v) -> const discrete_column& {
+    const auto& column = data.discrete(v.name());
+    if (column.var().states() != v.states()) {
+      throw data_error((data.source().empty() ? std::string() : data.source() + ": ") +
+                       "column '" + v.name() + "' has the states {" +
+                       detail::join(column.var().states()) + "} but the model expects {" +
+                       detail::join(v.states()) + "}");
+    }
+    return column;
+  };
+  std::vector<const discrete_column*> parent_columns;
+  for (const auto& p : parents) parent_columns.push_back(&column_of(p));
+  const auto counted = count_family(column_of(child), parent_columns, counting, rows);
+  // Same codes, the structure's own variables (which may carry intervals and tags).
+  count_table table(child, parents);
+  std::copy(counted.counts().begin(), counted.counts().end(), table.counts().begin());
+  return table;
+}
+
+/// Fits every table of `structure` from `data`. Columns must carry the states the structure
+/// gives its variables.
+[[nodiscard]] inline bayesian_network fit(const network_structure& structure, const dataset& data,
+                                          const fit_options& options = {}) {
+  for (const auto& [name, prior] : options.node_priors) {
+    if (!structure.contains(name)) {
+      throw model_error("a prior is given for '" + name + "', which is not in the network");
+    }
+  }
+  std::vector<cpt<double>> tables;
+  tables.reserve(structure.size());
+  for (std::size_t i = 0; i < structure.size(); ++i) {
+    const variable_id node(static_cast<variable_id::rep>(i));
+    const auto counts = count_node(structure, node, data, options.counting, options.rows);
+    const auto own = options.node_priors.find(structure.at(node).name());
+    tables.push_back(estimate(counts, own != options.node_priors.end() ? own->second : options.prior,
+                              options.estimation));
+  }
+  return bayesian_network(structure, std::move(tables));
+}
+
+}  // namespace pgm

@@ -1,0 +1,51 @@
+#pragma once
+// Helpers shared by the commands of the `pgm` program. The program is thin: commands parse
+// their arguments, call the library and print; nothing here computes.
+
+#include <filesystem>
+#include <iosfwd>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "pgm/core/network_structure.hpp"
+#include "pgm/data/dataset.hpp"
+#include "pgm/data/discretizer.hpp"
+
+namespace pgm::cli {
+
+/// "a, b,c" → {"a", "b", "c"}; empty pieces are an error naming `what`.
+std::vector<std::string> split_list(std::string_view text, const std::string& what);
+
+/// Throws pgm::io_error unless `path` ends in one of `extensions` (".bif", ".json", …), so
+/// that a command fails before doing any work.
+void require_extension(const std::filesystem::path& path, const std::vector<std::string>& extensions);
+
+/// How the columns of a model's variables are to be read from a CSV file.
+struct data_plan {
+  /// Discretize these raw numeric columns with these edges.
+  const discretization* raw_intervals = nullptr;
+  /// Take the states of these variables as given (from a model).
+  const std::vector<variable>* known = nullptr;
+};
+
+/// Reads `columns` of a CSV file as discrete data, discretizing raw columns as planned.
+dataset read_discrete_data(const std::filesystem::path& path, const std::vector<std::string>& columns,
+                           const data_plan& plan);
+
+/// Network files are .bif or .json.
+inline const std::vector<std::string> network_extensions{".bif", ".json"};
+
+/// Prints "pgm: note: …" to stderr, for what the user should know but need not act on.
+void note(const std::string& text);
+
+/// Whether stderr is a terminal (progress bars only go to terminals).
+bool stderr_is_terminal();
+
+void add_fit_command(CLI::App& app);
+void add_discretize_command(CLI::App& app);
+void add_show_command(CLI::App& app);
+
+}  // namespace pgm::cli

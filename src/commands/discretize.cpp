@@ -1,0 +1,123 @@
+// pgm discretize: bin continuous columns (quantile, equal width or saved edges).
+
+#include <iostream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "cli/common.hpp"
+#include "pgm/core/error.hpp"
+#include "pgm/data/csv.hpp"
+#include "pgm/io/json_model.hpp"
+
+namespace pgm::cli {
+namespace {
+
+struct discretize_arguments {
+  std::string in;
+  std::string method = "quantile";
+  std::size_t bins = 5;
+  std::string columns;
+  std::string out;
+  std::string edges_out;
+  std::string edges_in;
+};
+
+std::string describe(const variable& v) {
+  std::string text;
+  for (std::size_t i = 0; i + 1 < v.edges().size(); ++i) {
+    text += (i ? ", " : "") + std::string("[") + detail::format_short(v.edges()[i]) + ", " +
+            detail::format_short(v.edges()[i + 1]) + (i + 2 == v.edges().size() ? "]" : ")");
+  }
+  return text;
+}
+
+void run_discretize(const discretize_arguments& args) {
+  require_extension(args.out, {".csv"});
+  if (!args.edges_out.empty()) require_extension(args.edges_out, {".json"});
+  if (args.method == "edges" && args.edges_in.empty()) throw error("--method edges needs --edges-in FILE");
+  if (args.method != "edges" && !args.edges_in.empty()) throw error("--edges-in applies to --method edges");
+
+  // Columns named for binning must be numeric: reading them as such makes a stray word an
+  // error at its own line and column instead of a vague complaint about the whole column.
+  const auto wanted = args.columns.empty() ? std::vector<std::string>{} : split_list(args.columns, "--columns");
+  csv_options options;
+  if (args.method != "edges") {
+    for (const auto& name : wanted) options.kinds.emplace(name, column_kind::continuous);
+  }
+  const auto data = read_csv(args.in, options);
+  discretization fitted;
+  if (args.method == "edges") {
+    const auto saved = read_discretization_json(args.edges_in);
+    for (const auto& [name, v] : saved) {
+      if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), name) == wanted.end()) continue;
+      fitted.emplace(name, v);
+    }
+    for (const auto& name : wanted) {
+      if (!saved.contains(name)) throw data_error("'" + args.edges_in + "' has no edges for '" + name + "'");
+    }
+  } else {
+    std::vector<std::string> columns = wanted;
+    if (columns.empty()) {
+      // Every numeric column with more distinct values than bins; outcomes such as 0/1 stay.
+      for (const auto& c : data.columns()) {
+        const auto* values = std::get_if<continuous_column>(&c);
+        if (!values) continue;
+        std::set<double> distinct;
+        for (double v : values->values()) {
+          if (distinct.insert(v).second && distinct.size() > args.bins) break;
+        }
+        if (distinct.size() > args.bins) {
+          columns.push_back(values->name());
+        } else {
+          note("left '" + values->name() + "' as it is: it has only " + std::to_string(distinct.size()) +
+               " distinct values");
+        }
+      }
+      if (columns.empty()) throw data_error(args.in + ": no numeric column has more than " + std::to_string(args.bins) + " distinct values to bin");
+    }
+    fitted = fit_discretization(data, columns, args.method == "quantile" ? binning::quantile : binning::equal_width,
+                                args.bins);
+  }
+  const auto binned = apply_discretization(data, fitted);
+  // Both outputs are complete in memory before either file is written.
+  std::ostringstream csv_text;
+  write_csv(binned, csv_text);
+  const auto edges_text = to_json(fitted).dump(2) + "\n";
+  detail::write_file_atomically(args.out, [&](std::ostream& out) { out << csv_text.str(); });
+  if (!args.edges_out.empty()) {
+    detail::write_file_atomically(args.edges_out, [&](std::ostream& out) { out << edges_text; });
+  }
+  for (const auto& [name, v] : fitted) {
+    std::cout << name << ": " << v.cardinality() << " bins " << describe(v) << '\n';
+    if (args.method != "edges" && v.cardinality() < args.bins) {
+      note("'" + name + "' has ties, so only " + std::to_string(v.cardinality()) + " of " +
+           std::to_string(args.bins) + " bins are distinct");
+    }
+  }
+  std::cout << binned.rows() << " rows -> " << args.out << (args.edges_out.empty() ? "" : ", edges -> " + args.edges_out)
+            << '\n';
+}
+
+}  // namespace
+
+void add_discretize_command(CLI::App& app) {
+  auto args = std::make_shared<discretize_arguments>();
+  auto* cmd = app.add_subcommand("discretize", "Bin continuous columns into intervals");
+  cmd->add_option("--in", args->in, "CSV file with raw (continuous) columns")->required();
+  cmd->add_option("--method", args->method,
+                  "quantile (equal frequency, as in the paper), width (equal width) or edges (saved edges)")
+      ->check(CLI::IsMember({"quantile", "width", "edges"}))
+      ->capture_default_str();
+  cmd->add_option("--bins", args->bins, "Number of bins")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--columns", args->columns,
+                  "Columns to bin, e.g. \"xOff1,yOff1\" (default: every numeric column with more distinct "
+                  "values than bins)");
+  cmd->add_option("--out", args->out, "Discretized CSV; each binned value becomes its bin index 0..bins-1")
+      ->required();
+  cmd->add_option("--edges-out", args->edges_out, "Where to save the fitted edges (JSON)");
+  cmd->add_option("--edges-in", args->edges_in, "Saved edges to apply, with --method edges");
+  cmd->callback([args] { run_discretize(*args); });
+}
+
+}  // namespace pgm::cli

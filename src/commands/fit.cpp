@@ -1,0 +1,136 @@
+// pgm fit: estimate every table of a network from data.
+
+#include <iostream>
+#include <optional>
+#include <string>
+
+#include "cli/common.hpp"
+#include "pgm/core/error.hpp"
+#include "pgm/io/json_model.hpp"
+#include "pgm/io/network_file.hpp"
+#include "pgm/learn/fit.hpp"
+
+namespace pgm::cli {
+namespace {
+
+struct fit_arguments {
+  std::string data;
+  std::string edges;
+  std::string model;
+  std::string estimator = "mle";
+  std::string prior;
+  std::optional<double> alpha;
+  std::optional<double> ess;
+  std::string empty = "uniform";
+  std::string discretization_file;
+  std::string intervals_file;
+  unsigned threads = 0;
+  std::string out;
+};
+
+parameter_prior make_prior(const fit_arguments& args) {
+  if (args.estimator == "mle") {
+    if (!args.prior.empty() || args.alpha || args.ess) {
+      throw error("--prior, --alpha and --ess apply to --estimator bayes");
+    }
+    return no_prior{};
+  }
+  const auto prior = args.prior.empty() ? std::string("bdeu") : args.prior;
+  if (args.alpha && prior != "dirichlet") throw error("--alpha applies to --prior dirichlet");
+  if (args.ess && prior != "bdeu") throw error("--ess applies to --prior bdeu");
+  if (prior == "dirichlet") return dirichlet_prior{args.alpha.value_or(1.0)};
+  if (prior == "k2") return k2_prior{};
+  return bdeu_prior{args.ess.value_or(1.0)};
+}
+
+void run_fit(const fit_arguments& args) {
+  require_extension(args.out, network_extensions);
+  fit_options options;
+  options.prior = make_prior(args);
+  options.estimation.empty = args.empty == "fail" ? empty_configuration::fail : empty_configuration::uniform;
+  options.counting.threads = args.threads;
+
+  std::optional<discretization> raw_intervals;
+  if (!args.discretization_file.empty()) raw_intervals = read_discretization_json(args.discretization_file);
+
+  network_structure structure;
+  dataset data;
+  if (!args.model.empty()) {
+    structure = read_model_json(args.model).structure;
+    for (const auto& v : structure.variables()) {
+      if (raw_intervals && raw_intervals->contains(v.name())) structure.update_variable(raw_intervals->at(v.name()));
+    }
+    std::vector<std::string> columns;
+    for (const auto& v : structure.variables()) columns.push_back(v.name());
+    data = read_discrete_data(args.data, columns, {raw_intervals ? &*raw_intervals : nullptr,
+                                                   &structure.variables()});
+  } else {
+    const auto edges = parse_edge_list(args.edges);
+    std::vector<std::string> columns;
+    for (const auto& e : edges) {
+      for (const auto* name : {&e.from, &e.to}) {
+        if (std::find(columns.begin(), columns.end(), *name) == columns.end()) columns.push_back(*name);
+      }
+    }
+    // Check the names against the header first, so that an unknown variable is reported as
+    // such rather than as a problem with some other column's values.
+    data = read_discrete_data(args.data, columns, {raw_intervals ? &*raw_intervals : nullptr, nullptr});
+    structure = structure_from_data(data, edges);
+  }
+  if (!args.intervals_file.empty()) {
+    for (const auto& [name, intervals] : read_discretization_json(args.intervals_file)) {
+      if (!structure.contains(name)) continue;
+      const auto& own = structure.at(name);
+      if (own.states() != intervals.states()) {
+        throw data_error("'" + args.intervals_file + "' gives '" + name + "' the states {" +
+                         detail::join(intervals.states()) + "}, the data {" + detail::join(own.states()) + "}");
+      }
+      structure.update_variable(variable::with_edges(name, own.states(), intervals.edges(), intervals.tags()));
+    }
+  }
+  const auto network = fit(structure, data, options);
+  write_network(network, args.out);
+  std::cout << "fitted " << network.size() << " tables (" << network.free_parameters()
+            << " free parameters) from " << data.rows() << " rows -> " << args.out << '\n';
+}
+
+}  // namespace
+
+void add_fit_command(CLI::App& app) {
+  auto args = std::make_shared<fit_arguments>();
+  auto* cmd = app.add_subcommand("fit", "Estimate the tables of a network from data (MLE or Bayesian)");
+  cmd->add_option("--data", args->data, "CSV file with one column per variable")->required();
+  auto* edges = cmd->add_option("--edges", args->edges,
+                                "The structure as edges, e.g. \"xOff1->onTop1,yOff1->onTop1\"; "
+                                "states are the values found in the data, sorted (numbers numerically)");
+  auto* model = cmd->add_option("--model", args->model, "The structure from a JSON model file instead");
+  edges->excludes(model);
+  model->excludes(edges);
+  cmd->add_option("--estimator", args->estimator, "mle (eq. 3) or bayes (eq. 6)")
+      ->check(CLI::IsMember({"mle", "bayes"}))
+      ->capture_default_str();
+  cmd->add_option("--prior", args->prior, "Prior of the Bayesian estimator: dirichlet, k2 or bdeu (default)")
+      ->check(CLI::IsMember({"dirichlet", "k2", "bdeu"}));
+  cmd->add_option("--alpha", args->alpha, "Pseudo-count per cell of the dirichlet prior (default 1)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--ess", args->ess, "Equivalent sample size of the bdeu prior (default 1)")
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--empty", args->empty,
+                  "A parent configuration with no data: uniform (1/J) or fail")
+      ->check(CLI::IsMember({"uniform", "fail"}))
+      ->capture_default_str();
+  auto* raw = cmd->add_option("--discretization", args->discretization_file,
+                              "Edges file (from pgm discretize): bin these raw numeric columns with it");
+  auto* intervals = cmd->add_option("--intervals", args->intervals_file,
+                                    "Edges file whose intervals the already discretized columns hold; "
+                                    "saved with the model");
+  raw->excludes(intervals);
+  cmd->add_option("--threads", args->threads, "Counting threads (0: all cores)")->capture_default_str();
+  cmd->add_option("--out", args->out, "The fitted network, .bif or .json")->required();
+  cmd->callback([args] {
+    if (args->edges.empty() && args->model.empty()) throw error("give the structure with --edges or --model");
+    run_fit(*args);
+  });
+}
+
+}  // namespace pgm::cli

@@ -1,0 +1,142 @@
+// pgm show: a network's variables and tables as readable text.
+
+#include <algorithm>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include "cli/common.hpp"
+#include "pgm/io/bif.hpp"
+#include "pgm/io/json_model.hpp"
+#include "pgm/io/network_file.hpp"
+
+namespace pgm::cli {
+namespace {
+
+struct show_arguments {
+  std::string model;
+  std::string variable;
+  int digits = 4;
+};
+
+std::string state_text(const variable& v, std::size_t s) {
+  std::string text = v.states()[s];
+  if (v.has_intervals()) {
+    text += " [" + detail::format_short(v.edges()[s]) + ", " + detail::format_short(v.edges()[s + 1]) +
+            (s + 1 == v.cardinality() ? "]" : ")");
+  }
+  return text;
+}
+
+void print_variable(const variable& v, std::ostream& out) {
+  out << "  " << v.name() << ": " << v.cardinality() << " states: ";
+  for (std::size_t s = 0; s < v.cardinality(); ++s) out << (s ? ", " : "") << state_text(v, s);
+  const auto& tags = v.tags();
+  if (!tags.empty()) {
+    std::vector<std::string> parts;
+    if (!tags.quantity.empty()) parts.push_back("quantity " + tags.quantity);
+    if (!tags.unit.empty()) parts.push_back("unit " + tags.unit);
+    if (!tags.role.empty()) parts.push_back("role " + tags.role);
+    out << "  (" << detail::join(parts) << ")";
+  }
+  out << '\n';
+}
+
+std::string pad(const std::string& text, std::size_t width, bool right = false) {
+  if (text.size() >= width) return text;
+  const std::string fill(width - text.size(), ' ');
+  return right ? fill + text : text + fill;
+}
+
+void print_table(const cpt<double>& table, int digits, std::ostream& out) {
+  out << "P(" << table.child().name();
+  for (std::size_t p = 0; p < table.parents().size(); ++p) {
+    out << (p ? ", " : " | ") << table.parents()[p].name();
+  }
+  out << ")\n";
+  std::vector<std::size_t> widths;
+  for (const auto& p : table.parents()) {
+    std::size_t w = p.name().size();
+    for (const auto& s : p.states()) w = std::max(w, s.size());
+    widths.push_back(w);
+  }
+  const auto number_width = static_cast<std::size_t>(digits) + 2;
+  std::vector<std::size_t> state_widths;
+  for (const auto& s : table.child().states()) state_widths.push_back(std::max(number_width, s.size()));
+
+  out << "  ";
+  for (std::size_t p = 0; p < widths.size(); ++p) out << pad(table.parents()[p].name(), widths[p]) << "  ";
+  out << (widths.empty() ? "" : "| ");
+  for (std::size_t x = 0; x < state_widths.size(); ++x) {
+    out << (x ? "  " : "") << pad(table.child().states()[x], state_widths[x], true);
+  }
+  out << '\n';
+  char buffer[64];
+  for (std::size_t u = 0; u < table.configurations(); ++u) {
+    const auto codes = table.parent_codes(config_index(u));
+    out << "  ";
+    for (std::size_t p = 0; p < codes.size(); ++p) out << pad(table.parents()[p].states()[codes[p]], widths[p]) << "  ";
+    out << (widths.empty() ? "" : "| ");
+    const auto column = table.column(config_index(u));
+    for (std::size_t x = 0; x < column.size(); ++x) {
+      std::snprintf(buffer, sizeof buffer, "%.*f", digits, column[x]);
+      out << (x ? "  " : "") << pad(buffer, state_widths[x], true);
+    }
+    out << '\n';
+  }
+}
+
+void run_show(const show_arguments& args) {
+  require_extension(args.model, network_extensions);
+  network_structure structure;
+  std::optional<std::vector<cpt<double>>> tables;
+  if (format_of(args.model) == network_format::bif) {
+    auto network = read_bif(args.model);
+    structure = network.structure();
+    tables = network.tables();
+  } else {
+    auto document = read_model_json(args.model);
+    structure = std::move(document.structure);
+    tables = std::move(document.tables);
+  }
+  auto& out = std::cout;
+  if (!args.variable.empty()) static_cast<void>(structure.id(args.variable));  // unknown names fail here
+  out << args.model << ": " << structure.size() << " variables, " << structure.graph().edge_count() << " edges";
+  if (tables) {
+    std::size_t free = 0;
+    for (const auto& t : *tables) free += (t.child_cardinality() - 1) * t.configurations();
+    out << ", " << free << " free parameters";
+  } else {
+    out << ", no tables (a structure)";
+  }
+  out << "\n\nvariables\n";
+  for (const auto& v : structure.variables()) {
+    if (args.variable.empty() || v.name() == args.variable) print_variable(v, out);
+  }
+  if (!tables) {
+    out << "\nedges\n";
+    for (const auto& e : structure.edges()) out << "  " << e.from << " -> " << e.to << '\n';
+    return;
+  }
+  for (const auto& table : *tables) {
+    if (!args.variable.empty() && table.child().name() != args.variable) continue;
+    out << '\n';
+    print_table(table, args.digits, out);
+  }
+}
+
+}  // namespace
+
+void add_show_command(CLI::App& app) {
+  auto args = std::make_shared<show_arguments>();
+  auto* cmd = app.add_subcommand("show", "Print a network's variables and tables");
+  cmd->add_option("model", args->model, "Network or structure file (.bif or .json)")->required();
+  cmd->add_option("--variable", args->variable, "Show only this variable and its table");
+  cmd->add_option("--digits", args->digits, "Decimals of the probabilities")
+      ->check(CLI::Range(0, 17))
+      ->capture_default_str();
+  cmd->callback([args] { run_show(*args); });
+}
+
+}  // namespace pgm::cli

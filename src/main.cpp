@@ -1,0 +1,37 @@
+// The `pgm` program: each command lives in src/commands and only parses arguments, calls the
+// library and prints. Errors in the input end the program with one line on stderr and exit
+// code 1; usage errors with code 2.
+
+#include <exception>
+#include <iostream>
+#include <new>
+
+#include <CLI/CLI.hpp>
+
+#include "cli/common.hpp"
+#include "pgm/core/error.hpp"
+
+int main(int argc, char** argv) {
+  CLI::App app{"pgm: causal Bayesian networks for robot tasks, with priors transferred between tasks",
+               "pgm"};
+  app.require_subcommand(1, 1);
+  app.set_version_flag("--version", "pgm 0.1.0");
+  pgm::cli::add_discretize_command(app);
+  pgm::cli::add_fit_command(app);
+  pgm::cli::add_show_command(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const pgm::error& e) {
+    std::cerr << "pgm: error: " << e.what() << '\n';
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::cerr << "pgm: error: out of memory\n";
+    return 1;
+  } catch (const std::exception& e) {
+    std::cerr << "pgm: internal error: " << e.what() << '\n';
+    return 3;
+  }
+  return 0;
+}

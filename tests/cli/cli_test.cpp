@@ -1,0 +1,215 @@
+// The `pgm` program as a user meets it: --help everywhere, the main commands, and every kind
+// of bad input ending in one clear line on stderr, a non-zero exit and no output file.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "pgm/io/network_file.hpp"
+
+namespace pgm {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+namespace fs = std::filesystem;
+
+struct result {
+  int code;
+  std::string out;
+  std::string err;
+};
+
+class cli_test : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() / ("pgm_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  fs::path file(const std::string& name, const std::string& content) const {
+    const auto path = dir_ / name;
+    std::ofstream(path) << content;
+    return path;
+  }
+  fs::path path(const std::string& name) const { return dir_ / name; }
+
+  static std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    return {std::istreambuf_iterator<char>(in), {}};
+  }
+
+  result run(const std::string& arguments) const {
+    const auto out = dir_ / "stdout.txt";
+    const auto err = dir_ / "stderr.txt";
+    const auto command = std::string(PGM_PROGRAM) + " " + arguments + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+  }
+
+  // Expects failure with `message` on stderr and no file at `output`.
+  void expect_failure(const std::string& arguments, const std::string& message, const fs::path& output) const {
+    const auto r = run(arguments);
+    EXPECT_NE(r.code, 0) << arguments;
+    EXPECT_THAT(r.err, HasSubstr(message)) << arguments;
+    EXPECT_FALSE(fs::exists(output)) << output;
+  }
+
+  fs::path dir_;
+};
+
+constexpr const char* stacking =
+    "xOff1,yOff1,colour,onTop1\n"
+    "0,0,Red,1\n0,1,Blue,1\n1,1,Red,0\n1,0,Green,1\n0,0,Red,1\n1,1,Blue,0\n2,0,Red,0\n";
+
+TEST_F(cli_test, every_command_has_help) {
+  for (const std::string command : {"", "fit ", "discretize ", "show "}) {
+    const auto r = run(command + "--help");
+    EXPECT_EQ(r.code, 0) << command;
+    EXPECT_THAT(r.out, HasSubstr("Usage")) << command;
+  }
+  const auto none = run("");
+  EXPECT_NE(none.code, 0);
+}
+
+TEST_F(cli_test, fit_with_edges_writes_bif_and_json) {
+  const auto data = file("d.csv", stacking);
+  const auto r = run("fit --data " + data.string() + " --edges \"xOff1->onTop1,yOff1->onTop1\" --out " + path("f.bif").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("fitted 3 tables"));
+  const auto net = read_network(path("f.bif"));
+  EXPECT_EQ(net.at("xOff1").states(), (std::vector<std::string>{"0", "1", "2"}));
+  // (xOff1=0, yOff1=0): two rows, both onTop1=1; (2, 1) has no data: 0.5.
+  EXPECT_DOUBLE_EQ(net.table("onTop1").probability("1", {"0", "0"}), 1.0);
+  EXPECT_DOUBLE_EQ(net.table("onTop1").probability("1", {"2", "1"}), 0.5);
+
+  const auto b = run("fit --data " + data.string() + " --edges \"xOff1->onTop1\" --estimator bayes --prior dirichlet --alpha 2 --out " +
+                     path("f.json").string());
+  ASSERT_EQ(b.code, 0) << b.err;
+  // xOff1=1: onTop1 = 0, 1, 0 → (2 + 1) / (4 + 3).
+  EXPECT_DOUBLE_EQ(read_network(path("f.json")).table("onTop1").probability("1", {"1"}), 3.0 / 7);
+}
+
+TEST_F(cli_test, fit_from_a_model_file_and_show) {
+  const auto data = file("d.csv", stacking);
+  ASSERT_EQ(run("fit --data " + data.string() + " --edges \"xOff1->onTop1\" --out " + path("a.json").string()).code, 0);
+  const auto r = run("fit --data " + data.string() + " --model " + path("a.json").string() + " --estimator bayes --prior k2 --out " +
+                     path("b.bif").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto shown = run("show " + path("b.bif").string());
+  ASSERT_EQ(shown.code, 0) << shown.err;
+  EXPECT_THAT(shown.out, HasSubstr("P(onTop1 | xOff1)"));
+  EXPECT_THAT(shown.out, HasSubstr("0.8000"));  // xOff1=0: onTop1 = 1, 1, 1 → K2 (1 + 3) / (2 + 3)
+}
+
+TEST_F(cli_test, discretize_then_fit_keeps_the_edges) {
+  std::string raw = "x,onTop\n";
+  for (int i = 0; i < 100; ++i) raw += std::to_string(i * 0.1) + "," + std::to_string(i % 3 == 0) + "\n";
+  const auto in = file("raw.csv", raw);
+  const auto r = run("discretize --in " + in.string() + " --bins 4 --out " + path("disc.csv").string() + " --edges-out " +
+                     path("edges.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("left 'onTop' as it is"));
+  const auto f = run("fit --data " + path("disc.csv").string() + " --edges \"x->onTop\" --intervals " + path("edges.json").string() +
+                     " --out " + path("m.json").string());
+  ASSERT_EQ(f.code, 0) << f.err;
+  const auto net = read_network(path("m.json"));
+  EXPECT_EQ(net.at("x").edges().size(), 5u);
+  // The raw data with the saved edges gives the same network.
+  const auto g = run("fit --data " + in.string() + " --edges \"x->onTop\" --discretization " + path("edges.json").string() +
+                     " --out " + path("m2.json").string());
+  ASSERT_EQ(g.code, 0) << g.err;
+  EXPECT_EQ(read_network(path("m2.json")), net);
+}
+
+TEST_F(cli_test, missing_column) {
+  const auto data = file("d.csv", stacking);
+  expect_failure("fit --data " + data.string() + " --edges \"zOff->onTop1\" --out " + path("f.bif").string(),
+                 "there is no column 'zOff' (columns: xOff1, yOff1, colour, onTop1)", path("f.bif"));
+}
+
+TEST_F(cli_test, cycle_in_edges) {
+  const auto data = file("d.csv", stacking);
+  expect_failure("fit --data " + data.string() + " --edges \"xOff1->onTop1,onTop1->yOff1,yOff1->xOff1\" --out " + path("f.bif").string(),
+                 "closes the cycle yOff1 -> xOff1 -> onTop1 -> yOff1", path("f.bif"));
+}
+
+TEST_F(cli_test, malformed_edges) {
+  const auto data = file("d.csv", stacking);
+  expect_failure("fit --data " + data.string() + " --edges \"xOff1=>onTop1\" --out " + path("f.bif").string(),
+                 "edge 1 ('xOff1=>onTop1') is not of the form 'from->to'", path("f.bif"));
+}
+
+TEST_F(cli_test, nan_in_data) {
+  const auto data = file("d.csv", "x,y\n1,0\nNaN,1\n");
+  expect_failure("fit --data " + data.string() + " --edges \"x->y\" --out " + path("f.bif").string(), "d.csv:3:1: column 'x': 'NaN'",
+                 path("f.bif"));
+}
+
+TEST_F(cli_test, non_numeric_value_in_a_numeric_column) {
+  const auto data = file("raw.csv", "x,y\n1.5,0\n2.5,1\nabc,0\n3.5,1\n4.5,0\n5.5,1\n");
+  expect_failure("discretize --in " + data.string() + " --columns x --bins 2 --out " + path("o.csv").string(),
+                 "raw.csv:4:1: column 'x': expected a number, got 'abc'", path("o.csv"));
+  const auto edges = file("e.json", R"({"format":"pgm-discretization","version":1,"variables":[{"name":"x","states":["0","1"],"edges":[0,2,6]}]})");
+  expect_failure("fit --data " + data.string() + " --edges \"x->y\" --discretization " + edges.string() + " --out " + path("f.bif").string(),
+                 "raw.csv:4:1: column 'x': expected a number, got 'abc'", path("f.bif"));
+}
+
+TEST_F(cli_test, empty_file_and_header_only) {
+  expect_failure("fit --data " + file("e.csv", "").string() + " --edges \"a->b\" --out " + path("f.bif").string(),
+                 "e.csv:1:1: the file is empty", path("f.bif"));
+  expect_failure("fit --data " + file("h.csv", "a,b\n").string() + " --edges \"a->b\" --out " + path("f.bif").string(),
+                 "h.csv: there are no data rows", path("f.bif"));
+  expect_failure("fit --data " + path("absent.csv").string() + " --edges \"a->b\" --out " + path("f.bif").string(),
+                 "cannot open", path("f.bif"));
+}
+
+TEST_F(cli_test, ragged_rows) {
+  expect_failure("fit --data " + file("r.csv", "a,b\n0,1\n1\n").string() + " --edges \"a->b\" --out " + path("f.bif").string(),
+                 "r.csv:3:1: expected 2 fields as in the header, found 1", path("f.bif"));
+}
+
+TEST_F(cli_test, a_failed_fit_leaves_an_existing_output_alone) {
+  const auto out = file("f.bif", "previous");
+  const auto r = run("fit --data " + file("d.csv", stacking).string() + " --edges \"q->onTop1\" --out " + out.string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_EQ(slurp(out), "previous");
+}
+
+TEST_F(cli_test, three_hundred_states) {
+  std::string csv = "id,ok\n";
+  for (int i = 0; i < 900; ++i) csv += "item" + std::to_string(i % 300) + "," + std::to_string(i % 2) + "\n";
+  const auto r = run("fit --data " + file("w.csv", csv).string() + " --edges \"id->ok\" --out " + path("f.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(read_network(path("f.json")).at("id").cardinality(), 300u);
+}
+
+TEST_F(cli_test, usage_errors) {
+  const auto data = file("d.csv", stacking);
+  auto r = run("fit --data " + data.string() + " --edges \"x->y\" --model m.json --out f.bif");
+  EXPECT_NE(r.code, 0);
+  EXPECT_THAT(r.err, HasSubstr("excludes"));
+  r = run("fit --data " + data.string() + " --out f.bif");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("--edges or --model"));
+  r = run("fit --data " + data.string() + " --edges \"xOff1->onTop1\" --prior k2 --out " + path("f.bif").string());
+  EXPECT_THAT(r.err, HasSubstr("apply to --estimator bayes"));
+  r = run("fit --data " + data.string() + " --edges \"xOff1->onTop1\" --out " + path("f.txt").string());
+  EXPECT_THAT(r.err, HasSubstr("expected a file ending in .bif or .json"));
+  r = run("show " + path("nothing.bif").string());
+  EXPECT_THAT(r.err, HasSubstr("cannot open"));
+  EXPECT_THAT(r.err, Not(HasSubstr("internal")));
+}
+
+}  // namespace
+}  // namespace pgm

@@ -1,0 +1,16 @@
+// Fits a two-node network through the installed or fetched library and checks one value.
+#include <pgm/pgm.hpp>
+
+#include <iostream>
+
+int main() {
+  const pgm::variable a("a", {"no", "yes"});
+  const pgm::variable b("b", {"no", "yes"});
+  pgm::dataset data;
+  data.add(pgm::discrete_column(a, std::vector<unsigned>{0, 1, 1, 1}));
+  data.add(pgm::discrete_column(b, std::vector<unsigned>{0, 0, 1, 1}));
+  const auto network = pgm::fit(pgm::network_structure({a, b}, {{"a", "b"}}), data);
+  const double p = network.table("b").probability("yes", {"yes"});
+  std::cout << "P(b=yes | a=yes) = " << p << '\n';
+  return p * 3 == 2 ? 0 : 1;
+}

@@ -1,0 +1,149 @@
+#include "pgm/data/csv.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <random>
+#include <sstream>
+
+namespace pgm {
+namespace {
+
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
+
+dataset parse(std::string_view text, const csv_options& options = {}) {
+  return parse_csv(text, "runs.csv", options);
+}
+
+TEST(csv_test, numeric_columns_are_continuous_text_columns_discrete) {
+  const auto data = parse("xOff1,colour,onTop1\n0.5,Red,1\n-1.25,Blue,0\n3e-1,Red,1\n");
+  EXPECT_EQ(data.rows(), 3u);
+  EXPECT_THAT(data.continuous("xOff1").values(), ElementsAre(0.5, -1.25, 0.3));
+  const auto& colour = data.discrete("colour");
+  EXPECT_EQ(colour.var().states(), (std::vector<std::string>{"Blue", "Red"}));  // sorted
+  EXPECT_EQ(colour.code(0), 1u);
+  EXPECT_EQ(colour.code_width(), 1u);
+  EXPECT_FALSE(data.is_discrete("onTop1"));
+}
+
+TEST(csv_test, discrete_numeric_labels_sort_numerically) {
+  csv_options options;
+  options.default_kind = column_kind::discrete;
+  const auto data = parse("n\n10\n9\n-1\n9.0\n0.5\n", options);
+  const auto& n = data.discrete("n");
+  EXPECT_EQ(n.var().states(), (std::vector<std::string>{"-1", "0.5", "9", "10"}));  // "9.0" is 9
+  EXPECT_EQ(n.code(0), 3u);
+  EXPECT_EQ(n.code(3), 2u);
+}
+
+TEST(csv_test, quoting_crlf_bom_and_blank_lines) {
+  const auto data = parse("\xEF\xBB\xBF" "name,note\r\n\"a, b\",\"say \"\"hi\"\"\"\r\n\r\nc,\"two\nlines\"\r\n  d , e \r\n");
+  const auto& name = data.discrete("name");
+  EXPECT_EQ(name.var().states(), (std::vector<std::string>{"a, b", "c", "d"}));
+  const auto& note = data.discrete("note");
+  EXPECT_EQ(note.label(0), "say \"hi\"");
+  EXPECT_EQ(note.label(1), "two\nlines");
+  EXPECT_EQ(note.label(2), "e");
+}
+
+TEST(csv_test, selects_columns_and_uses_known_variables) {
+  csv_options options;
+  options.columns = {"onTop1"};
+  options.variables.emplace("onTop1", variable("onTop1", {"1", "0"}));
+  const auto data = parse("x,onTop1\n1,0\n2,1\n", options);
+  EXPECT_EQ(data.names(), (std::vector<std::string>{"onTop1"}));
+  EXPECT_EQ(data.discrete("onTop1").code(0), 1u);  // the known order, not sorted
+  options.columns = {"onTop1", "nope"};
+  EXPECT_THAT([&] { parse("x,onTop1\n1,0\n", options); },
+              ThrowsMessage<data_error>(HasSubstr("runs.csv: there is no column 'nope' (columns: x, onTop1)")));
+}
+
+TEST(csv_test, a_label_outside_a_known_variable_is_located) {
+  csv_options options;
+  options.variables.emplace("onTop1", variable("onTop1", {"0", "1"}));
+  EXPECT_THAT([&] { parse("onTop1\n0\n2\n", options); },
+              ThrowsMessage<parse_error>(HasSubstr("runs.csv:3:1: column 'onTop1': '2' is not a state of 'onTop1' (states: 0, 1)")));
+}
+
+TEST(csv_test, non_numeric_value_in_numeric_column) {
+  csv_options options;
+  options.kinds["xOff1"] = column_kind::continuous;
+  try {
+    parse("id,xOff1\n1,0.5\n2,abc\n", options);
+    FAIL();
+  } catch (const parse_error& e) {
+    EXPECT_EQ(e.line(), 3u);
+    EXPECT_EQ(e.column(), 3u);
+    EXPECT_EQ(e.file(), "runs.csv");
+    EXPECT_THAT(e.what(), HasSubstr("column 'xOff1': expected a number, got 'abc'"));
+  }
+}
+
+TEST(csv_test, nan_and_infinity_are_refused_in_numeric_columns) {
+  EXPECT_THAT([] { parse("x\n1\nNaN\n2\n"); },
+              ThrowsMessage<parse_error>(HasSubstr("runs.csv:3:1: column 'x': 'NaN' is not a finite number")));
+  EXPECT_THAT([] { parse("x\n1\ninf\n"); }, ThrowsMessage<parse_error>(HasSubstr("not a finite number")));
+  csv_options discrete;
+  discrete.default_kind = column_kind::discrete;
+  EXPECT_THAT([&] { parse("x\n1\nnan\n", discrete); }, ThrowsMessage<parse_error>(HasSubstr("runs.csv:3:1")));
+  // In a text column "nan" is just a label.
+  EXPECT_EQ(parse("x\nnan\nbread\n").discrete("x").var().cardinality(), 2u);
+}
+
+TEST(csv_test, empty_file_header_only_and_empty_values) {
+  EXPECT_THAT([] { parse(""); }, ThrowsMessage<parse_error>(HasSubstr("runs.csv:1:1: the file is empty")));
+  EXPECT_THAT([] { parse("\n \n"); }, ThrowsMessage<parse_error>(HasSubstr("the file is empty")));
+  EXPECT_THAT([] { parse("a,b\n"); }, ThrowsMessage<data_error>(HasSubstr("no data rows")));
+  csv_options allow;
+  allow.allow_empty = true;
+  EXPECT_EQ(parse("a,b\n", allow).rows(), 0u);
+  EXPECT_THAT([] { parse("a,b\n1,\n"); }, ThrowsMessage<parse_error>(HasSubstr("runs.csv:2:3: column 'b': the value is empty")));
+}
+
+TEST(csv_test, ragged_rows) {
+  EXPECT_THAT([] { parse("a,b,c\n1,2,3\n1,2\n"); },
+              ThrowsMessage<parse_error>(HasSubstr("runs.csv:3:3: expected 3 fields as in the header, found 2")));
+  EXPECT_THAT([] { parse("a,b\n1,2,3\n"); }, ThrowsMessage<parse_error>(HasSubstr("expected 2 fields as in the header, found 3")));
+}
+
+TEST(csv_test, malformed_quotes_and_headers) {
+  EXPECT_THAT([] { parse("a\n\"open\n"); }, ThrowsMessage<parse_error>(HasSubstr("runs.csv:2:1: a quoted field is never closed")));
+  EXPECT_THAT([] { parse("a,b\n\"x\"y,1\n"); }, ThrowsMessage<parse_error>(HasSubstr("after a closing quote")));
+  EXPECT_THAT([] { parse("a,a\n1,2\n"); }, ThrowsMessage<parse_error>(HasSubstr("runs.csv:1:3: the column 'a' appears twice")));
+  EXPECT_THAT([] { parse("a,,c\n1,2,3\n"); }, ThrowsMessage<parse_error>(HasSubstr("has no name")));
+}
+
+TEST(csv_test, three_hundred_states_use_wider_codes) {
+  std::string text = "id\n";
+  for (int i = 0; i < 600; ++i) text += "item" + std::to_string(i % 300) + "\n";
+  const auto data = parse(text);
+  const auto& id = data.discrete("id");
+  EXPECT_EQ(id.var().cardinality(), 300u);
+  EXPECT_EQ(id.code_width(), 2u);
+  EXPECT_EQ(id.label(299), "item299");
+  EXPECT_EQ(id.label(300), "item0");
+}
+
+TEST(csv_test, write_then_read_gives_the_same_bits) {
+  std::mt19937_64 engine(3);
+  std::vector<double> values;
+  for (int i = 0; i < 1000; ++i) values.push_back(std::ldexp(static_cast<double>(engine()), -40) - 8e6);
+  values.push_back(5e-324);
+  values.push_back(-0.1);
+  dataset data;
+  data.add(continuous_column("x", values));
+  std::vector<std::uint32_t> codes(values.size());
+  for (std::size_t i = 0; i < codes.size(); ++i) codes[i] = static_cast<std::uint32_t>(i % 3);
+  data.add(discrete_column(variable("label", {"a,b", "say \"x\"", " padded"}), codes));
+  std::ostringstream out;
+  write_csv(data, out);
+  csv_options options;
+  options.variables.emplace("label", data.discrete("label").var());
+  const auto back = parse(out.str(), options);
+  EXPECT_EQ(back, data);
+}
+
+}  // namespace
+}  // namespace pgm

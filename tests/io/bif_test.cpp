@@ -1,0 +1,132 @@
+#include "pgm/io/bif.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "support/random_network.hpp"
+#include "pgm/io/network_file.hpp"
+
+namespace pgm {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
+
+constexpr const char* asia_like = R"(// a comment
+network "test net" {
+  property author = someone ;
+}
+variable smoke {
+  type discrete [ 2 ] { yes, no };
+}
+variable bronc { /* block
+comment */
+  type discrete [ 2 ] { yes, no };
+  property position = (1, 2) ;
+}
+variable xray {
+  type discrete [ 3 ] { a, b, c };
+}
+probability ( smoke ) {
+  table 0.5, 0.5;
+}
+probability ( bronc | smoke ) {
+  (yes) 0.6, 0.4;
+  (no) 0.3, 0.7;
+}
+probability ( xray | bronc, smoke ) {
+  (no, yes) 0.1 0.2 0.7;
+  default 0.2, 0.3, 0.5;
+}
+)";
+
+TEST(bif_test, reads_tables_defaults_and_properties) {
+  const auto net = parse_bif(asia_like, "asia.bif");
+  EXPECT_EQ(net.size(), 3u);
+  EXPECT_EQ(net.at("xray").states(), (std::vector<std::string>{"a", "b", "c"}));
+  EXPECT_DOUBLE_EQ(net.table("bronc").probability("yes", {"no"}), 0.3);
+  EXPECT_DOUBLE_EQ(net.table("xray").probability("c", {"no", "yes"}), 0.7);
+  EXPECT_DOUBLE_EQ(net.table("xray").probability("c", {"yes", "yes"}), 0.5);
+  EXPECT_EQ(net.table("xray").parents()[0].name(), "bronc");
+}
+
+TEST(bif_test, round_trip_keeps_every_bit_and_pgm_properties) {
+  for (std::uint64_t seed = 1; seed <= 5; ++seed) {
+    const auto net = testing::random_network(seed, {.nodes = 8, .max_parents = 3, .max_states = 5});
+    EXPECT_EQ(parse_bif(to_bif(net), "x.bif"), net);
+  }
+  const auto x = variable::intervals("xOff1", {-3, -1.4, -0.4, 0.4, 1.4, 3}, {"x-offset", "cm", "cubeUp1"});
+  const variable top("onTop1", {"0", "1"});
+  const auto net = bayesian_network::from_tables(
+      {cpt<double>(x, {}), cpt<double>(top, {x}, {0.1, 0.9, 0.2, 0.8, 0.3, 0.7, 0.4, 0.6, 0.5, 0.5})});
+  const auto text = to_bif(net);
+  EXPECT_THAT(text, HasSubstr("property edges = -3, -1.4, -0.4, 0.4, 1.4, 3 ;"));
+  EXPECT_THAT(text, HasSubstr("property unit = cm ;"));
+  EXPECT_THAT(text, HasSubstr("  (2) 0.3, 0.7;"));
+  EXPECT_EQ(parse_bif(text, "x.bif"), net);
+  bif_write_options plain;
+  plain.properties = false;
+  EXPECT_THAT(to_bif(net, plain), ::testing::Not(HasSubstr("property")));
+}
+
+TEST(bif_test, errors_are_located) {
+  EXPECT_THAT([] { static_cast<void>(parse_bif("variable a {\n  type discrete [ 2 ] { x, y };\n}\nprobability ( a | b ) {\n}\n", "m.bif")); },
+              ThrowsMessage<parse_error>(HasSubstr("m.bif:4:19: parent 'b' is not declared")));
+  EXPECT_THAT([] { static_cast<void>(parse_bif("variable a {\n  type discrete [ 3 ] { x, y };\n}\n", "m.bif")); },
+              ThrowsMessage<parse_error>(HasSubstr("m.bif:2:19: variable 'a' declares 3 states but lists 2")));
+  EXPECT_THAT([] { static_cast<void>(parse_bif("variable a {\n type discrete [ 2 ] { x, y };\n}\nprobability ( a ) {\n table 0.5, zero;\n}\n", "m.bif")); },
+              ThrowsMessage<parse_error>(HasSubstr("m.bif:5:13: expected a probability, found 'zero'")));
+  EXPECT_THAT([] { static_cast<void>(parse_bif("variable a {\n type discrete [ 2 ] { x, y };\n}\n", "m.bif")); },
+              ThrowsMessage<parse_error>(HasSubstr("variable 'a' has no probability block")));
+  EXPECT_THAT([] { static_cast<void>(parse_bif("variable a {\n type discrete [ 2 ] { x, y };\n}\nprobability ( a ) {\n table 0.5, 0.6;\n}\n", "m.bif")); },
+              ThrowsMessage<parse_error>(HasSubstr("sums to 1.1")));
+  EXPECT_THAT([] { static_cast<void>(parse_bif("", "m.bif")); }, ThrowsMessage<parse_error>(HasSubstr("declares no variables")));
+  EXPECT_THAT([] { static_cast<void>(parse_bif("variable a { type discrete [ 2 ] { x, y }; }\nprobability ( a ) {\n", "m.bif")); },
+              ThrowsMessage<parse_error>(HasSubstr("found the end of the file")));
+}
+
+TEST(bif_test, missing_configurations_and_parent_tables) {
+  const std::string head =
+      "variable a { type discrete [ 2 ] { x, y }; }\nvariable b { type discrete [ 2 ] { x, y }; }\n"
+      "probability ( a ) { table 0.5, 0.5; }\n";
+  EXPECT_THAT([&] { static_cast<void>(parse_bif(head + "probability ( b | a ) {\n (x) 0.5, 0.5;\n}\n", "m.bif")); },
+              ThrowsMessage<parse_error>(HasSubstr("misses a parent configuration and has no 'default' line")));
+  EXPECT_THAT([&] { static_cast<void>(parse_bif(head + "probability ( b | a ) {\n table 0.5, 0.5, 0.5, 0.5;\n}\n", "m.bif")); },
+              ThrowsMessage<parse_error>(HasSubstr("which has parents, is ordered differently")));
+  EXPECT_THAT([&] { static_cast<void>(parse_bif(head + "probability ( b | a ) {\n (z) 0.5, 0.5;\n}\n", "m.bif")); },
+              ThrowsMessage<parse_error>(HasSubstr("m.bif:5:2: 'z' is not a state of 'a'")));
+  EXPECT_THAT([&] { static_cast<void>(parse_bif(head + "probability ( b | a ) {\n (x) 0.5;\n}\n", "m.bif")); },
+              ThrowsMessage<parse_error>(HasSubstr("expected 2 probabilities for 'b', found 1")));
+}
+
+TEST(bif_test, names_bif_cannot_hold_are_refused_on_writing) {
+  const auto net = bayesian_network::from_tables({cpt<double>(variable("a", {"light blue", "red"}), {})});
+  EXPECT_THAT([&] { static_cast<void>(to_bif(net)); },
+              ThrowsMessage<model_error>(HasSubstr("state of 'a' 'light blue' cannot be written to BIF")));
+}
+
+TEST(bif_test, writing_is_atomic) {
+  const auto dir = std::filesystem::temp_directory_path() / "pgm_bif_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "net.bif";
+  std::ofstream(path) << "old content";
+  const auto bad = bayesian_network::from_tables({cpt<double>(variable("a", {"light blue", "red"}), {})});
+  EXPECT_THROW(write_network(bad, path), model_error);
+  std::ifstream in(path);
+  std::string content((std::istreambuf_iterator<char>(in)), {});
+  EXPECT_EQ(content, "old content");
+  EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir), {}), 1);  // no temporary left
+  const auto good = bayesian_network::from_tables({cpt<double>(variable("a", {"blue", "red"}), {})});
+  EXPECT_THAT([&] { write_network(good, dir / "missing" / "net.bif"); },
+              ThrowsMessage<io_error>(HasSubstr("does not exist")));
+  EXPECT_THAT([&] { write_network(good, dir / "net.txt"); }, ThrowsMessage<io_error>(HasSubstr("expected a .bif or .json file")));
+  EXPECT_THAT([&] { static_cast<void>(read_network(dir / "nothing.bif")); }, ThrowsMessage<io_error>(HasSubstr("cannot open")));
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace pgm
