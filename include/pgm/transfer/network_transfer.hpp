@@ -1,0 +1,59 @@
+#pragma once
+/// \file
+/// Transfer at the level of whole networks: for every `target=prior` pair of a correspondence
+/// map, the prior table f(θ′) of the target node, ready to be the weighted prior (eq. 8) of a
+/// fit. The map is checked against both networks first, so a misspelt name is an error that
+/// names it rather than a variable silently left out.
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/error.hpp"
+#include "pgm/core/network_structure.hpp"
+#include "pgm/learn/fit.hpp"
+#include "pgm/transfer/prior_transfer.hpp"
+#include "pgm/transfer/registry.hpp"
+
+namespace pgm {
+
+/// Throws model_error for a map entry that names a variable its network lacks.
+inline void check_correspondence(const correspondence& map, const bayesian_network& prior,
+                                 const network_structure& target) {
+  auto in_target = [&](const std::string& name, const char* kind) {
+    if (!target.contains(name)) throw model_error("the map's " + std::string(kind) + " '" + name + "' is not a variable of the target network");
+  };
+  auto in_prior = [&](const std::string& name, const char* kind) {
+    if (!prior.structure().contains(name)) throw model_error("the map's " + std::string(kind) + " '" + name + "' is not a variable of the prior network");
+  };
+  for (const auto& [t, p] : map.transferred) in_target(t, "transferred node"), in_prior(p, "transferred node");
+  for (const auto& [t, p] : map.identical) in_target(t, "identical variable"), in_prior(p, "identical variable");
+  for (const auto& [t, p] : map.related) in_target(t, "related variable"), in_prior(p, "related variable");
+  for (const auto& [p, pin] : map.pinned) in_prior(p, "pinned variable");
+}
+
+/// The transferred prior of every `target=prior` pair of `map`, by target node.
+[[nodiscard]] inline std::map<std::string, transferred_prior, std::less<>> transfer_priors(
+    const bayesian_network& prior, const network_structure& target, const correspondence& map,
+    const any_prior_transfer& strategy, const transfer_options& options = {}) {
+  check_correspondence(map, prior, target);
+  std::map<std::string, transferred_prior, std::less<>> priors;
+  for (const auto& [target_node, prior_node] : map.transferred) {
+    const auto id = target.id(target_node);
+    const transfer_problem problem(prior, prior_node, target.at(id), target.parent_variables(id), map, options);
+    priors.emplace(target_node, strategy(problem));
+  }
+  return priors;
+}
+
+/// Adds the weighted prior (eq. 8) of each transferred node to a fit's options.
+inline void use_transferred_priors(fit_options& options,
+                                   const std::map<std::string, transferred_prior, std::less<>>& priors,
+                                   const std::map<std::string, double, std::less<>>& weights) {
+  for (const auto& [node, prior] : priors) {
+    options.node_priors.insert_or_assign(node, weighted_prior{prior.table(), weights.at(node)});
+  }
+}
+
+}  // namespace pgm

@@ -1,0 +1,102 @@
+#pragma once
+/// \file
+/// Strategies by name, for the `pgm` program and for code that picks one at run time. The
+/// built-in strategies are always there; a user's strategy joins with one line in its own
+/// translation unit:
+///
+///     static const pgm::register_transfer<my_strategy> registered;
+///
+/// (linked into the program as an object file, not from a static library, whose unreferenced
+/// objects the linker would drop).
+
+#include <functional>
+#include <map>
+#include <mutex>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "pgm/core/error.hpp"
+#include "pgm/detail/text.hpp"
+#include "pgm/transfer/prior_transfer.hpp"
+#include "pgm/transfer/replacement.hpp"
+
+namespace pgm {
+
+/// Any strategy, type-erased; it models PriorTransfer itself.
+class any_prior_transfer {
+ public:
+  template <PriorTransfer S>
+    requires(!std::same_as<S, any_prior_transfer>)
+  any_prior_transfer(S strategy)  // NOLINT(google-explicit-constructor): a strategy is one
+      : name_(strategy.name()), call_(std::move(strategy)) {}
+
+  [[nodiscard]] std::string_view name() const noexcept { return name_; }
+  [[nodiscard]] transferred_prior operator()(const transfer_problem& problem) const { return call_(problem); }
+
+ private:
+  std::string name_;
+  std::function<transferred_prior(const transfer_problem&)> call_;
+};
+
+static_assert(PriorTransfer<any_prior_transfer>);
+
+class transfer_registry {
+ public:
+  /// The program-wide registry, holding the built-in strategies from the start.
+  [[nodiscard]] static transfer_registry& instance() {
+    static transfer_registry registry = [] {
+      transfer_registry r;
+      r.add(direct_replacement{});
+      r.add(cross_replacement{});
+      r.add(minimal_replacement{});
+      return r;
+    }();
+    return registry;
+  }
+
+  /// Adds a strategy under its name; a second strategy of the same name is an error.
+  void add(any_prior_transfer strategy) {
+    const std::lock_guard lock(mutex_);
+    std::string name(strategy.name());
+    if (name.empty()) throw model_error("a transfer strategy needs a non-empty name");
+    if (!strategies_.emplace(name, std::move(strategy)).second) {
+      throw model_error("a transfer strategy named '" + name + "' is registered already");
+    }
+  }
+
+  /// The strategy of that name, or a model_error listing the known ones.
+  [[nodiscard]] any_prior_transfer at(std::string_view name) const {
+    const std::lock_guard lock(mutex_);
+    const auto it = strategies_.find(name);
+    if (it == strategies_.end()) {
+      std::vector<std::string> known;
+      for (const auto& [n, s] : strategies_) known.push_back(n);
+      throw model_error("unknown transfer strategy '" + std::string(name) + "'; known: " + detail::join(known));
+    }
+    return it->second;
+  }
+
+  [[nodiscard]] std::vector<std::string> names() const {
+    const std::lock_guard lock(mutex_);
+    std::vector<std::string> known;
+    for (const auto& [n, s] : strategies_) known.push_back(n);
+    return known;
+  }
+
+  transfer_registry() = default;
+  transfer_registry(transfer_registry&& other) noexcept : strategies_(std::move(other.strategies_)) {}
+
+ private:
+  mutable std::mutex mutex_;
+  std::map<std::string, any_prior_transfer, std::less<>> strategies_;
+};
+
+/// Registers a strategy when the program starts: `static const register_transfer<S> r;`.
+template <PriorTransfer S>
+struct register_transfer {
+  explicit register_transfer(S strategy = {}) { transfer_registry::instance().add(std::move(strategy)); }
+};
+
+}  // namespace pgm

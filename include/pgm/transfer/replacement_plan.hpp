@@ -1,0 +1,184 @@
+#pragma once
+/// \file
+/// The building block of every replacement strategy: a `replacement_plan` says, for each
+/// parent of the prior node X′, where its state comes from — a target parent (through a state
+/// mapping) or a fixed distribution (a pinned value, or the prior's marginal) — and
+/// `evaluate_plan` turns the plan into the prior table f(θ′_{·|u′(u)}) for every target u.
+/// Direct- and Cross-Replacement differ only in how they build the plan.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pgm/core/error.hpp"
+#include "pgm/transfer/state_map.hpp"
+#include "pgm/transfer/transfer_problem.hpp"
+
+namespace pgm {
+
+/// Where one prior parent's state comes from.
+struct parent_source {
+  /// The target parent that supplies it, with how its states map; or none.
+  std::optional<std::size_t> target_parent;
+  state_mapping mapping;
+  /// Without a target parent: a fixed distribution over the prior parent's states.
+  std::vector<weighted_state> fixed;
+};
+
+struct replacement_plan {
+  std::vector<parent_source> parents;  ///< one per parent of the prior node, in its order
+  std::vector<std::size_t> child_state;  ///< prior child state of each target child state
+};
+
+namespace detail {
+
+/// The prior's distribution of a root variable: what marginalizing it means.
+[[nodiscard]] inline std::vector<weighted_state> prior_marginal(const transfer_problem& problem, const variable& v) {
+  const auto* network = problem.prior_network();
+  if (!network) {
+    throw model_error("marginalizing the prior's '" + v.name() + "' needs the prior network, not only its table");
+  }
+  const auto& table = network->table(v.name());
+  if (!table.parents().empty()) {
+    throw model_error("the prior's '" + v.name() +
+                      "' has parents, so its marginal would need inference; pin it to a value instead");
+  }
+  std::vector<weighted_state> shares;
+  for (std::size_t s = 0; s < v.cardinality(); ++s) {
+    const double p = table.column(config_index(0))[s];
+    if (p > 0) shares.push_back({s, p});
+  }
+  return shares;
+}
+
+[[nodiscard]] inline std::vector<std::size_t> match_child(const transfer_problem& problem) {
+  const auto& target = problem.target_child();
+  const auto& prior = problem.prior_table().child();
+  const auto mapping = map_states(target, prior);
+  std::vector<std::size_t> child(mapping.size());
+  std::vector<bool> used(prior.cardinality(), false);
+  for (std::size_t s = 0; s < mapping.size(); ++s) {
+    child[s] = mapping[s].front().state;
+    if (used[child[s]]) break;
+    used[child[s]] = true;
+  }
+  if (target.cardinality() != prior.cardinality() || std::find(used.begin(), used.end(), false) != used.end()) {
+    throw model_error("the states of '" + target.name() + "' {" + list_for_message(target.states()) +
+                      "} and of the prior's '" + prior.name() + "' {" + list_for_message(prior.states()) +
+                      "} do not correspond one to one");
+  }
+  return child;
+}
+
+}  // namespace detail
+
+/// A plan assigning each prior parent from the target parent that `counterpart` names (the
+/// prior variable a target variable stands for, if any); `strategy` names the strategy in
+/// errors. Unassigned prior parents take their pin from the map, or it is an error.
+template <class Counterpart>
+[[nodiscard]] replacement_plan make_plan(const transfer_problem& problem, Counterpart counterpart,
+                                         const std::string& strategy) {
+  const auto& prior = problem.prior_table();
+  replacement_plan plan;
+  plan.child_state = detail::match_child(problem);
+  std::size_t assigned = 0;
+  for (const auto& prior_parent : prior.parents()) {
+    parent_source source;
+    for (std::size_t t = 0; t < problem.target_parents().size(); ++t) {
+      const auto& target_parent = problem.target_parents()[t];
+      if (counterpart(target_parent.name()) != std::optional<std::string>(prior_parent.name())) continue;
+      if (source.target_parent) {
+        throw model_error(strategy + ": both '" + problem.target_parents()[*source.target_parent].name() +
+                          "' and '" + target_parent.name() + "' stand for the prior's '" + prior_parent.name() + "'");
+      }
+      source.target_parent = t;
+      source.mapping = map_states(target_parent, prior_parent, problem.options().matching);
+    }
+    if (source.target_parent) {
+      ++assigned;
+    } else if (const auto pin = problem.map().pinned.find(prior_parent.name()); pin != problem.map().pinned.end()) {
+      source.fixed = pin->second.marginalize() ? detail::prior_marginal(problem, prior_parent)
+                                               : std::vector<weighted_state>{{pinned_state(prior_parent, pin->second.value), 1.0}};
+    } else {
+      throw model_error(strategy + " leaves the prior's parent '" + prior_parent.name() + "' of '" + prior.child().name() +
+                        "' unassigned: no parent of '" + problem.target_child().name() +
+                        "' corresponds to it; pin it with '" + prior_parent.name() + "@<value>' or marginalize it with '" +
+                        prior_parent.name() + "@*'");
+    }
+    plan.parents.push_back(std::move(source));
+  }
+  if (!prior.parents().empty() && assigned == 0) {
+    throw model_error(strategy + ": no parent of '" + problem.target_child().name() + "' corresponds to a parent of the prior's '" +
+                      prior.child().name() + "'");
+  }
+  return plan;
+}
+
+/// Direct-Replacement's plan: u′ = u restricted to Pa_X′ ∩ Pa_X (identical variables).
+[[nodiscard]] inline replacement_plan direct_plan(const transfer_problem& problem) {
+  const auto& map = problem.map();
+  return make_plan(problem, [&](const std::string& target) { return std::optional(map.identical_to(target)); },
+                   "Direct-Replacement");
+}
+
+/// Cross-Replacement's plan: u′ = u restricted to the related variables, read as their prior
+/// counterparts.
+[[nodiscard]] inline replacement_plan cross_plan(const transfer_problem& problem) {
+  const auto& map = problem.map();
+  return make_plan(problem, [&](const std::string& target) { return map.related_to(target); }, "Cross-Replacement");
+}
+
+/// f(θ′_{·|u′(u)}) for every target configuration u under `plan`: the prior column of u′, or
+/// the weighted mixture of columns where states were overlap-matched or parents marginalized.
+[[nodiscard]] inline transferred_prior evaluate_plan(const replacement_plan& plan, const transfer_problem& problem,
+                                                     replacement via) {
+  const auto& prior = problem.prior_table();
+  const auto& targets = problem.target_parents();
+  const std::size_t j = problem.target_child().cardinality();
+  std::vector<std::size_t> target_cards;
+  for (const auto& t : targets) target_cards.push_back(t.cardinality());
+  const mixed_radix target_radix(std::move(target_cards));
+  const auto& prior_strides = prior.parent_radix().strides();
+  const std::size_t k = plan.parents.size();
+
+  std::vector<double> values(target_radix.size() * j, 0.0);
+  std::vector<prior_term> terms;
+  terms.reserve(target_radix.size());
+  std::vector<std::uint32_t> term_counts(target_radix.size());
+  std::vector<std::size_t> digits(targets.size(), 0);
+  std::vector<const std::vector<weighted_state>*> choices(k);
+  std::vector<std::size_t> pick(k);
+
+  for (std::size_t u = 0; u < target_radix.size(); ++u) {
+    for (std::size_t p = 0; p < k; ++p) {
+      const auto& source = plan.parents[p];
+      choices[p] = source.target_parent ? &source.mapping[digits[*source.target_parent]] : &source.fixed;
+    }
+    // Odometer over the combinations of weighted prior states (one, in the common case).
+    std::fill(pick.begin(), pick.end(), 0);
+    std::uint32_t count = 0;
+    while (true) {
+      std::size_t configuration = 0;
+      double weight = 1.0;
+      for (std::size_t p = 0; p < k; ++p) {
+        const auto& chosen = (*choices[p])[pick[p]];
+        configuration += chosen.state * prior_strides[p];
+        weight *= chosen.weight;
+      }
+      const auto column = prior.column(config_index(static_cast<config_index::rep>(configuration)));
+      for (std::size_t x = 0; x < j; ++x) values[u * j + x] += weight * column[plan.child_state[x]];
+      terms.push_back({static_cast<std::uint32_t>(configuration), weight});
+      ++count;
+      std::size_t p = k;
+      while (p > 0 && ++pick[p - 1] == choices[p - 1]->size()) pick[--p] = 0;
+      if (p == 0) break;
+    }
+    term_counts[u] = count;
+    for (std::size_t d = digits.size(); d > 0 && ++digits[d - 1] == target_radix.radix(d - 1);) digits[--d] = 0;
+  }
+  return transferred_prior(cpt<double>(problem.target_child(), targets, std::move(values)), prior.parents(),
+                           std::move(terms), std::move(term_counts), std::vector<replacement>(target_radix.size(), via));
+}
+
+}  // namespace pgm
