@@ -1,14 +1,17 @@
 // pgm fit: estimate every table of a network from data.
 
+#include <cmath>
 #include <iostream>
 #include <optional>
 #include <string>
 
 #include "cli/common.hpp"
+#include "cli/transfer_arguments.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/fit.hpp"
+#include "pgm/transfer/prior_weight.hpp"
 
 namespace pgm::cli {
 namespace {
@@ -26,7 +29,40 @@ struct fit_arguments {
   std::string intervals_file;
   unsigned threads = 0;
   std::string out;
+  transfer_arguments transfer;
 };
+
+/// Sets the weighted prior (eq. 8) of every node the map transfers to, choosing w from the
+/// data when asked.
+void add_transferred_priors(const fit_arguments& args, const network_structure& structure, const dataset& data,
+                            fit_options& options) {
+  std::optional<double> fixed_weight;
+  if (args.transfer.w_prior != "auto") {
+    fixed_weight = detail::parse_double(args.transfer.w_prior);
+    if (!fixed_weight || !std::isfinite(*fixed_weight) || *fixed_weight < 0) {
+      throw error("--w-prior must be a number ≥ 0 or auto, got '" + args.transfer.w_prior + "'");
+    }
+  }
+  const auto prior = read_network(args.transfer.prior_model);
+  const auto map = resolve_map(args.transfer, prior, structure);
+  const auto priors = resolve_priors(args.transfer, prior, structure, map);
+  std::map<std::string, double, std::less<>> weights;
+  for (const auto& [node, transferred] : priors) {
+    if (!fixed_weight) {
+      const auto choice = choose_prior_weight(count_node(structure, structure.id(node), data, options.counting),
+                                              transferred.table());
+      note("--w-prior auto for '" + node + "': " + choice.reason);
+      weights.emplace(node, choice.weight);
+    } else {
+      weights.emplace(node, *fixed_weight);
+    }
+  }
+  use_transferred_priors(options, priors, weights);
+  for (const auto& [node, w] : weights) {
+    note("'" + node + "' gets the " + args.transfer.strategy + " prior from '" + map.transferred.at(node) + "' with w = " +
+         detail::format_short(w));
+  }
+}
 
 parameter_prior make_prior(const fit_arguments& args) {
   if (args.estimator == "mle") {
@@ -88,6 +124,11 @@ void run_fit(const fit_arguments& args) {
       structure.update_variable(variable::with_edges(name, own.states(), intervals.edges(), intervals.tags()));
     }
   }
+  if (!args.transfer.prior_model.empty()) {
+    add_transferred_priors(args, structure, data, options);
+  } else if (!args.transfer.map.empty()) {
+    throw error("--map applies with --prior-model");
+  }
   const auto network = fit(structure, data, options);
   write_network(network, args.out);
   std::cout << "fitted " << network.size() << " tables (" << network.free_parameters()
@@ -127,6 +168,7 @@ void add_fit_command(CLI::App& app) {
   raw->excludes(intervals);
   cmd->add_option("--threads", args->threads, "Counting threads (0: all cores)")->capture_default_str();
   cmd->add_option("--out", args->out, "The fitted network, .bif or .json")->required();
+  add_transfer_options(*cmd, args->transfer, true);
   cmd->callback([args] {
     if (args->edges.empty() && args->model.empty()) throw error("give the structure with --edges or --model");
     run_fit(*args);

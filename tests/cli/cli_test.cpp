@@ -12,6 +12,7 @@
 #include <sstream>
 #include <string>
 
+#include "pgm/detail/file.hpp"
 #include "pgm/io/network_file.hpp"
 
 namespace pgm {
@@ -73,7 +74,7 @@ constexpr const char* stacking =
     "0,0,Red,1\n0,1,Blue,1\n1,1,Red,0\n1,0,Green,1\n0,0,Red,1\n1,1,Blue,0\n2,0,Red,0\n";
 
 TEST_F(cli_test, every_command_has_help) {
-  for (const std::string command : {"", "fit ", "discretize ", "show "}) {
+  for (const std::string command : {"", "fit ", "discretize ", "show ", "transfer ", "correspond "}) {
     const auto r = run(command + "--help");
     EXPECT_EQ(r.code, 0) << command;
     EXPECT_THAT(r.out, HasSubstr("Usage")) << command;
@@ -209,6 +210,79 @@ TEST_F(cli_test, usage_errors) {
   r = run("show " + path("nothing.bif").string());
   EXPECT_THAT(r.err, HasSubstr("cannot open"));
   EXPECT_THAT(r.err, Not(HasSubstr("internal")));
+}
+
+
+namespace transfer_cli {
+
+// A 1-Stack prior and 2-Stack target data on 2 bins per offset: the prior says a centred
+// cube (bin 1) stays with 0.9 and an offset one with 0.2.
+constexpr const char* one_stack = "xOff1,yOff1,onTop1\n"
+                                  "1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,0\n"
+                                  "0,1,0\n0,1,0\n0,1,0\n0,1,0\n0,1,1\n1,0,0\n1,0,0\n1,0,0\n1,0,0\n1,0,1\n"
+                                  "0,0,0\n0,0,0\n0,0,0\n0,0,0\n0,0,1\n";
+constexpr const char* two_stack = "xOff1,yOff1,xOff2,yOff2,onTop2\n"
+                                  "1,1,1,1,1\n1,1,1,1,0\n1,1,0,0,0\n";
+constexpr const char* edges = "xOff1->onTop2,yOff1->onTop2,xOff2->onTop2,yOff2->onTop2";
+
+}  // namespace transfer_cli
+
+TEST_F(cli_test, fit_with_a_transferred_prior) {
+  using namespace transfer_cli;
+  ASSERT_EQ(run("fit --data " + file("one.csv", one_stack).string() + " --edges \"xOff1->onTop1,yOff1->onTop1\" --out " +
+                path("one.json").string()).code, 0);
+  const auto r = run("fit --data " + file("two.csv", two_stack).string() + " --edges \"" + edges + "\" --prior-model " +
+                     path("one.json").string() + " --strategy minimal --map \"onTop2=onTop1,xOff2~xOff1,yOff2~yOff1\"" +
+                     " --w-prior 2 --out " + path("two.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto net = read_network(path("two.json"));
+  const auto& table = net.table("onTop2");
+  // u = (1,1,1,1): M = [1, 1], f = 0.9 → (2·0.9 + 1) / (2 + 2).
+  EXPECT_DOUBLE_EQ(table.probability("1", std::vector<std::string>{"1", "1", "1", "1"}), (2 * 0.9 + 1) / 4);
+  // u = (1,1,0,1): no data, minimal of direct 0.9 and cross P(1 | 0,1) = 0.2 → 0.2 exactly.
+  EXPECT_EQ(table.probability("1", std::vector<std::string>{"1", "1", "0", "1"}), 0.2);
+  EXPECT_THAT(r.err, HasSubstr("'onTop2' gets the minimal prior from 'onTop1' with w = 2"));
+
+  const auto automatic = run("fit --data " + path("two.csv").string() + " --edges \"" + edges + "\" --prior-model " +
+                             path("one.json").string() + " --map auto --w-prior auto --out " + path("auto.json").string());
+  ASSERT_EQ(automatic.code, 0) << automatic.err;
+  EXPECT_THAT(automatic.err, HasSubstr("--map auto: onTop2=onTop1,xOff2~xOff1,yOff2~yOff1"));
+  EXPECT_THAT(automatic.err, HasSubstr("maximizes the marginal likelihood of the 3 target rows"));
+}
+
+TEST_F(cli_test, transfer_writes_the_zero_shot_prior_and_correspond_proposes_the_map) {
+  using namespace transfer_cli;
+  ASSERT_EQ(run("fit --data " + file("one.csv", one_stack).string() + " --edges \"xOff1->onTop1,yOff1->onTop1\" --out " +
+                path("one.json").string()).code, 0);
+  const auto r = run("transfer --edges \"" + std::string(edges) + "\" --prior-model " + path("one.json").string() +
+                     " --strategy cross --map \"onTop2=onTop1,xOff2~xOff1,yOff2~yOff1\" --explain --out " +
+                     path("prior.csv").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("u = (xOff1=1, yOff1=1, xOff2=0, yOff2=1)  <-  u' = (xOff1=0, yOff1=1) [cross]"));
+  const auto csv = pgm::detail::read_file(path("prior.csv"));
+  EXPECT_THAT(csv, HasSubstr("xOff1,yOff1,xOff2,yOff2,onTop2,probability\n"));
+  EXPECT_THAT(csv, HasSubstr("1,1,0,1,1,0.2\n"));
+  ASSERT_EQ(run("fit --data " + file("two.csv", two_stack).string() + " --edges \"" + edges + "\" --out " + path("two.json").string()).code, 0);
+  const auto c = run("correspond --prior-model " + path("one.json").string() + " --target-model " + path("two.json").string());
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_THAT(c.out, HasSubstr("proposal: --map \"onTop2=onTop1,xOff2~xOff1,yOff2~yOff1\""));
+}
+
+TEST_F(cli_test, transfer_errors_name_the_problem) {
+  using namespace transfer_cli;
+  ASSERT_EQ(run("fit --data " + file("one.csv", one_stack).string() + " --edges \"xOff1->onTop1,yOff1->onTop1\" --out " +
+                path("one.json").string()).code, 0);
+  const auto data = file("two.csv", two_stack).string();
+  const std::string base = "fit --data " + data + " --edges \"" + edges + "\" --prior-model " + path("one.json").string();
+  expect_failure(base + " --map \"onTop2=onTop1,xOff3~xOff1\" --out " + path("f.json").string(),
+                 "the map's related variable 'xOff3' is not a variable of the target network", path("f.json"));
+  expect_failure(base + " --strategy bogus --map \"onTop2=onTop1\" --out " + path("f.json").string(),
+                 "unknown transfer strategy 'bogus'; known: blend, cross, direct, minimal", path("f.json"));
+  expect_failure(base + " --strategy cross --map \"onTop2=onTop1\" --out " + path("f.json").string(),
+                 "Cross-Replacement leaves the prior's parent 'xOff1' of 'onTop1' unassigned", path("f.json"));
+  expect_failure(base + " --map \"onTop2=onTop1\" --w-prior -1 --out " + path("f.json").string(),
+                 "--w-prior must be a number ≥ 0 or auto", path("f.json"));
+  expect_failure(base + " --out " + path("f.json").string(), "--prior-model needs --map", path("f.json"));
 }
 
 }  // namespace

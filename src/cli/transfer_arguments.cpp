@@ -1,0 +1,49 @@
+#include "cli/transfer_arguments.hpp"
+
+#include <iostream>
+
+#include "cli/common.hpp"
+#include "pgm/transfer/propose.hpp"
+#include "pgm/transfer/registry.hpp"
+
+namespace pgm::cli {
+
+void add_transfer_options(CLI::App& command, transfer_arguments& args, bool with_weight) {
+  command.add_option("--prior-model", args.prior_model, "The prior task's fitted network T′ (.bif or .json)");
+  command
+      .add_option("--strategy", args.strategy,
+                  "How to read the prior: direct, cross, minimal (eq. 9) or a registered strategy's name")
+      ->capture_default_str();
+  command.add_option("--map", args.map,
+                     "Correspondences, target left: \"onTop2=onTop1,xOff2~xOff1,yOff2~yOff1\" (= transferred node, "
+                     "~ related, == identical, P@v pins the prior's P to value v, P@* marginalizes it), or auto");
+  if (with_weight) {
+    command.add_option("--w-prior", args.w_prior, "Prior weight w of eq. 8 (≥ 0), or auto (highest marginal likelihood)")
+        ->capture_default_str();
+  }
+  command.add_option("--success", args.success, "The success state of the transferred node (Minimal-Replacement)")
+      ->capture_default_str();
+  command.add_option("--match", args.matching, "Differently discretized states: midpoint or overlap")
+      ->check(CLI::IsMember({"midpoint", "overlap"}))
+      ->capture_default_str();
+}
+
+correspondence resolve_map(const transfer_arguments& args, const bayesian_network& prior, const network_structure& target) {
+  if (args.map.empty()) throw error("--prior-model needs --map, e.g. --map \"onTop2=onTop1,xOff2~xOff1\" or --map auto");
+  if (args.map != "auto") return parse_correspondence(args.map);
+  const auto map = propose_correspondence({&target, nullptr}, {&prior.structure(), &prior});
+  note("--map auto: " + to_string(map));
+  return map;
+}
+
+std::map<std::string, transferred_prior, std::less<>> resolve_priors(const transfer_arguments& args,
+                                                                     const bayesian_network& prior,
+                                                                     const network_structure& target,
+                                                                     const correspondence& map) {
+  transfer_options options;
+  options.success_state = args.success;
+  options.matching = args.matching == "overlap" ? state_matching::overlap : state_matching::midpoint;
+  return transfer_priors(prior, target, map, transfer_registry::instance().at(args.strategy), options);
+}
+
+}  // namespace pgm::cli
