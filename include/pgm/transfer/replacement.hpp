@@ -6,6 +6,7 @@
 /// the smaller prior success probability; for a child with more than two states the success
 /// states are compared and the winner's whole distribution is taken, so columns still sum to 1).
 
+#include <algorithm>
 #include <string_view>
 #include <vector>
 
@@ -31,29 +32,41 @@ struct cross_replacement {
 struct minimal_replacement {
   [[nodiscard]] static constexpr std::string_view name() noexcept { return "minimal"; }
   [[nodiscard]] transferred_prior operator()(const transfer_problem& problem) const {
-    const std::size_t success = problem.success_state();
-    const auto direct = direct_replacement{}(problem);
-    const auto cross = cross_replacement{}(problem);
-    const auto& table = direct.table();
-    std::vector<double> values;
-    values.reserve(table.size());
-    std::vector<prior_term> terms;
-    std::vector<std::uint32_t> counts;
-    std::vector<replacement> via;
-    for (std::size_t u = 0; u < table.configurations(); ++u) {
-      const config_index c(static_cast<config_index::rep>(u));
+    const std::size_t target_success = problem.success_state();
+    const auto direct = direct_plan(problem), cross = cross_plan(problem);
+    const auto d = expand_plan(direct, problem), c = expand_plan(cross, problem);
+    const auto& prior = problem.prior_table();
+    const std::size_t j = prior.child_cardinality();
+    const std::size_t success = direct.child_state[target_success];
+    // The prior success probability of a run of terms.
+    auto success_of = [&](const plan_terms& terms, std::size_t first, std::uint32_t count) {
+      double p = 0;
+      for (std::size_t i = first; i < first + count; ++i) {
+        p += terms.terms[i].weight * prior.values()[std::size_t{terms.terms[i].configuration} * j + success];
+      }
+      return p;
+    };
+    const std::size_t n = d.counts.size();
+    plan_terms chosen;
+    chosen.counts.resize(n);
+    chosen.terms.reserve(std::max(d.terms.size(), c.terms.size()));
+    std::vector<replacement> via(n);
+    std::size_t next_d = 0, next_c = 0;
+    for (std::size_t u = 0; u < n; ++u) {
       // Eq. 9: the direct candidate only when strictly smaller; ties go to cross.
-      const bool take_direct = direct.table().column(c)[success] < cross.table().column(c)[success];
-      const auto& chosen = take_direct ? direct : cross;
-      const auto column = chosen.table().column(c);
-      values.insert(values.end(), column.begin(), column.end());
-      const auto sources = chosen.sources(c);
-      terms.insert(terms.end(), sources.begin(), sources.end());
-      counts.push_back(static_cast<std::uint32_t>(sources.size()));
-      via.push_back(take_direct ? replacement::direct : replacement::cross);
+      const bool take_direct = success_of(d, next_d, d.counts[u]) < success_of(c, next_c, c.counts[u]);
+      const auto& terms = take_direct ? d : c;
+      const std::size_t first = take_direct ? next_d : next_c;
+      for (std::size_t i = first; i < first + terms.counts[u]; ++i) chosen.terms.push_back(terms.terms[i]);
+      chosen.counts[u] = terms.counts[u];
+      via[u] = take_direct ? replacement::direct : replacement::cross;
+      next_d += d.counts[u];
+      next_c += c.counts[u];
     }
-    return transferred_prior(cpt<double>(table.child(), table.parents(), std::move(values)),
-                             direct.prior_parents(), std::move(terms), std::move(counts), std::move(via));
+    // Both plans order the child's states alike, so either maps the chosen columns.
+    auto values = mix_prior_columns(chosen, direct, prior);
+    return transferred_prior(cpt<double>(problem.target_child(), problem.target_parents(), std::move(values)),
+                             prior.parents(), std::move(chosen.terms), std::move(chosen.counts), std::move(via));
   }
 };
 

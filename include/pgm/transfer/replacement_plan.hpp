@@ -6,6 +6,7 @@
 /// `evaluate_plan` turns the plan into the prior table f(θ′_{·|u′(u)}) for every target u.
 /// Direct- and Cross-Replacement differ only in how they build the plan.
 
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <string>
@@ -129,33 +130,70 @@ template <class Counterpart>
   return make_plan(problem, [&](const std::string& target) { return map.related_to(target); }, "Cross-Replacement");
 }
 
-/// f(θ′_{·|u′(u)}) for every target configuration u under `plan`: the prior column of u′, or
-/// the weighted mixture of columns where states were overlap-matched or parents marginalized.
-[[nodiscard]] inline transferred_prior evaluate_plan(const replacement_plan& plan, const transfer_problem& problem,
-                                                     replacement via) {
-  const auto& prior = problem.prior_table();
+/// The prior configurations u′ behind every target configuration u under `plan`, each with
+/// its weight: `counts[u]` terms per u, one after the other.
+struct plan_terms {
+  std::vector<prior_term> terms;
+  std::vector<std::uint32_t> counts;
+};
+
+[[nodiscard]] inline plan_terms expand_plan(const replacement_plan& plan, const transfer_problem& problem) {
+  const auto& prior_strides = problem.prior_table().parent_radix().strides();
   const auto& targets = problem.target_parents();
-  const std::size_t j = problem.target_child().cardinality();
   std::vector<std::size_t> target_cards;
   for (const auto& t : targets) target_cards.push_back(t.cardinality());
   const mixed_radix target_radix(std::move(target_cards));
-  const auto& prior_strides = prior.parent_radix().strides();
   const std::size_t k = plan.parents.size();
-
-  std::vector<double> values(target_radix.size() * j, 0.0);
-  std::vector<prior_term> terms;
-  terms.reserve(target_radix.size());
-  std::vector<std::uint32_t> term_counts(target_radix.size());
+  plan_terms out;
+  out.counts.resize(target_radix.size());
   std::vector<std::size_t> digits(targets.size(), 0);
+
+  const bool single = std::all_of(plan.parents.begin(), plan.parents.end(), [](const parent_source& s) {
+    if (!s.target_parent) return s.fixed.size() == 1;
+    return std::all_of(s.mapping.begin(), s.mapping.end(), [](const auto& m) { return m.size() == 1; });
+  });
+  if (single) {
+    // One u′ per u: u′'s index is a fixed part plus one offset per target parent digit, so
+    // walking u in order only adjusts the sum by the digits that change.
+    std::size_t fixed = 0;
+    std::vector<std::size_t> first_offset(targets.size() + 1, 0);
+    for (std::size_t t = 0; t < targets.size(); ++t) first_offset[t + 1] = first_offset[t] + targets[t].cardinality();
+    std::vector<std::size_t> offset(first_offset.back(), 0);
+    for (std::size_t p = 0; p < k; ++p) {
+      const auto& source = plan.parents[p];
+      if (!source.target_parent) {
+        fixed += source.fixed.front().state * prior_strides[p];
+        continue;
+      }
+      for (std::size_t s = 0; s < source.mapping.size(); ++s) {
+        offset[first_offset[*source.target_parent] + s] += source.mapping[s].front().state * prior_strides[p];
+      }
+    }
+    out.terms.resize(target_radix.size());
+    std::fill(out.counts.begin(), out.counts.end(), 1U);
+    std::size_t configuration = fixed;
+    for (std::size_t t = 0; t < targets.size(); ++t) configuration += offset[first_offset[t]];
+    for (std::size_t u = 0; u < target_radix.size(); ++u) {
+      out.terms[u] = {static_cast<std::uint32_t>(configuration), 1.0};
+      for (std::size_t d = digits.size(); d > 0; --d) {
+        const std::size_t t = d - 1;
+        configuration -= offset[first_offset[t] + digits[t]];
+        if (++digits[t] == target_radix.radix(t)) digits[t] = 0;
+        configuration += offset[first_offset[t] + digits[t]];
+        if (digits[t] != 0) break;
+      }
+    }
+    return out;
+  }
+
   std::vector<const std::vector<weighted_state>*> choices(k);
   std::vector<std::size_t> pick(k);
-
   for (std::size_t u = 0; u < target_radix.size(); ++u) {
     for (std::size_t p = 0; p < k; ++p) {
       const auto& source = plan.parents[p];
       choices[p] = source.target_parent ? &source.mapping[digits[*source.target_parent]] : &source.fixed;
     }
-    // Odometer over the combinations of weighted prior states (one, in the common case).
+    // Odometer over the combinations of weighted prior states.
     std::fill(pick.begin(), pick.end(), 0);
     std::uint32_t count = 0;
     while (true) {
@@ -166,19 +204,45 @@ template <class Counterpart>
         configuration += chosen.state * prior_strides[p];
         weight *= chosen.weight;
       }
-      const auto column = prior.column(config_index(static_cast<config_index::rep>(configuration)));
-      for (std::size_t x = 0; x < j; ++x) values[u * j + x] += weight * column[plan.child_state[x]];
-      terms.push_back({static_cast<std::uint32_t>(configuration), weight});
+      out.terms.push_back({static_cast<std::uint32_t>(configuration), weight});
       ++count;
       std::size_t p = k;
       while (p > 0 && ++pick[p - 1] == choices[p - 1]->size()) pick[--p] = 0;
       if (p == 0) break;
     }
-    term_counts[u] = count;
+    out.counts[u] = count;
     for (std::size_t d = digits.size(); d > 0 && ++digits[d - 1] == target_radix.radix(d - 1);) digits[--d] = 0;
   }
-  return transferred_prior(cpt<double>(problem.target_child(), targets, std::move(values)), prior.parents(),
-                           std::move(terms), std::move(term_counts), std::vector<replacement>(target_radix.size(), via));
+  return out;
+}
+
+/// The target table whose column u mixes the prior columns of u's terms by their weights,
+/// with the child's states in the target's order.
+[[nodiscard]] inline std::vector<double> mix_prior_columns(const plan_terms& expanded, const replacement_plan& plan,
+                                                           const cpt<double>& prior) {
+  const std::size_t j = plan.child_state.size();
+  std::vector<double> values(expanded.counts.size() * j, 0.0);
+  std::size_t next = 0;
+  for (std::size_t u = 0; u < expanded.counts.size(); ++u) {
+    for (std::uint32_t n = 0; n < expanded.counts[u]; ++n, ++next) {
+      const auto& term = expanded.terms[next];
+      const double* column = prior.values().data() + std::size_t{term.configuration} * j;
+      for (std::size_t x = 0; x < j; ++x) values[u * j + x] += term.weight * column[plan.child_state[x]];
+    }
+  }
+  return values;
+}
+
+/// f(θ′_{·|u′(u)}) for every target configuration u under `plan`: the prior column of u′, or
+/// the weighted mixture of columns where states were overlap-matched or parents marginalized.
+[[nodiscard]] inline transferred_prior evaluate_plan(const replacement_plan& plan, const transfer_problem& problem,
+                                                     replacement via) {
+  auto expanded = expand_plan(plan, problem);
+  auto values = mix_prior_columns(expanded, plan, problem.prior_table());
+  const auto configurations = expanded.counts.size();
+  return transferred_prior(cpt<double>(problem.target_child(), problem.target_parents(), std::move(values)),
+                           problem.prior_table().parents(), std::move(expanded.terms), std::move(expanded.counts),
+                           std::vector<replacement>(configurations, via));
 }
 
 }  // namespace pgm
