@@ -1,0 +1,303 @@
+#pragma once
+/// \file
+/// The evaluation protocol of the paper (Sec. IV-B) for one scenario: the prior is fitted once
+/// (MLE) from D′; in each repetition the target data is split at random into D and
+/// D_GroundTruth, D is cut into `subsets` parts, and the target node is estimated on 0, 1, …,
+/// `subsets` parts by MLE and by Bayesian estimation with every strategy's transferred prior
+/// and every weight (and, beyond the paper, the weight chosen from the data and the proposed
+/// correspondence map). Each estimate is scored against θ* = MLE on D_GroundTruth by Max- and
+/// Mean-Difference and by failure prevention, beside the oracle that prevents with θ* itself.
+///
+/// Counts are additive, so a repetition counts each row once: the parts of D by histogram, and
+/// D_GroundTruth as all rows minus D. Every repetition is seeded by its coordinates, so the
+/// results are the same for any number of threads.
+
+#include <atomic>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <map>
+#include <mutex>
+#include <numeric>
+#include <random>
+#include <set>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "pgm/decide/prevent.hpp"
+#include "pgm/eval/family_data.hpp"
+#include "pgm/eval/metrics.hpp"
+#include "pgm/eval/scenario.hpp"
+#include "pgm/learn/estimate.hpp"
+#include "pgm/transfer/network_transfer.hpp"
+#include "pgm/transfer/prior_weight.hpp"
+#include "pgm/transfer/propose.hpp"
+
+namespace pgm {
+
+/// What the protocol needs to know of a task's node.
+struct task_facts {
+  std::vector<std::string> parents;  ///< in the known structure
+  std::map<std::string, semantic_tags, std::less<>> tags;
+  std::set<std::string, std::less<>> controllable;
+};
+
+/// Where data comes from: a simulator, or recorded trials.
+struct task_source {
+  std::function<dataset(const std::string& task, std::size_t rows, std::uint64_t seed)> data;
+  std::function<task_facts(const std::string& task, const std::string& node)> facts;
+};
+
+struct experiment_options {
+  std::uint64_t seed = 1;
+  std::size_t repetitions = 0;  ///< 0: the scenario's
+  unsigned threads = 0;         ///< 0: every core
+  bool automatic_lines = true;  ///< add w = auto and the proposed map
+  prevention_options prevention;
+  std::function<void(std::size_t done, std::size_t total)> progress;
+  std::function<void(const std::string&)> note;
+};
+
+/// One measured value: a row of the tidy result table.
+struct experiment_point {
+  std::string scenario;
+  std::string target;
+  std::string strategy;  ///< mle, oracle, direct, cross, minimal, …, or "<strategy>+auto-map"
+  std::string weight;    ///< "0" for MLE, a number, or "auto"
+  std::size_t rows;      ///< |D|
+  std::size_t repetition;
+  std::string metric;  ///< max_difference, mean_difference, failure_prevention, chosen_w
+  double value;
+};
+
+namespace detail {
+
+[[nodiscard]] inline std::uint64_t mix_seed(std::uint64_t a, std::uint64_t b) {
+  std::uint64_t z = a + 0x9e3779b97f4a7c15ULL * (b + 1);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+[[nodiscard]] inline std::uint64_t seed_of(std::string_view text) {
+  std::uint64_t h = 1469598103934665603ULL;
+  for (char c : text) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ULL;
+  return h;
+}
+
+/// A line of the plots: a transferred prior (or none, for MLE) and how to weigh it.
+struct estimator_line {
+  std::string strategy;
+  std::string weight_label;
+  const cpt<double>* prior = nullptr;  ///< null: MLE
+  double weight = 0;
+  bool automatic_weight = false;
+};
+
+/// Everything about one target task that stays fixed over repetitions.
+struct prepared_target {
+  std::string task;
+  family_data family;
+  std::size_t train_rows;
+  std::unique_ptr<bool[]> controllable;
+  std::size_t success_state;
+  std::map<std::string, transferred_prior, std::less<>> priors;  ///< by line name
+  std::vector<estimator_line> lines;
+};
+
+}  // namespace detail
+
+/// Runs the protocol; the points come in a fixed order (target, repetition, |D|, line, metric).
+[[nodiscard]] inline std::vector<experiment_point> run_experiment(const scenario& s, const task_source& source,
+                                                                  const experiment_options& options = {}) {
+  auto note = [&](const std::string& text) {
+    if (options.note) options.note(s.name + ": " + text);
+  };
+  const std::size_t repetitions = options.repetitions ? options.repetitions : s.repetitions;
+  const auto base_seed = detail::mix_seed(options.seed, 0);
+
+  // The prior: fitted once, by MLE, on D′.
+  const auto prior_facts = source.facts(s.prior_task, s.prior_node);
+  const auto prior_family = read_family(source.data(s.prior_task, s.prior_rows, detail::mix_seed(base_seed, detail::seed_of(s.prior_task))),
+                                        s.prior_node, prior_facts.parents, s.bins, prior_facts.tags);
+  for (const auto& n : prior_family.notes) note("prior: " + n);
+  const auto prior_network = prior_family.fit_all();
+  const auto map = parse_correspondence(s.map);
+
+  std::vector<detail::prepared_target> targets;
+  for (const auto& t : s.targets) {
+    const auto facts = source.facts(t.task, s.target_node);
+    detail::prepared_target target{t.task,
+                                   read_family(source.data(t.task, t.train_rows + t.ground_truth_rows,
+                                                           detail::mix_seed(base_seed, detail::seed_of(t.task))),
+                                               s.target_node, facts.parents, s.bins, facts.tags),
+                                   t.train_rows, nullptr, 0, {}, {}};
+    for (const auto& n : target.family.notes) note(t.task + ": " + n);
+    const auto& parents = target.family.parents;
+    target.controllable = std::make_unique<bool[]>(parents.size());
+    for (std::size_t p = 0; p < parents.size(); ++p) target.controllable[p] = facts.controllable.contains(parents[p].name());
+    target.success_state = target.family.child.state("1").value();
+    const auto structure = target.family.structure();
+    for (const auto& strategy : s.strategies) {
+      auto priors = transfer_priors(prior_network, structure, map, transfer_registry::instance().at(strategy));
+      target.priors.emplace(strategy, std::move(priors.at(s.target_node)));
+    }
+    if (options.automatic_lines) {
+      // The proposed map, with the scenario's last strategy (its best in the paper).
+      try {
+        correspondence pinned;
+        pinned.pinned = map.pinned;
+        pinned.transferred = map.transferred;
+        const auto proposal = propose_correspondence({&structure, nullptr}, {&prior_network.structure(), &prior_network}, pinned);
+        note(t.task + ": proposed map " + to_string(proposal) + (to_string(proposal) == to_string(map) ? " (the scenario's)" : " (the scenario's: " + s.map + ")"));
+        auto priors = transfer_priors(prior_network, structure, proposal, transfer_registry::instance().at(s.strategies.back()));
+        target.priors.emplace(s.strategies.back() + "+auto-map", std::move(priors.at(s.target_node)));
+      } catch (const error& e) {
+        note(t.task + ": no line for the proposed map: " + e.what());
+      }
+    }
+    target.lines.push_back({"mle", "0", nullptr, 0, false});
+    for (const auto& [name, prior] : target.priors) {
+      const bool auto_map = name.find("+auto-map") != std::string::npos;
+      for (double w : s.weights) {
+        if (w == 0) continue;
+        if (auto_map && w != *std::min_element(s.weights.begin(), s.weights.end(), [](double a, double b) {
+              return (a == 0 ? INFINITY : a) < (b == 0 ? INFINITY : b);
+            })) {
+          continue;  // the proposed map at the smallest weight only, to keep the plots readable
+        }
+        target.lines.push_back({name, detail::format_short(w), &prior.table(), w, false});
+      }
+      if (options.automatic_lines && !auto_map) target.lines.push_back({name, "auto", &prior.table(), 0, true});
+    }
+    targets.push_back(std::move(target));
+  }
+
+  // One task per (target, repetition); results land in their own slot, so order is fixed.
+  const std::size_t total = targets.size() * repetitions;
+  std::vector<std::vector<experiment_point>> results(total);
+  std::atomic<std::size_t> next{0}, done{0};
+  std::exception_ptr failure;
+  std::mutex failure_mutex, progress_mutex;
+  auto work = [&] {
+    while (true) {
+      const std::size_t job = next.fetch_add(1);
+      if (job >= total) return;
+      try {
+        const auto& target = targets[job / repetitions];
+        const std::size_t rep = job % repetitions;
+        auto& out = results[job];
+        std::mt19937_64 random(detail::mix_seed(detail::mix_seed(base_seed, detail::seed_of(s.name + "/" + target.task)), rep));
+        const auto& family = target.family;
+        // D: a uniform random subset of the rows (partial Fisher–Yates), in random order.
+        std::vector<std::uint32_t> order(family.rows());
+        std::iota(order.begin(), order.end(), 0U);
+        for (std::size_t i = 0; i < target.train_rows; ++i) {
+          std::uniform_int_distribution<std::size_t> pick(i, order.size() - 1);
+          std::swap(order[i], order[pick(random)]);
+        }
+        auto all = family.empty_counts();
+        family.add_counts(order, all);
+        auto truth_counts = all;
+        {
+          auto train = family.empty_counts();
+          family.add_counts(std::span(order).first(target.train_rows), train);
+          for (std::size_t c = 0; c < truth_counts.counts().size(); ++c) truth_counts.counts()[c] -= train.counts()[c];
+        }
+        const auto truth = estimate_mle(truth_counts);
+        std::vector<double> produced(truth.configurations());
+        for (std::size_t u = 0; u < produced.size(); ++u) {
+          produced[u] = static_cast<double>(truth_counts.total(config_index(static_cast<config_index::rep>(u))));
+        }
+        const std::span<const bool> controllable(target.controllable.get(), family.parents.size());
+        auto emit = [&](const std::string& strategy, const std::string& weight, std::size_t rows, const std::string& metric, double value) {
+          out.push_back({s.name, target.task, strategy, weight, rows, rep, metric, value});
+        };
+        const double oracle =
+            failure_prevention_rate(truth, truth, target.success_state, controllable, produced, options.prevention);
+        auto counts = family.empty_counts();
+        std::size_t counted = 0;
+        for (std::size_t k = 0; k <= s.subsets; ++k) {
+          const std::size_t end = k * target.train_rows / s.subsets;
+          family.add_counts(std::span(order).subspan(counted, end - counted), counts);
+          counted = end;
+          emit("oracle", "0", end, "failure_prevention", oracle);
+          for (const auto& line : target.lines) {
+            double w = line.weight;
+            if (line.automatic_weight) {
+              w = choose_prior_weight(counts, *line.prior).weight;
+              emit(line.strategy, line.weight_label, end, "chosen_w", w);
+            }
+            const auto estimate_k = line.prior ? estimate(counts, weighted_prior{*line.prior, w}) : estimate_mle(counts);
+            const auto difference = success_parameter_difference(estimate_k, truth, target.success_state);
+            emit(line.strategy, line.weight_label, end, "max_difference", difference.max);
+            emit(line.strategy, line.weight_label, end, "mean_difference", difference.mean);
+            emit(line.strategy, line.weight_label, end, "failure_prevention",
+                 failure_prevention_rate(estimate_k, truth, target.success_state, controllable, produced, options.prevention));
+          }
+        }
+      } catch (...) {
+        const std::lock_guard lock(failure_mutex);
+        if (!failure) failure = std::current_exception();
+        next.store(total);
+      }
+      const auto finished = done.fetch_add(1) + 1;
+      if (options.progress) {
+        const std::lock_guard lock(progress_mutex);
+        options.progress(finished, total);
+      }
+    }
+  };
+  const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
+  const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(options.threads ? options.threads : hardware, total));
+  std::vector<std::thread> pool;
+  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
+  work();
+  for (auto& t : pool) t.join();
+  if (failure) std::rethrow_exception(failure);
+  std::vector<experiment_point> points;
+  for (auto& r : results) points.insert(points.end(), std::make_move_iterator(r.begin()), std::make_move_iterator(r.end()));
+  return points;
+}
+
+/// Mean and sample standard deviation over repetitions of every (target, strategy, weight,
+/// |D|, metric).
+struct aggregated_point {
+  std::string scenario, target, strategy, weight;
+  std::size_t rows;
+  std::string metric;
+  double mean, standard_deviation;
+  std::size_t repetitions;
+};
+
+[[nodiscard]] inline std::vector<aggregated_point> aggregate(const std::vector<experiment_point>& points) {
+  struct accumulator {
+    std::size_t first_seen;
+    double sum = 0, sum_squares = 0;
+    std::size_t n = 0;
+  };
+  using key = std::tuple<std::string, std::string, std::string, std::string, std::size_t, std::string>;
+  std::map<key, accumulator> groups;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const auto& p = points[i];
+    auto [it, fresh] = groups.try_emplace(key{p.scenario, p.target, p.strategy, p.weight, p.rows, p.metric}, accumulator{i});
+    it->second.sum += p.value;
+    it->second.sum_squares += p.value * p.value;
+    ++it->second.n;
+  }
+  std::vector<std::pair<std::size_t, aggregated_point>> ordered;
+  for (const auto& [k, a] : groups) {
+    const double mean = a.sum / static_cast<double>(a.n);
+    const double variance = a.n > 1 ? std::max(0.0, (a.sum_squares - static_cast<double>(a.n) * mean * mean) / static_cast<double>(a.n - 1)) : 0.0;
+    ordered.push_back({a.first_seen, {std::get<0>(k), std::get<1>(k), std::get<2>(k), std::get<3>(k), std::get<4>(k), std::get<5>(k), mean,
+                                      std::sqrt(variance), a.n}});
+  }
+  std::sort(ordered.begin(), ordered.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<aggregated_point> result;
+  for (auto& [i, p] : ordered) result.push_back(std::move(p));
+  return result;
+}
+
+}  // namespace pgm

@@ -1,0 +1,105 @@
+#pragma once
+/// \file
+/// A transfer scenario (one row of the paper's Table II) as data: the prior task and its data
+/// size, the target tasks with their training and ground-truth sizes, the transferred node pair
+/// and correspondences, the strategies and weights, and the protocol's repetitions and subsets.
+/// Files live in `tasks/scenarios/<name>.json`; tasks/README.md documents the format.
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "pgm/detail/file.hpp"
+#include "pgm/io/json_model.hpp"
+
+namespace pgm {
+
+struct scenario_target {
+  std::string task;
+  std::size_t train_rows = 0;         ///< |D|, cut into `subsets` parts
+  std::size_t ground_truth_rows = 0;  ///< |D_GroundTruth|
+};
+
+struct scenario {
+  std::string name;   ///< as on the command line, e.g. "2-stack-sim"
+  std::string title;  ///< as in the paper, e.g. "2-Stack-Simulation"
+  std::string prior_task;
+  std::size_t prior_rows = 0;  ///< |D′|
+  std::string prior_node;
+  std::vector<scenario_target> targets;
+  std::string target_node;
+  std::string map;  ///< correspondence map, pgm::parse_correspondence syntax
+  std::vector<std::string> strategies;
+  std::vector<double> weights;  ///< 0 is MLE
+  std::size_t bins = 5;
+  std::size_t subsets = 20;
+  std::size_t repetitions = 20;
+  double epsilon = 0.8;
+  std::filesystem::path source;
+};
+
+namespace detail {
+
+class scenario_reader : public json_reader {
+ public:
+  using json_reader::json_reader;
+
+  scenario read(std::string_view text) const {
+    const auto doc = parse(text);
+    check_format(doc, "pgm-scenario");
+    scenario s;
+    s.name = string(member(doc, "", "name"), "/name");
+    s.title = string(member(doc, "", "title"), "/title");
+    const auto& prior = member(doc, "", "prior");
+    s.prior_task = string(member(prior, "/prior", "task"), "/prior/task");
+    s.prior_rows = count(member(prior, "/prior", "rows"), "/prior/rows");
+    s.prior_node = string(member(prior, "/prior", "node"), "/prior/node");
+    const auto& target = member(doc, "", "target");
+    s.target_node = string(member(target, "/target", "node"), "/target/node");
+    std::size_t i = 0;
+    for (const auto& t : array(member(target, "/target", "tasks"), "/target/tasks")) {
+      const std::string path = "/target/tasks/" + std::to_string(i++);
+      s.targets.push_back({string(member(t, path, "task"), path + "/task"), count(member(t, path, "train_rows"), path + "/train_rows"),
+                           count(member(t, path, "ground_truth_rows"), path + "/ground_truth_rows")});
+      if (s.targets.back().train_rows == 0 || s.targets.back().ground_truth_rows == 0) {
+        fail(path, "train_rows and ground_truth_rows must be positive");
+      }
+    }
+    if (s.targets.empty()) fail("/target/tasks", "needs at least one target task");
+    s.map = string(member(doc, "", "map"), "/map");
+    s.strategies = strings(member(doc, "", "strategies"), "/strategies");
+    if (s.strategies.empty()) fail("/strategies", "needs at least one strategy");
+    s.weights = numbers(member(doc, "", "weights"), "/weights");
+    for (double w : s.weights) {
+      if (!(w >= 0) || !std::isfinite(w)) fail("/weights", "weights must be finite and ≥ 0");
+    }
+    if (const auto* v = optional_member(doc, "bins")) s.bins = count(*v, "/bins");
+    if (const auto* v = optional_member(doc, "subsets")) s.subsets = count(*v, "/subsets");
+    if (const auto* v = optional_member(doc, "repetitions")) s.repetitions = count(*v, "/repetitions");
+    if (const auto* v = optional_member(doc, "epsilon")) s.epsilon = number(*v, "/epsilon");
+    if (s.bins < 2) fail("/bins", "needs at least 2 bins");
+    if (s.subsets == 0 || s.repetitions == 0) fail("/subsets", "subsets and repetitions must be positive");
+    if (!(s.epsilon > 0 && s.epsilon < 1)) fail("/epsilon", "must lie strictly between 0 and 1");
+    return s;
+  }
+
+ private:
+  std::size_t count(const nlohmann::json& value, const std::string& path) const {
+    if (!value.is_number_unsigned()) fail(path, "expected a whole number ≥ 0");
+    return value.get<std::size_t>();
+  }
+};
+
+}  // namespace detail
+
+[[nodiscard]] inline scenario parse_scenario(std::string_view text, const std::string& source) {
+  auto s = detail::scenario_reader(source).read(text);
+  s.source = source;
+  return s;
+}
+
+[[nodiscard]] inline scenario load_scenario(const std::filesystem::path& path) {
+  return parse_scenario(detail::read_file(path), path.string());
+}
+
+}  // namespace pgm
