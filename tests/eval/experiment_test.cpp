@@ -1,0 +1,134 @@
+// The metrics by hand, the scenario file, and the protocol on a tiny scenario whose answers are
+// known: a deterministic task where the prior is the truth.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "pgm/eval/experiment.hpp"
+
+namespace {
+
+using namespace pgm;
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
+
+TEST(metrics_test, max_and_mean_difference_by_hand) {
+  const variable x("x", {"a", "b", "c"}), ok("ok", {"0", "1"});
+  const cpt<double> estimate(ok, {x}, {0.5, 0.5, 0.1, 0.9, 0.3, 0.7});
+  const cpt<double> truth(ok, {x}, {0.2, 0.8, 0.1, 0.9, 0.9, 0.1});
+  const auto d = success_parameter_difference(estimate, truth, 1);
+  EXPECT_DOUBLE_EQ(d.max, 0.6);
+  EXPECT_DOUBLE_EQ(d.mean, (0.3 + 0.0 + 0.6) / 3);
+  EXPECT_LE(d.mean, d.max);
+}
+
+constexpr const char* tiny_scenario = R"({
+  "format": "pgm-scenario", "version": 1, "name": "tiny", "title": "Tiny",
+  "prior": {"task": "one", "rows": 300, "node": "ok1"},
+  "target": {"node": "ok2", "tasks": [{"task": "two", "train_rows": 40, "ground_truth_rows": 260}]},
+  "map": "ok2=ok1,x2~x1", "strategies": ["direct", "cross", "minimal"], "weights": [0, 5],
+  "subsets": 4, "repetitions": 3
+})";
+
+/// Offsets x1, x2 take 0, 1, 2 (a reality-like grid); a cube stays unless its offset is 2, and
+/// the stack stands when both do. Rows cycle through the grid, so every data set has all states.
+task_source deterministic_tasks() {
+  return {[](const std::string& task, std::size_t rows, std::uint64_t) {
+            std::vector<double> x1(rows), x2(rows);
+            std::vector<unsigned> ok(rows);
+            for (std::size_t r = 0; r < rows; ++r) {
+              x1[r] = static_cast<double>(r % 3);
+              x2[r] = static_cast<double>((r / 3) % 3);
+              ok[r] = task == "one" ? x1[r] != 2 : (x1[r] != 2 && x2[r] != 2);
+            }
+            dataset d;
+            d.add(continuous_column("x1", x1));
+            if (task == "two") d.add(continuous_column("x2", x2));
+            d.add(discrete_column(variable(task == "one" ? "ok1" : "ok2", {"0", "1"}), ok));
+            return d;
+          },
+          [](const std::string& task, const std::string&) {
+            task_facts f;
+            f.parents = task == "one" ? std::vector<std::string>{"x1"} : std::vector<std::string>{"x1", "x2"};
+            f.controllable = {"x1", "x2"};
+            return f;
+          }};
+}
+
+double value_of(const std::vector<experiment_point>& points, const std::string& strategy, const std::string& w,
+                std::size_t rows, const std::string& metric, std::size_t rep = 0) {
+  for (const auto& p : points) {
+    if (p.strategy == strategy && p.weight == w && p.rows == rows && p.metric == metric && p.repetition == rep) return p.value;
+  }
+  ADD_FAILURE() << "no point " << strategy << " w=" << w << " |D|=" << rows << " " << metric;
+  return NAN;
+}
+
+TEST(experiment_test, a_prior_equal_to_the_truth_is_exact_at_zero_data) {
+  const auto s = parse_scenario(tiny_scenario, "tiny.json");
+  const auto points = run_experiment(s, deterministic_tasks(), {.threads = 1});
+  for (std::size_t rep = 0; rep < 3; ++rep) {
+    // Minimal-Replacement's prior is min(P(x1 ok), P(x2 ok)) = the truth exactly.
+    EXPECT_EQ(value_of(points, "minimal", "5", 0, "max_difference", rep), 0.0);
+    EXPECT_EQ(value_of(points, "minimal", "5", 0, "failure_prevention", rep), 1.0);
+    // MLE without data is 1/2 everywhere: off by 1/2, and prevents nothing.
+    EXPECT_EQ(value_of(points, "mle", "0", 0, "max_difference", rep), 0.5);
+    EXPECT_EQ(value_of(points, "oracle", "0", 0, "failure_prevention", rep), 1.0);
+    EXPECT_LT(value_of(points, "mle", "0", 0, "failure_prevention", rep), 0.5);
+    // Direct-Replacement ignores the second cube: wrong where x2 = 2, i.e. by 1 there.
+    EXPECT_EQ(value_of(points, "direct", "5", 0, "max_difference", rep), 1.0);
+    // With data, MLE is exact wherever D has rows, so its mean difference falls.
+    EXPECT_LT(value_of(points, "mle", "0", 40, "mean_difference", rep), value_of(points, "mle", "0", 0, "mean_difference", rep));
+  }
+  // |D| runs over 0, 10, 20, 30, 40.
+  std::set<std::size_t> sizes;
+  for (const auto& p : points) sizes.insert(p.rows);
+  EXPECT_EQ(sizes, (std::set<std::size_t>{0, 10, 20, 30, 40}));
+}
+
+TEST(experiment_test, the_same_seed_gives_the_same_points_for_any_thread_count) {
+  const auto s = parse_scenario(tiny_scenario, "tiny.json");
+  const auto one = run_experiment(s, deterministic_tasks(), {.seed = 7, .threads = 1});
+  const auto two = run_experiment(s, deterministic_tasks(), {.seed = 7, .threads = 2});
+  ASSERT_EQ(one.size(), two.size());
+  for (std::size_t i = 0; i < one.size(); ++i) {
+    EXPECT_EQ(one[i].value, two[i].value) << i;
+    EXPECT_EQ(one[i].metric, two[i].metric);
+  }
+  const auto other = run_experiment(s, deterministic_tasks(), {.seed = 8, .threads = 2});
+  bool differs = false;
+  for (std::size_t i = 0; i < one.size(); ++i) differs |= one[i].value != other[i].value;
+  EXPECT_TRUE(differs) << "another seed draws other splits";
+}
+
+TEST(experiment_test, aggregation_gives_mean_and_sample_deviation) {
+  std::vector<experiment_point> points;
+  for (double v : {1.0, 2.0, 3.0}) points.push_back({"s", "t", "mle", "0", 0, 0, "m", v});
+  const auto summary = aggregate(points);
+  ASSERT_EQ(summary.size(), 1U);
+  EXPECT_DOUBLE_EQ(summary[0].mean, 2.0);
+  EXPECT_DOUBLE_EQ(summary[0].standard_deviation, 1.0);
+  EXPECT_EQ(summary[0].repetitions, 3U);
+}
+
+TEST(scenario_test, errors_name_the_file_and_the_key) {
+  EXPECT_THAT([] { static_cast<void>(parse_scenario(R"({"format": "pgm-scenario", "version": 1})", "s.json")); },
+              ThrowsMessage<data_error>(HasSubstr("s.json: /: the key 'name' is missing")));
+  EXPECT_THAT([] { static_cast<void>(parse_scenario("{\n  \"format\": ", "s.json")); },
+              ThrowsMessage<parse_error>(HasSubstr("s.json:2")));
+  std::string bad = tiny_scenario;
+  bad.replace(bad.find("\"weights\": [0, 5]"), 17, "\"weights\": [0, -5]");
+  EXPECT_THAT([&] { static_cast<void>(parse_scenario(bad, "s.json")); },
+              ThrowsMessage<data_error>(HasSubstr("/weights: weights must be finite and ≥ 0")));
+}
+
+TEST(scenario_test, the_shipped_scenarios_load) {
+  for (const auto* name : {"2-stack-sim", "2-stack-reality", "2-stack-sim-to-real", "sphere-dropping", "stack-to-drop"}) {
+    const auto s = load_scenario(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "scenarios" / (std::string(name) + ".json"));
+    EXPECT_EQ(s.name, name);
+    EXPECT_EQ(s.repetitions, 20U);
+    EXPECT_EQ(s.subsets, 20U);
+  }
+}
+
+}  // namespace
