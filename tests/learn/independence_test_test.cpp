@@ -166,5 +166,19 @@ TEST(independence_test, on_sampled_data_counts_from_columns) {
   EXPECT_THROW(static_cast<void>(test_independence(data, "a", "q", none, ci_test::chi_square)), data_error);
 }
 
+TEST(independence_test, counting_threads_give_the_same_table) {
+  const auto data = sample(chain(), 300000, 8);  // enough rows for the threaded path
+  const std::vector<const discrete_column*> given{&data.discrete("b")};
+  std::vector<std::uint64_t> one;
+  std::vector<std::uint64_t> three;
+  detail::count_ci_table(data.discrete("a"), data.discrete("c"), given, one, 1);
+  detail::count_ci_table(data.discrete("a"), data.discrete("c"), given, three, 3);
+  EXPECT_EQ(one, three);
+  EXPECT_EQ(one.size(), 18u);
+  std::uint64_t total = 0;
+  for (auto c : one) total += c;
+  EXPECT_EQ(total, 300000u);
+}
+
 }  // namespace
 }  // namespace pgm

@@ -25,6 +25,7 @@
 
 #include "pgm/core/error.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/detail/text.hpp"
 #include "pgm/learn/background_knowledge.hpp"
 #include "pgm/learn/cpdag.hpp"
 #include "pgm/learn/independence_test.hpp"
@@ -105,8 +106,11 @@ inline bool next_subset(std::vector<std::size_t>& pick, std::size_t n) {
 
 class skeleton_worker {
  public:
-  skeleton_worker(std::span<const discrete_column* const> columns, const pc_options& options)
-      : columns_(columns), options_(options), tried_(columns.size(), 0) {}
+  /// `count_threads` > 1 splits each test's counting over that many threads, for levels
+  /// with fewer tasks than threads.
+  skeleton_worker(std::span<const discrete_column* const> columns, const pc_options& options,
+                  unsigned count_threads)
+      : columns_(columns), options_(options), count_threads_(count_threads), tried_(columns.size(), 0) {}
 
   /// Tests x - y at `level` against the frozen adjacency `around`.
   edge_outcome run(const edge_task& task, std::size_t level,
@@ -149,7 +153,7 @@ class skeleton_worker {
       }
       given_.clear();
       for (auto i : pick) given_.push_back(columns_[candidates[i]]);
-      count_ci_table(*columns_[task.x], *columns_[task.y], given_, counts_);
+      count_ci_table(*columns_[task.x], *columns_[task.y], given_, counts_, count_threads_);
       const auto result = test_independence(counts_, columns_[task.x]->var().cardinality(),
                                             columns_[task.y]->var().cardinality(), options_.test);
       ++outcome.tests;
@@ -165,6 +169,7 @@ class skeleton_worker {
 
   std::span<const discrete_column* const> columns_;
   const pc_options& options_;
+  unsigned count_threads_;
   std::vector<char> tried_;
   std::vector<const discrete_column*> given_;
   std::vector<std::uint64_t> counts_;
@@ -230,13 +235,15 @@ inline void check_pc_options(const pc_options& options) {
 
     std::vector<detail::edge_outcome> outcomes(tasks.size());
     std::atomic<std::size_t> next{0};
+    // Parallel over tasks; when there are fewer tasks than threads, over rows within each test.
+    const auto used = static_cast<unsigned>(std::min<std::size_t>(threads, tasks.size()));
+    const unsigned count_threads = std::max(1u, threads / std::max(1u, used));
     auto work = [&] {
-      detail::skeleton_worker worker(columns, options);
+      detail::skeleton_worker worker(columns, options, count_threads);
       for (std::size_t t = next++; t < tasks.size(); t = next++) {
         outcomes[t] = worker.run(tasks[t], level, around);
       }
     };
-    const auto used = static_cast<unsigned>(std::min<std::size_t>(threads, tasks.size()));
     if (used <= 1) {
       work();
     } else {
