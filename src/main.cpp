@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   pgm::cli::add_show_command(app);
   pgm::cli::add_transfer_command(app);
   pgm::cli::add_correspond_command(app);
+  pgm::cli::add_learn_structure_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -49,5 +49,6 @@ void add_discretize_command(CLI::App& app);
 void add_show_command(CLI::App& app);
 void add_transfer_command(CLI::App& app);
 void add_correspond_command(CLI::App& app);
+void add_learn_structure_command(CLI::App& app);
 
 }  // namespace pgm::cli

@@ -6,13 +6,18 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "pgm/detail/file.hpp"
+#include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 
 namespace pgm {
@@ -283,6 +288,113 @@ TEST_F(cli_test, transfer_errors_name_the_problem) {
   expect_failure(base + " --map \"onTop2=onTop1\" --w-prior -1 --out " + path("f.json").string(),
                  "--w-prior must be a number ≥ 0 or auto", path("f.json"));
   expect_failure(base + " --out " + path("f.json").string(), "--prior-model needs --map", path("f.json"));
+}
+
+// ---- learn-structure --------------------------------------------------------------------
+
+// onTop1 <- xOff1, yOff1 (success likelier near the middle bin); colour independent. The rows
+// cycle through every (x, y, colour) combination so that the data are deterministic.
+std::string learnable_stacking() {
+  std::string csv = "xOff1,yOff1,colour,onTop1\n";
+  const char* colours[] = {"Red", "Blue", "Green"};
+  std::uint64_t state = 12345;
+  for (int i = 0; i < 3000; ++i) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    const int x = static_cast<int>((state >> 33) % 5);
+    const int y = static_cast<int>((state >> 40) % 5);
+    const int c = static_cast<int>((state >> 47) % 3);
+    const double u = static_cast<double>((state >> 11) & 0xFFFFF) / 1048576.0;
+    const double p = std::max(0.05, 0.95 - 0.2 * (std::abs(x - 2) + std::abs(y - 2)));
+    csv += std::to_string(x) + "," + std::to_string(y) + "," + colours[c] + "," + (u < p ? "1" : "0") + "\n";
+  }
+  return csv;
+}
+
+TEST_F(cli_test, learn_structure_help) {
+  const auto r = run("learn-structure --help");
+  EXPECT_EQ(r.code, 0);
+  for (const char* option : {"--data", "--test", "--alpha", "--max-cond", "--tiers", "--forbid", "--require", "--threads",
+                             "--explain", "--out"}) {
+    EXPECT_THAT(r.out, HasSubstr(option));
+  }
+}
+
+TEST_F(cli_test, learn_structure_finds_the_parents_and_explains) {
+  const auto data = file("d.csv", learnable_stacking());
+  const auto r = run("learn-structure --data " + data.string() + " --test g2 --alpha 0.01 --explain --out " + path("m.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("directed edges (2):\n  xOff1 -> onTop1\n  yOff1 -> onTop1\n"));
+  EXPECT_THAT(r.out, HasSubstr("undirected edges (0)"));
+  EXPECT_THAT(r.out, HasSubstr("no xOff1 - yOff1: independent given {} (g2 = "));
+  EXPECT_THAT(r.out, HasSubstr("no colour - onTop1: independent given"));
+  EXPECT_THAT(r.out, HasSubstr("df = "));
+  EXPECT_THAT(r.out, HasSubstr("-> " + path("m.json").string()));
+  const auto model = read_model_json(path("m.json"));
+  EXPECT_FALSE(model.tables);
+  EXPECT_EQ(model.structure.edges(), (std::vector<named_edge>{{"xOff1", "onTop1"}, {"yOff1", "onTop1"}}));
+  EXPECT_EQ(model.structure.size(), 4u);
+  // Without --explain the absent edges are not listed; the learned model can be fitted.
+  const auto quiet = run("learn-structure --data " + data.string() + " --out " + path("q.json").string());
+  ASSERT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_THAT(quiet.out, Not(HasSubstr("absent edges")));
+  const auto f = run("fit --data " + data.string() + " --model " + path("m.json").string() + " --out " + path("f.bif").string());
+  ASSERT_EQ(f.code, 0) << f.err;
+  EXPECT_THAT(f.out, HasSubstr("fitted 4 tables"));
+}
+
+TEST_F(cli_test, learn_structure_extends_undirected_edges) {
+  // A chain a -> b -> c: the CPDAG is a - b - c, and the model holds one of its DAGs.
+  std::string csv = "a,b,c\n";
+  std::uint64_t state = 99;
+  auto draw = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<double>((state >> 11) & 0xFFFFF) / 1048576.0;
+  };
+  for (int i = 0; i < 4000; ++i) {
+    const int a = draw() < 0.5;
+    const int b = draw() < 0.85 ? a : 1 - a;
+    const int c = draw() < 0.85 ? b : 1 - b;
+    csv += std::to_string(a) + "," + std::to_string(b) + "," + std::to_string(c) + "\n";
+  }
+  const auto data = file("chain.csv", csv);
+  const auto r = run("learn-structure --data " + data.string() + " --threads 2 --out " + path("m.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("undirected edges (2):\n  a - b\n  b - c\n"));
+  EXPECT_THAT(r.out, HasSubstr("extended the CPDAG to a DAG: 2 undirected edge(s) oriented without adding a v-structure"));
+  EXPECT_EQ(read_model_json(path("m.json")).structure.edges().size(), 2u);
+  // Tiers orient the chain c -> b -> a.
+  const auto t = run("learn-structure --data " + data.string() + " --tiers \"c;b;a\" --out " + path("t.json").string());
+  ASSERT_EQ(t.code, 0) << t.err;
+  EXPECT_THAT(t.out, HasSubstr("directed edges (2):\n  b -> a\n  c -> b\n"));
+  // Required and forbidden edges.
+  const auto k = run("learn-structure --data " + data.string() + " --require \"a->c\" --forbid \"b->a\" --explain --out " +
+                     path("k.json").string());
+  ASSERT_EQ(k.code, 0) << k.err;
+  EXPECT_THAT(k.out, HasSubstr("a -> b"));
+  EXPECT_THAT(k.out, HasSubstr("a -> c"));
+}
+
+TEST_F(cli_test, learn_structure_errors) {
+  const auto data = file("d.csv", stacking);
+  const auto out = path("m.json");
+  expect_failure("learn-structure --data " + data.string() + " --tiers \"xOff1;onTop9\" --out " + out.string(),
+                 "unknown variable 'onTop9' in the tiers (variables: xOff1, yOff1, colour, onTop1)", out);
+  expect_failure("learn-structure --data " + data.string() + " --forbid \"xOff1->nope\" --out " + out.string(),
+                 "unknown variable 'nope' in the forbidden edges", out);
+  expect_failure("learn-structure --data " + data.string() + " --require \"who->onTop1\" --out " + out.string(),
+                 "unknown variable 'who' in the required edges", out);
+  expect_failure("learn-structure --data " + data.string() + " --require \"xOff1=onTop1\" --out " + out.string(),
+                 "is not of the form 'from->to'", out);
+  expect_failure("learn-structure --data " + data.string() + " --tiers \"xOff1;;onTop1\" --out " + out.string(), "tier 2 is empty",
+                 out);
+  expect_failure("learn-structure --data " + data.string() + " --out " + path("m.bif").string(), "expected a file ending in .json",
+                 path("m.bif"));
+  expect_failure("learn-structure --data " + data.string() + " --test fisher --out " + out.string(), "fisher", out);
+  expect_failure("learn-structure --data " + data.string() + " --alpha 2 --out " + out.string(), "alpha", out);
+  expect_failure("learn-structure --data " + data.string() + " --require \"xOff1->onTop1\" --forbid \"xOff1->onTop1\" --out " +
+                     out.string(),
+                 "edge xOff1->onTop1 is required, but it is forbidden", out);
+  expect_failure("learn-structure --data " + path("absent.csv").string() + " --out " + out.string(), "cannot open", out);
 }
 
 }  // namespace
