@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   pgm::cli::add_discretize_command(app);
   pgm::cli::add_fit_command(app);
   pgm::cli::add_show_command(app);
+  pgm::cli::add_simulate_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -47,5 +47,6 @@ bool stderr_is_terminal();
 void add_fit_command(CLI::App& app);
 void add_discretize_command(CLI::App& app);
 void add_show_command(CLI::App& app);
+void add_simulate_command(CLI::App& app);
 
 }  // namespace pgm::cli
