@@ -9,11 +9,15 @@
 /// read when cubeUp1 has settled, before cubeUp2 is released; onTop2 needs cubeUp2 to rest on
 /// cubeUp1 and the pair to rest on cubeDown.
 ///
-/// Dropping: the sphere lands at its offset plus N(0, landing_noise) per axis; it is caught
-/// when its centre lands within the container's opening (radius scalingFactor * d/2) and then
-/// bounces out with probability bounce_max * exp(-height / bounce_depth_scale), so shallow
-/// containers (the plate) lose more spheres than deep ones.
+/// Dropping: the sphere (radius r) lands at its offset plus N(0, landing_noise) per axis. It
+/// falls in when its centre lands within R - r of the axis (R: the opening's radius,
+/// scalingFactor * d/2); landing on the rim (R - r to R) it falls in with probability
+/// rim_catch * clamp((R - r) / r, 0, 1), as a sphere that barely fits tends to bounce off;
+/// beyond R it misses. Once in, it bounces out with probability
+/// bounce_max * exp(-height / bounce_depth_scale), so shallow containers (the plate) lose more
+/// spheres than deep ones.
 
+#include <algorithm>
 #include <cmath>
 #include <span>
 #include <string_view>
@@ -86,7 +90,12 @@ class analytic_simulator {
     const double height = s * p.height_at_scale_1;
     const double x = values[x_] + p.landing_noise * noise.normal();
     const double y = values[y_] + p.landing_noise * noise.normal();
-    const bool caught = x * x + y * y < radius * radius;
+    const double r = p.sphere_diameter / 2;
+    const double landing = x * x + y * y;
+    const double core = std::max(0.0, radius - r);
+    const double rim_catch = p.rim_catch * std::clamp((radius - r) / r, 0.0, 1.0);
+    const double u = noise.uniform();
+    const bool caught = landing < core * core || (landing < radius * radius && u < rim_catch);
     const bool bounced = noise.uniform() < p.bounce_max * std::exp(-height / p.bounce_depth_scale);
     values[inside_] = caught && !bounced ? 1.0 : 0.0;
   }

@@ -16,6 +16,7 @@
 /// and SphereDropping boxes of Table I (tests/sim/sim_test.cpp checks 1e-3), and all 625
 /// onTop2 boxes of 2-Stack take about 0.45 s on one core.
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -239,17 +240,24 @@ inline double dropping_probability(const task_definition& task, const dropping_p
   for (std::size_t j = 0; j < s.values.size(); ++j) {
     const double radius = s.values[j] * p.diameter_at_scale_1 / 2;
     const double height = s.values[j] * p.height_at_scale_1;
-    // Landing within the opening: t = R sin θ, so the disc's half-chord is R cos θ.
-    double disc = 0;
-    for (std::size_t a = 0; a < angles.size(); ++a) {
-      const double theta = angles[a] * std::numbers::pi / 2;
-      const double t = radius * std::sin(theta);
-      const double chord = radius * std::cos(theta);
-      disc += angle_weights[a] * ax.density_at(t) * (ay.cumulative(chord) - ay.cumulative(-chord)) * chord;
-    }
-    disc *= std::numbers::pi / 2;
+    const double r = p.sphere_diameter / 2;
+    // P(landing within `within` of the axis); t = within·sin θ, so the half-chord is within·cos θ.
+    auto disc = [&](double within) {
+      if (within <= 0) return 0.0;
+      double sum = 0;
+      for (std::size_t a = 0; a < angles.size(); ++a) {
+        const double theta = angles[a] * std::numbers::pi / 2;
+        const double t = within * std::sin(theta);
+        const double chord = within * std::cos(theta);
+        sum += angle_weights[a] * ax.density_at(t) * (ay.cumulative(chord) - ay.cumulative(-chord)) * chord;
+      }
+      return sum * std::numbers::pi / 2;
+    };
+    const double core = disc(radius - r);
+    const double rim_catch = p.rim_catch * std::clamp((radius - r) / r, 0.0, 1.0);
+    const double caught = core + rim_catch * (disc(radius) - core);
     const double stays = 1 - p.bounce_max * std::exp(-height / p.bounce_depth_scale);
-    total += s.weights[j] * disc * stays;
+    total += s.weights[j] * caught * stays;
   }
   return total;
 }

@@ -77,6 +77,8 @@ struct dropping_physics {
   double landing_noise = 0.5;         ///< cm, standard deviation of the landing point per axis
   double bounce_max = 0.6;            ///< analytic: chance of bouncing out of a container of depth 0 …
   double bounce_depth_scale = 3.0;    ///< … falling as exp(-height / this)
+  double rim_catch = 0.7;             ///< analytic: chance that a sphere landing on the rim of a
+                                      ///< container it fits well into (opening ≥ 2 diameters) falls in
   double friction = 0.5;
   double restitution = 0.5;
   double sphere_mass = 0.1;  ///< kg
@@ -344,6 +346,8 @@ class task_reader : public pgm::detail::json_reader {
       p.bounce_max = non_negative(bounce, "max", path + "/bounce_out", 0.0);
       if (p.bounce_max > 1) fail(path + "/bounce_out/max", "expected a probability");
       p.bounce_depth_scale = positive(bounce, "depth_scale", path + "/bounce_out");
+      p.rim_catch = non_negative(value, "rim_catch", path, p.rim_catch);
+      if (p.rim_catch > 1) fail(path + "/rim_catch", "expected a probability");
       p.friction = non_negative(value, "friction", path, p.friction);
       p.restitution = non_negative(value, "restitution", path, p.restitution);
       p.sphere_mass = positive(value, "sphere_mass", path);
