@@ -50,5 +50,6 @@ void add_show_command(CLI::App& app);
 void add_transfer_command(CLI::App& app);
 void add_correspond_command(CLI::App& app);
 void add_learn_structure_command(CLI::App& app);
+void add_simulate_command(CLI::App& app);
 
 }  // namespace pgm::cli

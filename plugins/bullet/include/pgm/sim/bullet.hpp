@@ -1,0 +1,16 @@
+#pragma once
+/// \file
+/// The Bullet back-end (library pgm_bullet): rigid-body simulation of the task, one
+/// btDiscreteDynamicsWorld per experiment, experiments spread over threads. Linking
+/// pgm_bullet defines PGM_WITH_BULLET, which makes pgm::sim::simulate() offer "bullet".
+
+#include "pgm/data/dataset.hpp"
+#include "pgm/sim/simulator_concept.hpp"
+#include "pgm/sim/task.hpp"
+
+namespace pgm::sim {
+
+/// Runs `options.rows` experiments of `task` in Bullet (options.backend is ignored).
+dataset simulate_bullet(const task_definition& task, const simulate_options& options);
+
+}  // namespace pgm::sim

@@ -1,0 +1,120 @@
+// pgm simulate: run experiments of a task with a simulator back-end and write the raw data.
+
+#include <cstdio>
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "cli/common.hpp"
+#include "pgm/core/error.hpp"
+#include "pgm/data/csv.hpp"
+#include "pgm/sim/simulator.hpp"
+#include "pgm/sim/task.hpp"
+
+namespace pgm::cli {
+namespace {
+
+struct simulate_arguments {
+  std::string task;
+  std::string backend = "analytic";
+  std::string variant = "sim";
+  std::size_t rows = 0;
+  std::uint64_t seed = 0;
+  unsigned threads = 0;
+  std::string tasks_dir;
+  std::string out;
+};
+
+/// "2-stack" with --variant reality is the task "2-stack-reality".
+std::string task_name(const simulate_arguments& args) {
+  constexpr std::string_view suffix = "-reality";
+  const bool named_reality =
+      args.task.size() > suffix.size() && args.task.compare(args.task.size() - suffix.size(), suffix.size(), suffix) == 0;
+  if (args.variant == "reality" && !named_reality) return args.task + std::string(suffix);
+  if (args.variant == "sim" && named_reality) {
+    throw error("task '" + args.task + "' is a reality variant; leave out --variant or give --variant reality");
+  }
+  return args.task;
+}
+
+/// A one-line bar on stderr, redrawn when the percentage changes.
+class progress_bar {
+ public:
+  explicit progress_bar(std::size_t total) : total_(total) {}
+  void operator()(std::size_t done) {
+    const int percent = total_ ? static_cast<int>(100 * done / total_) : 100;
+    if (percent == shown_) return;
+    shown_ = percent;
+    std::string bar(static_cast<std::size_t>(percent / 4), '#');
+    bar.resize(25, '.');
+    std::fprintf(stderr, "\rsimulating [%s] %3d%% %zu/%zu", bar.c_str(), percent, done, total_);
+    if (done >= total_) std::fputc('\n', stderr);
+    std::fflush(stderr);
+  }
+
+ private:
+  std::size_t total_;
+  int shown_ = -1;
+};
+
+void run_simulate(const simulate_arguments& args) {
+  require_extension(args.out, {".csv"});
+  if (args.rows == 0) throw error("--rows must be positive");
+  std::vector<std::filesystem::path> directories;
+  if (!args.tasks_dir.empty()) {
+    directories.emplace_back(args.tasks_dir);
+  } else {
+    directories = sim::default_task_directories();
+  }
+  const auto name = task_name(args);
+  if (args.variant == "reality") {
+    try {
+      (void)sim::find_task(name, directories);
+    } catch (const data_error&) {
+      (void)sim::find_task(args.task, directories);  // an unknown base task is reported as such
+      throw data_error("task '" + args.task + "' has no reality variant ('" + name + "' is not defined)");
+    }
+  }
+  const auto task = sim::load_task(name, directories);
+  sim::simulate_options options;
+  options.backend = args.backend;
+  options.rows = args.rows;
+  options.seed = args.seed;
+  options.threads = args.threads;
+  if (stderr_is_terminal()) options.progress = progress_bar(args.rows);
+  const auto data = sim::simulate(task, options);
+  write_csv(data, std::filesystem::path(args.out));
+  const auto& success = data.discrete(task.success);
+  std::size_t successes = 0;
+  for (std::size_t row = 0; row < data.rows(); ++row) successes += success.code(row);
+  std::cout << "simulated " << data.rows() << " experiments of " << task.name << " (" << args.backend << ", seed "
+            << args.seed << "): " << task.success << " = 1 in "
+            << detail::format_short(static_cast<double>(successes) / static_cast<double>(data.rows()), 4)
+            << " -> " << args.out << '\n';
+  if (task.variant == "reality") note("'" + task.name + "' is a stand-in for the real robot, not real data");
+}
+
+}  // namespace
+
+void add_simulate_command(CLI::App& app) {
+  auto args = std::make_shared<simulate_arguments>();
+  auto* cmd = app.add_subcommand("simulate", "Run experiments of a task in a simulator and write the raw data as CSV");
+  cmd->add_option("--task", args->task, "Task name, e.g. 1-stack, 2-stack, drop-plate, drop-bowl, drop-glass")
+      ->required();
+  cmd->add_option("--backend", args->backend, "Simulator: analytic (closed-form) or bullet (rigid bodies)")
+      ->capture_default_str();
+  cmd->add_option("--variant", args->variant,
+                  "sim, or reality: the stacking tasks' stand-in for the real robot (not real data)")
+      ->check(CLI::IsMember({"sim", "reality"}))
+      ->capture_default_str();
+  cmd->add_option("--rows", args->rows, "Number of experiments")->required();
+  cmd->add_option("--seed", args->seed, "Random seed; the same seed gives the same data for any --threads")
+      ->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
+  cmd->add_option("--tasks-dir", args->tasks_dir,
+                  "Directory of task files (default: $PGM_TASKS_DIR, then the source tree's tasks/)");
+  cmd->add_option("--out", args->out, "Output CSV file (written atomically)")->required();
+  cmd->callback([args] { run_simulate(*args); });
+}
+
+}  // namespace pgm::cli

@@ -1,0 +1,155 @@
+// The Bullet back-end: the same shape of physics as the analytic model, determinism across
+// thread counts, and per-configuration success rates close to the analytic ground truth.
+// Sizes stay small so that the suite also runs quickly under the sanitizers.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+
+#include "sim/sim_support.hpp"
+
+namespace pgm::sim {
+namespace {
+
+using ::testing::HasSubstr;
+using testing::pinned;
+using testing::rate;
+using testing::shipped;
+
+#if defined(PGM_WITH_BULLET)
+
+// More rows when PGM_BULLET_TEST_ROWS is set, to measure agreement more finely.
+std::size_t scaled(std::size_t rows) {
+  if (const char* factor = std::getenv("PGM_BULLET_TEST_SCALE")) return rows * std::strtoul(factor, nullptr, 10);
+  return rows;
+}
+
+TEST(bullet_test, same_data_for_any_thread_count) {
+  for (const auto* name : {"2-stack", "drop-bowl"}) {
+    simulate_options o;
+    o.backend = "bullet";
+    o.rows = 37;
+    o.seed = 11;
+    o.threads = 1;
+    const auto one = simulate(shipped(name), o);
+    o.threads = 2;
+    EXPECT_EQ(simulate(shipped(name), o), one) << name;
+  }
+}
+
+TEST(bullet_test, centred_stack_succeeds_and_offset_cubes_fall) {
+  const auto two = shipped("2-stack");
+  EXPECT_GT(rate(pinned(two, {{"xOff1", 0.0}, {"yOff1", 0.0}, {"xOff2", 0.0}, {"yOff2", 0.0}}), "bullet", 40), 0.95);
+  const auto one = shipped("1-stack");
+  std::vector<double> rates;
+  for (double x : {0.0, 2.2, 3.0}) {
+    rates.push_back(rate(pinned(one, {{"xOff1", x}, {"yOff1", 0.0}, {"dropOff1", 2.0}}), "bullet", 60));
+  }
+  EXPECT_GT(rates[0], 0.95);
+  EXPECT_GT(rates[0], rates[1]);
+  EXPECT_GT(rates[1], rates[2]);
+  EXPECT_LT(rates[2], 0.1);  // beyond half the cube's width (2.5 cm)
+}
+
+TEST(bullet_test, sphere_lands_in_a_glass_and_the_plate_loses_more_than_the_bowl) {
+  EXPECT_GT(rate(pinned(shipped("drop-glass"), {{"xOff", 0.0}, {"yOff", 0.0}, {"scalingFactor", 0.8}}), "bullet", 30),
+            0.95);
+  // Of the spheres that land well within the opening (centre within R - r of the axis), the
+  // plate, being shallow, loses more than the bowl.
+  auto loss = [](const std::string& name) {
+    const auto task = pinned(shipped(name), {{"scalingFactor", 0.6}});
+    const auto& p = std::get<dropping_physics>(task.physics);
+    const double core = 0.6 * p.diameter_at_scale_1 / 2 - p.sphere_diameter / 2;
+    simulate_options o;
+    o.backend = "bullet";
+    o.rows = scaled(300);
+    o.seed = 8;
+    o.threads = 2;
+    const auto data = simulate(task, o);
+    double landed = 0, lost = 0;
+    for (std::size_t row = 0; row < data.rows(); ++row) {
+      if (std::hypot(data.continuous("xOff").values()[row], data.continuous("yOff").values()[row]) < core) {
+        landed += 1;
+        lost += 1 - data.discrete("inside").code(row);
+      }
+    }
+    return lost / landed;
+  };
+  const double plate = loss("drop-plate");
+  const double bowl = loss("drop-bowl");
+  std::printf("lost after landing within the opening: plate %.3f, bowl %.3f\n", plate, bowl);
+  EXPECT_GT(plate, bowl);
+}
+
+// Per configuration (Table I bins of the first cube's offsets), Bullet's success rate stays
+// close to the analytic ground truth; see docs/simulators.md for the tolerance.
+TEST(bullet_test, success_rates_close_to_analytic_per_configuration) {
+  const auto task = shipped("1-stack");
+  simulate_options o;
+  o.backend = "bullet";
+  o.rows = scaled(1500);
+  o.seed = 3;
+  o.threads = 2;
+  const auto data = simulate(task, o);
+  const std::vector<double> edges{-3, -1.4, -0.4, 0.4, 1.4, 3};
+  const std::vector<std::string> names{"xOff1", "yOff1"};
+  const auto counts = testing::count_by_box(data, "onTop1", names, edges);
+  double weighted = 0, total = 0, worst = 0;
+  for (std::size_t index = 0; index < counts.rows.size(); ++index) {
+    if (counts.rows[index] < 20) continue;
+    const double exact = analytic_success_probability(task, testing::box_of(index, names, edges));
+    const double observed = counts.successes[index] / counts.rows[index];
+    const double se = std::sqrt(std::max(exact * (1 - exact), 0.01) / counts.rows[index]);
+    const double excess = std::max(0.0, std::abs(observed - exact) - 3 * se);
+    worst = std::max(worst, excess);
+    weighted += std::abs(observed - exact) * counts.rows[index];
+    total += counts.rows[index];
+    std::printf("box %2zu: n %4.0f bullet %.3f analytic %.3f\n", index, counts.rows[index], observed, exact);
+  }
+  std::printf("mean |difference| %.4f, worst beyond 3 s.e. %.4f\n", weighted / total, worst);
+  EXPECT_LT(weighted / total, 0.06);
+  EXPECT_LT(worst, 0.05);
+}
+
+TEST(bullet_test, dropping_rates_close_to_analytic_per_configuration) {
+  for (const auto* name : {"drop-plate", "drop-bowl", "drop-glass"}) {
+    const auto task = shipped(name);
+    simulate_options o;
+    o.backend = "bullet";
+    o.rows = scaled(600);
+    o.seed = 4;
+    o.threads = 2;
+    const auto data = simulate(task, o);
+    const std::vector<double> edges{0.4, 0.6, 0.8, 1.0};
+    const std::vector<std::string> names{"scalingFactor"};
+    const auto counts = testing::count_by_box(data, "inside", names, edges);
+    for (std::size_t index = 0; index < counts.rows.size(); ++index) {
+      const double exact = analytic_success_probability(task, testing::box_of(index, names, edges));
+      const double observed = counts.successes[index] / counts.rows[index];
+      std::printf("%s scale box %zu: n %4.0f bullet %.3f analytic %.3f\n", name, index, counts.rows[index], observed,
+                  exact);
+      EXPECT_NEAR(observed, exact, 0.25) << name << " box " << index;
+    }
+  }
+}
+
+#else
+
+TEST(bullet_test, reports_that_it_was_not_built) {
+  simulate_options o;
+  o.backend = "bullet";
+  o.rows = 1;
+  try {
+    (void)simulate(shipped("1-stack"), o);
+    FAIL();
+  } catch (const data_error& e) {
+    EXPECT_THAT(e.what(), HasSubstr("the bullet back-end was not built"));
+  }
+}
+
+#endif
+
+}  // namespace
+}  // namespace pgm::sim

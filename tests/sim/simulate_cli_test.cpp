@@ -1,0 +1,117 @@
+// pgm simulate as a user meets it: help, a run, clear errors, and output written atomically.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "pgm/data/csv.hpp"
+
+namespace pgm {
+namespace {
+
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+struct result {
+  int code;
+  std::string out;
+  std::string err;
+};
+
+class simulate_cli_test : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::temp_directory_path() /
+           ("pgm_sim_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+  }
+  void TearDown() override { fs::remove_all(dir_); }
+
+  static std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    return {std::istreambuf_iterator<char>(in), {}};
+  }
+  result run(const std::string& arguments) const {
+    const auto out = dir_ / "stdout.txt";
+    const auto err = dir_ / "stderr.txt";
+    const auto command = std::string(PGM_PROGRAM) + " " + arguments + " >" + out.string() + " 2>" + err.string();
+    const int status = std::system(command.c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+  }
+  fs::path path(const std::string& name) const { return dir_ / name; }
+
+  fs::path dir_;
+};
+
+TEST_F(simulate_cli_test, help) {
+  const auto r = run("simulate --help");
+  EXPECT_EQ(r.code, 0);
+  EXPECT_THAT(r.out, HasSubstr("--backend"));
+  EXPECT_THAT(r.out, HasSubstr("--variant"));
+}
+
+TEST_F(simulate_cli_test, writes_the_raw_data) {
+  const auto out = path("raw.csv");
+  const auto r = run("simulate --task 2-stack --rows 2000 --seed 9 --threads 2 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("simulated 2000 experiments of 2-stack"));
+  EXPECT_EQ(r.err, "");  // no progress bar when stderr is not a terminal
+  const auto data = read_csv(out);
+  EXPECT_EQ(data.rows(), 2000U);
+  EXPECT_EQ(data.names(), (std::vector<std::string>{"xOff1", "yOff1", "dropOff1", "colorUp1", "colorDown", "onTop1",
+                                                    "xOff2", "yOff2", "dropOff2", "colorUp2", "onTop2"}));
+  // The same seed with one thread writes the same bytes.
+  const auto again = path("again.csv");
+  ASSERT_EQ(run("simulate --task 2-stack --rows 2000 --seed 9 --threads 1 --out " + again.string()).code, 0);
+  EXPECT_EQ(slurp(out), slurp(again));
+}
+
+TEST_F(simulate_cli_test, reality_variant_is_labelled) {
+  const auto out = path("reality.csv");
+  const auto r = run("simulate --task 1-stack --variant reality --rows 135 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("1-stack-reality"));
+  EXPECT_THAT(r.err, HasSubstr("stand-in for the real robot, not real data"));
+}
+
+TEST_F(simulate_cli_test, clear_errors_and_no_output) {
+  const auto out = path("raw.csv");
+  auto r = run("simulate --task 3-stack --rows 10 --out " + out.string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("unknown task '3-stack' (known tasks: 1-stack, 1-stack-reality, 2-stack"));
+  r = run("simulate --task drop-glass --variant reality --rows 10 --out " + out.string());
+  EXPECT_THAT(r.err, HasSubstr("task 'drop-glass' has no reality variant"));
+  r = run("simulate --task 1-stack --backend unity --rows 10 --out " + out.string());
+  EXPECT_THAT(r.err, HasSubstr("unknown simulator back-end 'unity'"));
+  r = run("simulate --task 1-stack --rows 10 --out " + path("raw.txt").string());
+  EXPECT_NE(r.code, 0);
+  r = run("simulate --task 1-stack --rows 10 --tasks-dir " + dir_.string() + " --out " + out.string());
+  EXPECT_THAT(r.err, HasSubstr("unknown task '1-stack'"));
+  EXPECT_FALSE(fs::exists(out));
+  r = run("simulate --task 1-stack --rows 10 --out " + (dir_ / "no-such-dir" / "raw.csv").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("does not exist"));
+}
+
+TEST_F(simulate_cli_test, output_is_replaced_atomically) {
+  const auto out = path("raw.csv");
+  std::ofstream(out) << "previous\n";
+  // A failing run leaves the old file as it was, and no temporary files behind.
+  EXPECT_NE(run("simulate --task nothing --rows 10 --out " + out.string()).code, 0);
+  EXPECT_EQ(slurp(out), "previous\n");
+  ASSERT_EQ(run("simulate --task drop-bowl --rows 100 --out " + out.string()).code, 0);
+  EXPECT_THAT(slurp(out), HasSubstr("xOff,yOff,scalingFactor,containerColor,inside\n"));
+  std::size_t files = 0;
+  for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir_)) ++files;
+  EXPECT_EQ(files, 3U);  // raw.csv, stdout.txt, stderr.txt
+}
+
+}  // namespace
+}  // namespace pgm
