@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   pgm::cli::add_transfer_command(app);
   pgm::cli::add_correspond_command(app);
   pgm::cli::add_learn_structure_command(app);
+  pgm::cli::add_experiment_command(app);
   pgm::cli::add_simulate_command(app);
   try {
     app.parse(argc, argv);

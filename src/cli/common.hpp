@@ -50,6 +50,7 @@ void add_show_command(CLI::App& app);
 void add_transfer_command(CLI::App& app);
 void add_correspond_command(CLI::App& app);
 void add_learn_structure_command(CLI::App& app);
+void add_experiment_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
 
 }  // namespace pgm::cli

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "cli/common.hpp"
+#include "cli/progress.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/data/csv.hpp"
 #include "pgm/sim/simulator.hpp"
@@ -37,26 +38,6 @@ std::string task_name(const simulate_arguments& args) {
   return args.task;
 }
 
-/// A one-line bar on stderr, redrawn when the percentage changes.
-class progress_bar {
- public:
-  explicit progress_bar(std::size_t total) : total_(total) {}
-  void operator()(std::size_t done) {
-    const int percent = total_ ? static_cast<int>(100 * done / total_) : 100;
-    if (percent == shown_) return;
-    shown_ = percent;
-    std::string bar(static_cast<std::size_t>(percent / 4), '#');
-    bar.resize(25, '.');
-    std::fprintf(stderr, "\rsimulating [%s] %3d%% %zu/%zu", bar.c_str(), percent, done, total_);
-    if (done >= total_) std::fputc('\n', stderr);
-    std::fflush(stderr);
-  }
-
- private:
-  std::size_t total_;
-  int shown_ = -1;
-};
-
 void run_simulate(const simulate_arguments& args) {
   require_extension(args.out, {".csv"});
   if (args.rows == 0) throw error("--rows must be positive");
@@ -81,8 +62,10 @@ void run_simulate(const simulate_arguments& args) {
   options.rows = args.rows;
   options.seed = args.seed;
   options.threads = args.threads;
-  if (stderr_is_terminal()) options.progress = progress_bar(args.rows);
+  progress_bar bar("simulating");
+  options.progress = [&bar, rows = args.rows](std::size_t done) { bar.update(done, rows); };
   const auto data = sim::simulate(task, options);
+  bar.finish();
   write_csv(data, std::filesystem::path(args.out));
   const auto& success = data.discrete(task.success);
   std::size_t successes = 0;
