@@ -177,7 +177,8 @@ namespace detail {
     const variable_id node(static_cast<variable_id::rep>(i));
     const auto parents = network.graph().parents(node);
     factor f = factor::from_cpt(network.table(node), node, parents);
-    for (auto id : f.scope()) {
+    const auto scope = f.scope();  // a copy: reducing replaces f
+    for (auto id : scope) {
       if (observed_state[id.value()] >= 0) f = f.reduce(id, static_cast<std::size_t>(observed_state[id.value()]));
     }
     factors.push_back(std::move(f));
