@@ -7,6 +7,7 @@
 #include <iostream>
 #include <map>
 #include <mutex>
+#include <set>
 #include <sstream>
 
 #include "cli/common.hpp"
@@ -155,14 +156,10 @@ void write_summary(const std::vector<aggregated_point>& summary, const std::file
 std::string plot_script(const scenario& s, const std::string& target, const std::vector<aggregated_point>& summary,
                         const std::filesystem::path& stem) {
   std::map<std::string, std::map<std::string, std::vector<const aggregated_point*>>> lines;  // metric → line → points
-  std::vector<std::string> columns;
+  const std::vector<std::string>& columns = s.strategies;
   for (const auto& p : summary) {
     if (p.scenario != s.name || p.target != target || p.metric == "chosen_w") continue;
     lines[p.metric][p.strategy + "|" + p.weight].push_back(&p);
-    if (p.strategy != "mle" && p.strategy != "oracle" &&
-        std::find(columns.begin(), columns.end(), p.strategy) == columns.end()) {
-      columns.push_back(p.strategy);
-    }
   }
   std::ostringstream g;
   std::size_t block = 0;
@@ -176,8 +173,13 @@ std::string plot_script(const scenario& s, const std::string& target, const std:
       g << "EOD\n";
     }
   }
-  const std::map<std::string, std::string> colour{{"5", "#2ca02c"}, {"20", "#d62728"}, {"200", "#e6b800"},
-                                                  {"1", "#2ca02c"}, {"3", "#d62728"}, {"auto", "#000000"}};
+  // The paper's colours by rank: the smallest weight green, then red, then yellow.
+  std::map<std::string, std::string> colour{{"auto", "#000000"}};
+  const std::vector<std::string> palette{"#2ca02c", "#d62728", "#e6b800", "#8c564b", "#17becf"};
+  std::size_t rank = 0;
+  for (double w : s.weights) {
+    if (w > 0) colour.emplace(detail::format_short(w), palette[std::min(rank++, palette.size() - 1)]);
+  }
   const std::vector<std::pair<std::string, std::string>> metrics{
       {"max_difference", "Max-Difference"}, {"mean_difference", "Mean-Difference"}, {"failure_prevention", "success after prevention"}};
   const auto width = std::max<std::size_t>(1, columns.size()) * 420;
@@ -249,12 +251,16 @@ void run_experiment_command(const experiment_arguments& args) {
         if (std::system(command.c_str()) != 0) note("gnuplot failed on " + stem.string() + ".gp");
       }
     }
-    // The headline numbers at |D| = 0, as the paper reports them.
-    for (const auto& p : summary) {
-      if (p.rows == 0 && p.metric == "failure_prevention") {
-        std::cout << s.name << "  " << p.target << "  " << (p.strategy == "mle" || p.strategy == "oracle" ? p.strategy : p.strategy + " w=" + p.weight)
-                  << "  success after prevention at |D|=0: " << detail::format_short(p.mean, 3) << '\n';
+    // The headline numbers at |D| = 0, as the paper reports them; there every w > 0 gives the
+    // prior itself, so one weight per strategy says it all.
+    for (const auto& t : s.targets) {
+      std::cout << s.title << ", " << t.task << ": success after prevention at |D| = 0:";
+      std::set<std::string> shown;
+      for (const auto& p : summary) {
+        if (p.target != t.task || p.rows != 0 || p.metric != "failure_prevention" || !shown.insert(p.strategy).second) continue;
+        std::cout << "  " << p.strategy << " " << detail::format_short(100 * p.mean, 3) << "%";
       }
+      std::cout << '\n';
     }
     points.insert(points.end(), mine.begin(), mine.end());
   }
