@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
   pgm::cli::add_discretize_command(app);
   pgm::cli::add_fit_command(app);
   pgm::cli::add_show_command(app);
+  pgm::cli::add_predict_command(app);
+  pgm::cli::add_prevent_command(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

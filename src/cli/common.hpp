@@ -47,5 +47,7 @@ bool stderr_is_terminal();
 void add_fit_command(CLI::App& app);
 void add_discretize_command(CLI::App& app);
 void add_show_command(CLI::App& app);
+void add_predict_command(CLI::App& app);
+void add_prevent_command(CLI::App& app);
 
 }  // namespace pgm::cli
