@@ -1,0 +1,124 @@
+// Failure prevention over every configuration of a 625-configuration table (onTop2 of
+// 2-Stack: 4 parents × 5 bins, binary), beside a plain breadth-first search from each
+// configuration; and exact inference by variable elimination beside brute-force enumeration.
+
+#include <benchmark/benchmark.h>
+
+#include <random>
+#include <vector>
+
+#include "pgm/decide/prevent.hpp"
+#include "pgm/inference/variable_elimination.hpp"
+#include "support/enumeration.hpp"
+#include "support/random_network.hpp"
+
+namespace {
+
+/// P(success | offsets) high near the centre, as in stacking, with noise; `scale` < 1 makes
+/// fewer configurations exceed ε (longer searches).
+pgm::cpt<double> stacking_table(double scale) {
+  std::vector<pgm::variable> parents;
+  for (const char* name : {"xOff1", "yOff1", "xOff2", "yOff2"}) {
+    parents.push_back(pgm::variable::intervals(name, {-3, -1.4, -0.4, 0.4, 1.4, 3}));
+  }
+  std::mt19937_64 random(42);
+  std::uniform_real_distribution<double> noise(-0.05, 0.05);
+  std::vector<double> values;
+  for (std::size_t u = 0; u < 625; ++u) {
+    std::size_t rest = u;
+    double off = 0;
+    for (int d = 0; d < 4; ++d) {
+      const auto digit = static_cast<double>(rest % 5);
+      rest /= 5;
+      off += std::abs(digit - 2.0);
+    }
+    const double p = std::clamp(scale * (1.0 - 0.16 * off) + noise(random), 0.0, 1.0);
+    values.push_back(1 - p);
+    values.push_back(p);
+  }
+  return pgm::cpt<double>(pgm::variable("onTop2", {"0", "1"}), parents, values);
+}
+
+const bool all_controllable[] = {true, true, true, true};
+
+void set_configurations(benchmark::State& state) {
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * 625));
+  state.counters["ns/config"] = benchmark::Counter(static_cast<double>(state.iterations() * 625),
+                                                   benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+
+// range(0): scale in percent (100: many above ε; 70: none above ε).
+void prevent_625_steps(benchmark::State& state) {
+  const auto table = stacking_table(static_cast<double>(state.range(0)) / 100.0);
+  for (auto _ : state) benchmark::DoNotOptimize(pgm::prevention_targets(table, 1, all_controllable));
+  set_configurations(state);
+  if (pgm::prevention_targets(table, 1, all_controllable) !=
+      pgm::testing::naive_prevention_targets(table, 1, all_controllable, 0.8)) {
+    state.SkipWithError("prevention disagrees with the plain search");
+  }
+}
+BENCHMARK(prevent_625_steps)->Arg(100)->Arg(85)->Arg(70)->Unit(benchmark::kMicrosecond);
+
+void prevent_625_units(benchmark::State& state) {
+  const auto table = stacking_table(static_cast<double>(state.range(0)) / 100.0);
+  const pgm::prevention_options units{.epsilon = 0.8, .metric = pgm::prevention_options::distance::units};
+  for (auto _ : state) benchmark::DoNotOptimize(pgm::prevention_targets(table, 1, all_controllable, units));
+  set_configurations(state);
+}
+BENCHMARK(prevent_625_units)->Arg(100)->Arg(85)->Arg(70)->Unit(benchmark::kMicrosecond);
+
+// The obvious approach: a fresh breadth-first search from each configuration below ε.
+void prevent_625_naive(benchmark::State& state) {
+  const auto table = stacking_table(static_cast<double>(state.range(0)) / 100.0);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(pgm::testing::naive_prevention_targets(table, 1, all_controllable, 0.8));
+  }
+  set_configurations(state);
+}
+BENCHMARK(prevent_625_naive)->Arg(100)->Arg(85)->Arg(70)->Unit(benchmark::kMicrosecond);
+
+// Metric 3 with the table as its own truth (the oracle), uniform weights.
+void prevention_rate_625(benchmark::State& state) {
+  const auto table = stacking_table(1.0);
+  const std::vector<double> weights(625, 1.0);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(pgm::failure_prevention_rate(table, table, 1, all_controllable, weights));
+  }
+  set_configurations(state);
+}
+BENCHMARK(prevention_rate_625)->Unit(benchmark::kMicrosecond);
+
+// range(0): nodes. Sachs-like: 3 states, up to 3 parents; query one node given two.
+pgm::bayesian_network inference_network(std::int64_t nodes) {
+  return pgm::testing::random_network(
+      17, {.nodes = static_cast<std::size_t>(nodes), .max_parents = 3, .min_states = 3, .max_states = 3});
+}
+
+void variable_elimination(benchmark::State& state) {
+  const auto net = inference_network(state.range(0));
+  const auto n = static_cast<pgm::variable_id::rep>(net.size());
+  const pgm::variable_id query[] = {pgm::variable_id(n - 1)};
+  const pgm::observation observed[] = {{pgm::variable_id(0), pgm::state_index(1)},
+                                       {pgm::variable_id(n / 2), pgm::state_index(2)}};
+  for (auto _ : state) benchmark::DoNotOptimize(pgm::joint_with_evidence(net, query, observed));
+  if (state.range(0) <= 11) {
+    const auto expected = pgm::testing::enumerate_joint(net, query, observed);
+    const auto got = pgm::joint_with_evidence(net, query, observed);
+    for (std::size_t i = 0; i < expected.size(); ++i) {
+      if (std::abs(expected[i] - got.values()[i]) > 1e-12) state.SkipWithError("VE disagrees with enumeration");
+    }
+  }
+}
+BENCHMARK(variable_elimination)->Arg(11)->Arg(30)->Arg(60)->Unit(benchmark::kMicrosecond);
+
+void enumeration(benchmark::State& state) {
+  const auto net = inference_network(state.range(0));
+  const auto n = static_cast<pgm::variable_id::rep>(net.size());
+  const pgm::variable_id query[] = {pgm::variable_id(n - 1)};
+  const pgm::observation observed[] = {{pgm::variable_id(0), pgm::state_index(1)},
+                                       {pgm::variable_id(n / 2), pgm::state_index(2)}};
+  for (auto _ : state) benchmark::DoNotOptimize(pgm::testing::enumerate_joint(net, query, observed));
+}
+BENCHMARK(enumeration)->Arg(11)->Unit(benchmark::kMillisecond);
+
+}  // namespace

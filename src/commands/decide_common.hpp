@@ -1,0 +1,28 @@
+#pragma once
+// Shared by `pgm predict` and `pgm prevent`: reading the model with its success event and
+// describing states for people.
+
+#include <string>
+
+#include "pgm/core/bayesian_network.hpp"
+#include "pgm/decide/predict.hpp"
+
+namespace pgm::cli {
+
+/// The network of a .bif or .json model file.
+struct decision_model {
+  bayesian_network network;
+  success_event success;
+};
+
+/// Reads the model and settles the success event: `success_text` ("onTop2=1") if given, else
+/// a JSON model's "metadata": {"success": "onTop2=1"} if present, else default_success_event.
+decision_model read_decision_model(const std::string& path, const std::string& success_text);
+
+/// "2 [-0.4, 0.4) cm" for an interval state, the label otherwise.
+std::string describe_state(const variable& v, std::size_t state);
+
+/// "0.3 cm" / "0.3": a number in a variable's unit.
+std::string with_unit(const variable& v, double value);
+
+}  // namespace pgm::cli

@@ -1,0 +1,61 @@
+// pgm predict: the probability that a planned action succeeds.
+
+#include <iostream>
+#include <memory>
+#include <string>
+
+#include "cli/common.hpp"
+#include "commands/decide_common.hpp"
+#include "pgm/decide/assignment.hpp"
+#include "pgm/decide/predict.hpp"
+#include "pgm/detail/text.hpp"
+
+namespace pgm::cli {
+namespace {
+
+struct predict_arguments {
+  std::string model;
+  std::string assign;
+  std::string success;
+  bool marginalize = false;
+};
+
+void run_predict(const predict_arguments& args) {
+  const auto model = read_decision_model(args.model, args.success);
+  const auto planned = parse_assignment(args.assign, model.network);
+  const auto p = predict_success(model.network, model.success, planned, {.marginalize_missing = args.marginalize});
+  std::cout << "success: " << model.success.variable << "=" << model.success.state << '\n';
+  for (const auto& [name, value] : planned) {
+    const auto& v = model.network.at(name);
+    std::cout << "  " << name << " = "
+              << (std::holds_alternative<double>(value) ? with_unit(v, std::get<double>(value)) + " -> state "
+                                                        : std::string("state "))
+              << describe_state(v, state_of(v, value).value()) << '\n';
+  }
+  for (const auto& name : unassigned_parents(model.network, model.success, planned)) {
+    std::cout << "  " << name << " summed out (not assigned)\n";
+  }
+  std::cout << "predicted success probability: " << detail::format_short(p) << '\n';
+}
+
+}  // namespace
+
+void add_predict_command(CLI::App& app) {
+  auto args = std::make_shared<predict_arguments>();
+  auto* cmd = app.add_subcommand(
+      "predict",
+      "Predict the probability that a planned action succeeds.\n"
+      "The success event is --success, else a JSON model's \"metadata\": {\"success\": \"onTop2=1\"}, else the "
+      "unique variable with parents, no children and a state \"1\".");
+  cmd->add_option("--model", args->model, "The fitted network, .bif or .json")->required();
+  cmd->add_option("--assign", args->assign,
+                  "Planned values, e.g. \"xOff1=0.3,yOff1=-1.2,colour=Red\": numbers are binned with an interval "
+                  "variable's saved edges; '@2' names the state labelled 2")
+      ->required();
+  cmd->add_option("--success", args->success, "The success event, e.g. onTop2=1");
+  cmd->add_flag("--marginalize", args->marginalize,
+                "Sum out unassigned parents of the success variable (exact inference) instead of failing");
+  cmd->callback([args] { run_predict(*args); });
+}
+
+}  // namespace pgm::cli

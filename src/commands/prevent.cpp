@@ -1,0 +1,113 @@
+// pgm prevent: predict, explain a predicted failure and suggest the nearest values of the
+// controllable variables predicted to succeed.
+
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/common.hpp"
+#include "commands/decide_common.hpp"
+#include "pgm/decide/assignment.hpp"
+#include "pgm/decide/explain.hpp"
+#include "pgm/detail/text.hpp"
+
+namespace pgm::cli {
+namespace {
+
+struct prevent_arguments {
+  std::string model;
+  std::string assign;
+  std::string success;
+  std::string controllable;
+  double epsilon = 0.8;
+  std::string distance = "steps";
+  bool marginalize = false;
+};
+
+void run_prevent(const prevent_arguments& args) {
+  const auto model = read_decision_model(args.model, args.success);
+  const auto& network = model.network;
+  const auto planned = parse_assignment(args.assign, network);
+  std::vector<std::string> controllable;
+  if (args.controllable.empty()) {
+    for (const auto& p : network.table(model.success.variable).parents()) controllable.push_back(p.name());
+    note("no --controllable given: every parent of '" + model.success.variable + "' may move (" +
+         detail::join(controllable) + ")");
+  } else {
+    controllable = split_list(args.controllable, "--controllable");
+  }
+  prevention_options options;
+  options.epsilon = args.epsilon;
+  options.metric = args.distance == "units" ? prevention_options::distance::units : prevention_options::distance::steps;
+  const auto plan = plan_prevention(network, model.success, planned, controllable, options,
+                                    {.marginalize_missing = args.marginalize});
+  const auto& why = plan.why;
+  std::cout << "success: " << why.success_variable << "=" << why.success_state << '\n';
+  std::cout << "predicted success probability: " << detail::format_short(why.predicted) << '\n';
+  if (!why.failure_predicted()) {
+    std::cout << "no failure predicted (not below epsilon " << detail::format_short(why.epsilon)
+              << "); keep the plan\n";
+    return;
+  }
+  std::cout << "failure predicted (below epsilon " << detail::format_short(why.epsilon) << ")\n";
+  const auto responsible = why.responsible();
+  if (responsible.empty()) {
+    std::cout << "explanation: no change of the controllable variables (" << detail::join(controllable)
+              << ") predicts a higher success\n";
+    return;
+  }
+  std::cout << "explanation: " << (why.target_succeeds() ? "the smallest change predicted to succeed"
+                                                         : "no change reaches epsilon; the best one")
+            << " (" << why.steps << " bin step" << (why.steps == 1 ? "" : "s");
+  if (why.distance_units) std::cout << ", distance " << detail::format_short(*why.distance_units);
+  std::cout << ")\n";
+  for (const auto& c : responsible) {
+    const auto& v = network.at(c.variable);
+    std::cout << "  " << c.variable << ": " << describe_state(v, c.from_state) << " -> "
+              << describe_state(v, c.to_state);
+    if (c.move) std::cout << " (move " << (*c.move > 0 ? "+" : "") << with_unit(v, *c.move) << ")";
+    std::cout << '\n';
+  }
+  std::cout << "suggested values:\n";
+  for (const auto& c : why.changes) {
+    const auto& v = network.at(c.variable);
+    std::cout << "  " << c.variable << " = ";
+    if (c.to_interval) {
+      std::cout << with_unit(v, c.to_interval->midpoint()) << " (interval " << describe_state(v, c.to_state) << ")";
+    } else {
+      std::cout << c.to_label;
+    }
+    std::cout << (c.moves() ? "" : " (unchanged)") << '\n';
+  }
+  std::cout << "predicted success after prevention: " << detail::format_short(why.target_predicted) << '\n';
+}
+
+}  // namespace
+
+void add_prevent_command(CLI::App& app) {
+  auto args = std::make_shared<prevent_arguments>();
+  auto* cmd = app.add_subcommand(
+      "prevent",
+      "Predict success; below epsilon, explain the failure and suggest the nearest values of the controllable "
+      "variables predicted to succeed (breadth-first in bin steps; ties to the higher prediction; if none "
+      "exceeds epsilon, the best).");
+  cmd->add_option("--model", args->model, "The fitted network, .bif or .json")->required();
+  cmd->add_option("--assign", args->assign,
+                  "Planned values, e.g. \"xOff1=0.3,yOff1=-1.2\": numbers are binned with an interval variable's "
+                  "saved edges; '@2' names the state labelled 2")
+      ->required();
+  cmd->add_option("--success", args->success, "The success event, e.g. onTop2=1 (default: as for predict)");
+  cmd->add_option("--controllable", args->controllable,
+                  "Variables the robot may change, e.g. xOff1,yOff1 (default: every parent of the success variable)");
+  cmd->add_option("--epsilon", args->epsilon, "Success threshold")->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  cmd->add_option("--distance", args->distance,
+                  "Nearness: steps (bins moved) or units (Euclidean distance between interval midpoints)")
+      ->check(CLI::IsMember({"steps", "units"}))
+      ->capture_default_str();
+  cmd->add_flag("--marginalize", args->marginalize,
+                "Sum out unassigned, non-controllable parents of the success variable instead of failing");
+  cmd->callback([args] { run_prevent(*args); });
+}
+
+}  // namespace pgm::cli
