@@ -127,12 +127,12 @@ class transferred_prior {
     for (const auto& term : sources(u)) {
       if (!text.empty()) text += " + ";
       const auto codes = radix.decode(term.configuration);
-      std::string assignment;
+      std::string states;
       for (std::size_t k = 0; k < codes.size(); ++k) {
-        assignment += (k ? ", " : "") + prior_parents_[k].name() + "=" + prior_parents_[k].states()[codes[k]];
+        states += (k ? ", " : "") + prior_parents_[k].name() + "=" + prior_parents_[k].states()[codes[k]];
       }
-      if (assignment.empty()) assignment = "(no parents)";
-      text += term.weight == 1.0 ? assignment : detail::format_short(term.weight, 4) + "·(" + assignment + ")";
+      if (states.empty()) states = "(no parents)";
+      text += term.weight == 1.0 ? states : detail::format_short(term.weight, 4) + "·(" + states + ")";
     }
     return text;
   }
