@@ -19,6 +19,7 @@
 #include "pgm/detail/file.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
+#include "support/program_test.hpp"
 
 namespace pgm {
 namespace {
@@ -28,51 +29,7 @@ using ::testing::Not;
 
 namespace fs = std::filesystem;
 
-struct result {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-class cli_test : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() / ("pgm_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  fs::path file(const std::string& name, const std::string& content) const {
-    const auto path = dir_ / name;
-    std::ofstream(path) << content;
-    return path;
-  }
-  fs::path path(const std::string& name) const { return dir_ / name; }
-
-  static std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    return {std::istreambuf_iterator<char>(in), {}};
-  }
-
-  result run(const std::string& arguments) const {
-    const auto out = dir_ / "stdout.txt";
-    const auto err = dir_ / "stderr.txt";
-    const auto command = std::string(PGM_PROGRAM) + " " + arguments + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-  }
-
-  // Expects failure with `message` on stderr and no file at `output`.
-  void expect_failure(const std::string& arguments, const std::string& message, const fs::path& output) const {
-    const auto r = run(arguments);
-    EXPECT_NE(r.code, 0) << arguments;
-    EXPECT_THAT(r.err, HasSubstr(message)) << arguments;
-    EXPECT_FALSE(fs::exists(output)) << output;
-  }
-
-  fs::path dir_;
-};
+using cli_test = pgm::testing::program_test;
 
 constexpr const char* stacking =
     "xOff1,yOff1,colour,onTop1\n"

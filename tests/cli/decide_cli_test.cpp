@@ -12,6 +12,7 @@
 #include <string>
 
 #include "pgm/io/network_file.hpp"
+#include "support/program_test.hpp"
 
 namespace pgm {
 namespace {
@@ -19,19 +20,10 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-struct result {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-class decide_cli_test : public ::testing::Test {
+class decide_cli_test : public pgm::testing::program_test {
  protected:
   void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pgm_decide_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
+    program_test::SetUp();
     const auto x = variable::intervals("xOff1", {-3, -0.4, 0.4, 3}, {"x-offset", "cm", "cubeUp1"});
     const auto y = variable::intervals("yOff1", {-3, -0.4, 0.4, 3}, {"y-offset", "cm", "cubeUp1"});
     const variable colour("colour", {"Red", "Blue"});
@@ -49,30 +41,13 @@ class decide_cli_test : public ::testing::Test {
     write_network(net, model());
     write_network(net, dir_ / "model.bif");
   }
-  void TearDown() override { fs::remove_all(dir_); }
-
   fs::path model() const { return dir_ / "model.json"; }
-
-  static std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    return {std::istreambuf_iterator<char>(in), {}};
-  }
-
-  result run(const std::string& arguments) const {
-    const auto out = dir_ / "stdout.txt";
-    const auto err = dir_ / "stderr.txt";
-    const auto command = std::string(PGM_PROGRAM) + " " + arguments + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-  }
 
   void expect_error(const std::string& arguments, const std::string& message) const {
     const auto r = run(arguments);
     EXPECT_EQ(r.code, 1) << arguments;
     EXPECT_THAT(r.err, HasSubstr(message)) << arguments;
   }
-
-  fs::path dir_;
 };
 
 TEST_F(decide_cli_test, help) {

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "pgm/data/csv.hpp"
+#include "support/program_test.hpp"
 
 namespace pgm {
 namespace {
@@ -18,37 +19,7 @@ namespace {
 using ::testing::HasSubstr;
 namespace fs = std::filesystem;
 
-struct result {
-  int code;
-  std::string out;
-  std::string err;
-};
-
-class simulate_cli_test : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::temp_directory_path() /
-           ("pgm_sim_cli_" + std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-  }
-  void TearDown() override { fs::remove_all(dir_); }
-
-  static std::string slurp(const fs::path& p) {
-    std::ifstream in(p);
-    return {std::istreambuf_iterator<char>(in), {}};
-  }
-  result run(const std::string& arguments) const {
-    const auto out = dir_ / "stdout.txt";
-    const auto err = dir_ / "stderr.txt";
-    const auto command = std::string(PGM_PROGRAM) + " " + arguments + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-  }
-  fs::path path(const std::string& name) const { return dir_ / name; }
-
-  fs::path dir_;
-};
+using simulate_cli_test = pgm::testing::program_test;
 
 TEST_F(simulate_cli_test, help) {
   const auto r = run("simulate --help");
