@@ -373,12 +373,16 @@ class task_reader : public pgm::detail::json_reader {
 }
 
 /// Where tasks are looked for, in order: $PGM_TASKS_DIR, then the source tree's tasks/ when
-/// the program was built with PGM_DEFAULT_TASKS_DIR.
+/// the program was built with PGM_DEFAULT_TASKS_DIR, then the installed ones
+/// (PGM_INSTALLED_TASKS_DIR).
 [[nodiscard]] inline std::vector<std::filesystem::path> default_task_directories() {
   std::vector<std::filesystem::path> result;
   if (const char* env = std::getenv("PGM_TASKS_DIR"); env && *env) result.emplace_back(env);
 #ifdef PGM_DEFAULT_TASKS_DIR
   result.emplace_back(PGM_DEFAULT_TASKS_DIR);
+#endif
+#ifdef PGM_INSTALLED_TASKS_DIR
+  result.emplace_back(PGM_INSTALLED_TASKS_DIR);
 #endif
   return result;
 }
