@@ -73,7 +73,11 @@ void run_prevent(const prevent_arguments& args) {
   for (const auto& c : why.changes) {
     const auto& v = network.at(c.variable);
     std::cout << "  " << c.variable << " = ";
-    if (c.to_interval) {
+    // An unchanged variable keeps the value planned for it; a moved one goes to its interval's middle.
+    const auto given = planned.find(c.variable);
+    if (!c.moves() && given != planned.end() && std::holds_alternative<double>(given->second)) {
+      std::cout << with_unit(v, std::get<double>(given->second)) << " (interval " << describe_state(v, c.to_state) << ")";
+    } else if (c.to_interval) {
       std::cout << with_unit(v, c.to_interval->midpoint()) << " (interval " << describe_state(v, c.to_state) << ")";
     } else {
       std::cout << c.to_label;
