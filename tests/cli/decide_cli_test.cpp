@@ -79,7 +79,7 @@ TEST_F(decide_cli_test, prevent_explains_and_suggests) {
   EXPECT_THAT(r.out, HasSubstr("failure predicted"));
   EXPECT_THAT(r.out, HasSubstr("xOff1: 0 [-3, -0.4) cm -> 1 [-0.4, 0.4) cm (move +1.7 cm)"));
   EXPECT_THAT(r.out, HasSubstr("xOff1 = 0 cm (interval 1 [-0.4, 0.4) cm)"));
-  EXPECT_THAT(r.out, HasSubstr("yOff1 = 0 cm (interval 1 [-0.4, 0.4) cm) (unchanged)"));
+  EXPECT_THAT(r.out, HasSubstr("yOff1 = 0.1 cm (interval 1 [-0.4, 0.4) cm) (unchanged)"));
   EXPECT_THAT(r.out, HasSubstr("predicted success after prevention: 0.95"));
   const auto fine = run("prevent --model " + model().string() + " --assign 'xOff1=0,yOff1=0' --distance units");
   EXPECT_EQ(fine.code, 0) << fine.err;
