@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "pgm/decide/prevent.hpp"
+#include "pgm/detail/splitmix.hpp"
 #include "pgm/eval/family_data.hpp"
 #include "pgm/eval/metrics.hpp"
 #include "pgm/eval/scenario.hpp"
@@ -73,13 +74,6 @@ struct experiment_point {
 };
 
 namespace detail {
-
-[[nodiscard]] inline std::uint64_t mix_seed(std::uint64_t a, std::uint64_t b) {
-  std::uint64_t z = a + 0x9e3779b97f4a7c15ULL * (b + 1);
-  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-  return z ^ (z >> 31);
-}
 
 [[nodiscard]] inline std::uint64_t seed_of(std::string_view text) {
   std::uint64_t h = 1469598103934665603ULL;

@@ -9,6 +9,8 @@
 #include <cstdint>
 #include <numbers>
 
+#include "pgm/detail/splitmix.hpp"
+
 namespace pgm::sim {
 
 /// What a stream is for: the sampled task variables and the simulator's noise are separate
@@ -48,11 +50,7 @@ class random_stream {
     return radius * std::cos(angle);
   }
 
-  [[nodiscard]] static constexpr std::uint64_t mix(std::uint64_t z) noexcept {
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-  }
+  [[nodiscard]] static constexpr std::uint64_t mix(std::uint64_t z) noexcept { return pgm::detail::splitmix64_mix(z); }
 
  private:
   std::uint64_t state_;
