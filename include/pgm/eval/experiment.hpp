@@ -153,15 +153,15 @@ struct prepared_target {
       }
     }
     target.lines.push_back({"mle", "0", nullptr, 0, false});
+    double smallest_weight = INFINITY;
+    for (double w : s.weights) {
+      if (w > 0) smallest_weight = std::min(smallest_weight, w);
+    }
     for (const auto& [name, prior] : target.priors) {
       const bool auto_map = name.find("+auto-map") != std::string::npos;
       for (double w : s.weights) {
-        if (w == 0) continue;
-        if (auto_map && w != *std::min_element(s.weights.begin(), s.weights.end(), [](double a, double b) {
-              return (a == 0 ? INFINITY : a) < (b == 0 ? INFINITY : b);
-            })) {
-          continue;  // the proposed map at the smallest weight only, to keep the plots readable
-        }
+        // The proposed map at the smallest weight only, to keep the plots readable.
+        if (w == 0 || (auto_map && w != smallest_weight)) continue;
         target.lines.push_back({name, detail::format_short(w), &prior.table(), w, false});
       }
       if (options.automatic_lines && !auto_map) target.lines.push_back({name, "auto", &prior.table(), 0, true});
