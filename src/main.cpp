@@ -29,7 +29,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version end here with 0; every usage error exits with 2.
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const pgm::error& e) {
     std::cerr << "pgm: error: " << e.what() << '\n';
     return 1;

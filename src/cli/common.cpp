@@ -1,5 +1,7 @@
 #include "cli/common.hpp"
 
+#include <charconv>
+
 #include <iostream>
 
 #include <unistd.h>
@@ -45,9 +47,29 @@ dataset read_discrete_data(const std::filesystem::path& path, const std::vector<
   if (plan.raw_intervals) {
     discretization used;
     for (const auto& [name, intervals] : *plan.raw_intervals) {
-      if (data.contains(name)) used.emplace(name, intervals);
+      if (!data.contains(name)) continue;
+      used.emplace(name, intervals);
+      // Outside values go to the outer bins by design; many of them suggest the wrong edges,
+      // or data that was binned already (then --intervals was meant).
+      const auto& edges = intervals.edges();
+      std::size_t outside = 0;
+      for (double v : data.continuous(name).values()) outside += v < edges.front() || v > edges.back();
+      if (outside > 0) {
+        note(std::to_string(outside) + " of " + std::to_string(data.rows()) + " values of '" + name +
+             "' lie outside the edges' range [" + detail::format_short(edges.front()) + ", " +
+             detail::format_short(edges.back()) + "] and count in the outer bins");
+      }
     }
     data = apply_discretization(data, used);
+  }
+  // A column with nearly as many states as rows is almost surely a raw quantity.
+  for (const auto& name : data.names()) {
+    if (!data.is_discrete(name)) continue;
+    const auto states = data.discrete(name).var().cardinality();
+    if (states > 50 && 2 * states > data.rows()) {
+      note("'" + name + "' has " + std::to_string(states) + " distinct values in " + std::to_string(data.rows()) +
+           " rows: if it is a continuous quantity, bin it first (pgm discretize, or --discretization)");
+    }
   }
   return data;
 }
@@ -55,5 +77,20 @@ dataset read_discrete_data(const std::filesystem::path& path, const std::vector<
 void note(const std::string& text) { std::cerr << "pgm: note: " << text << '\n'; }
 
 bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) != 0; }
+
+CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
+  const std::string range = std::to_string(lo) + " to " + std::to_string(hi);
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) -> std::string {
+        std::uint64_t value = 0;
+        const auto [end, failure] = std::from_chars(text.data(), text.data() + text.size(), value);
+        if (text.empty() || failure != std::errc() || end != text.data() + text.size()) {
+          return "expected a whole number from " + range + ", got '" + text + "'";
+        }
+        if (value < lo || value > hi) return "expected a whole number from " + range + ", got " + text;
+        return {};
+      },
+      "INT in " + range);
+}
 
 }  // namespace pgm::cli

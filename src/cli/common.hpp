@@ -2,6 +2,7 @@
 // Helpers shared by the commands of the `pgm` program. The program is thin: commands parse
 // their arguments, call the library and print; nothing here computes.
 
+#include <cstdint>
 #include <filesystem>
 #include <iosfwd>
 #include <string>
@@ -37,6 +38,9 @@ dataset read_discrete_data(const std::filesystem::path& path, const std::vector<
 
 /// Network files are .bif or .json.
 inline const std::vector<std::string> network_extensions{".bif", ".json"};
+
+/// Accepts only a whole number in [lo, hi], so that "-5" is an error rather than 2^64 - 5.
+CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi);
 
 /// Prints "pgm: note: …" to stderr, for what the user should know but need not act on.
 void note(const std::string& text);

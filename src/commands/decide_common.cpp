@@ -44,4 +44,18 @@ std::string with_unit(const variable& v, double value) {
   return text;
 }
 
+assignment read_assignment(const std::string& text, const bayesian_network& network) {
+  auto planned = parse_assignment(text, network);
+  for (const auto& [name, value] : planned) {
+    const auto* number = std::get_if<double>(&value);
+    const auto& v = network.at(name);
+    if (!number || !v.has_intervals()) continue;
+    if (*number < v.edges().front() || *number > v.edges().back()) {
+      note(name + " = " + with_unit(v, *number) + " lies outside the range the model was fitted on [" +
+           with_unit(v, v.edges().front()) + ", " + with_unit(v, v.edges().back()) + "]; it counts as the outer interval");
+    }
+  }
+  return planned;
+}
+
 }  // namespace pgm::cli

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/decide/assignment.hpp"
 #include "pgm/decide/predict.hpp"
 
 namespace pgm::cli {
@@ -21,6 +22,10 @@ decision_model read_decision_model(const std::string& path, const std::string& s
 
 /// "2 [-0.4, 0.4) cm" for an interval state, the label otherwise.
 std::string describe_state(const variable& v, std::size_t state);
+
+/// Parses --assign, noting each number that lies outside its variable's fitted range (it
+/// counts in the outer interval, which then misdescribes it).
+assignment read_assignment(const std::string& text, const bayesian_network& network);
 
 /// "0.3 cm" / "0.3": a number in a variable's unit.
 std::string with_unit(const variable& v, double value);

@@ -1,5 +1,6 @@
 // pgm discretize: bin continuous columns (quantile, equal width or saved edges).
 
+#include <filesystem>
 #include <iostream>
 #include <set>
 #include <sstream>
@@ -8,6 +9,7 @@
 #include "cli/common.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/data/csv.hpp"
+#include "pgm/detail/file.hpp"
 #include "pgm/io/json_model.hpp"
 
 namespace pgm::cli {
@@ -37,6 +39,15 @@ void run_discretize(const discretize_arguments& args) {
   if (!args.edges_out.empty()) require_extension(args.edges_out, {".json"});
   if (args.method == "edges" && args.edges_in.empty()) throw error("--method edges needs --edges-in FILE");
   if (args.method != "edges" && !args.edges_in.empty()) throw error("--edges-in applies to --method edges");
+  // Both outputs are checked before either is written, and neither may overwrite the input.
+  detail::check_output_path(args.out);
+  if (!args.edges_out.empty()) detail::check_output_path(args.edges_out);
+  for (const auto* output : {&args.out, &args.edges_out}) {
+    std::error_code ec;
+    if (!output->empty() && std::filesystem::equivalent(*output, args.in, ec)) {
+      throw error("'" + *output + "' is the input file; write the result elsewhere");
+    }
+  }
 
   // Columns named for binning must be numeric: reading them as such makes a stray word an
   // error at its own line and column instead of a vague complaint about the whole column.
@@ -109,7 +120,7 @@ void add_discretize_command(CLI::App& app) {
                   "quantile (equal frequency, as in the paper), width (equal width) or edges (saved edges)")
       ->check(CLI::IsMember({"quantile", "width", "edges"}))
       ->capture_default_str();
-  cmd->add_option("--bins", args->bins, "Number of bins")->check(CLI::PositiveNumber)->capture_default_str();
+  cmd->add_option("--bins", args->bins, "Number of bins")->check(whole_number(1, 10000))->capture_default_str();
   cmd->add_option("--columns", args->columns,
                   "Columns to bin, e.g. \"xOff1,yOff1\" (default: every numeric column with more distinct "
                   "values than bins)");

@@ -50,6 +50,11 @@ std::vector<scenario> selected_scenarios(const std::string& name, const std::fil
     if (entry.path().extension() == ".json") files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
+  // One scenario is read from its own file, so that a broken file elsewhere does not stop it.
+  if (name != "all" && std::filesystem::exists(dir / (name + ".json"))) {
+    auto s = load_scenario(dir / (name + ".json"));
+    if (s.name == name) return {s};
+  }
   // The paper's order.
   const std::vector<std::string> paper{"2-stack-sim", "2-stack-reality", "2-stack-sim-to-real", "sphere-dropping", "stack-to-drop"};
   std::vector<scenario> all;
@@ -224,7 +229,14 @@ bool have_gnuplot() { return std::system("gnuplot --version > /dev/null 2>&1") =
 void run_experiment_command(const experiment_arguments& args) {
   auto dirs = args.tasks_dir.empty() ? sim::default_task_directories() : std::vector<std::filesystem::path>{args.tasks_dir};
   const auto scenarios = selected_scenarios(args.scenario, scenarios_directory(dirs));
-  std::filesystem::create_directories(args.out);
+  // Checked before any work, created only once there is something to write in it.
+  const std::filesystem::path out_dir(args.out);
+  if (args.out.empty()) throw error("--out needs a folder");
+  if (std::filesystem::exists(out_dir) && !std::filesystem::is_directory(out_dir)) {
+    throw io_error("'" + args.out + "' is a file, not a folder");
+  }
+  const auto parent = out_dir.has_parent_path() ? out_dir.parent_path() : std::filesystem::path(".");
+  if (!std::filesystem::is_directory(parent)) throw io_error("the folder '" + parent.string() + "' does not exist");
   simulated_source data(dirs, args.backend, args.threads);
   experiment_options options;
   options.seed = args.seed;
@@ -239,8 +251,14 @@ void run_experiment_command(const experiment_arguments& args) {
   for (const auto& s : scenarios) {
     progress_bar bar(s.name);
     options.progress = [&bar](std::size_t done, std::size_t total) { bar.update(done, total); };
-    const auto mine = run_experiment(s, data.source(), options);
+    std::vector<experiment_point> mine;
+    try {
+      mine = run_experiment(s, data.source(), options);
+    } catch (const error& e) {
+      throw error(s.source.string() + ": " + e.what());
+    }
     bar.finish();
+    std::filesystem::create_directory(out_dir);
     const auto summary = aggregate(mine);
     for (const auto& t : s.targets) {
       const auto stem = std::filesystem::path(args.out) / (s.name + "-" + t.task);
@@ -279,9 +297,11 @@ void add_experiment_command(CLI::App& app) {
                   "2-stack-sim, 2-stack-reality, 2-stack-sim-to-real, sphere-dropping, stack-to-drop (files in tasks/scenarios), or all")
       ->capture_default_str();
   cmd->add_option("--backend", args->backend, "Simulator: analytic or bullet")->capture_default_str();
-  cmd->add_option("--reps", args->repetitions, "Repetitions (default: the scenario's, 20)");
-  cmd->add_option("--seed", args->seed, "Seed of the data and the splits")->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
+  cmd->add_option("--reps", args->repetitions, "Repetitions (default: the scenario's, 20)")->check(whole_number(1, 100000));
+  cmd->add_option("--seed", args->seed, "Seed of the data and the splits")
+      ->check(whole_number(0, UINT64_MAX))
+      ->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->check(whole_number(0, 1024))->capture_default_str();
   cmd->add_option("--distance", args->distance, "Failure prevention's distance: steps (bins) or units")
       ->check(CLI::IsMember({"steps", "units"}))
       ->capture_default_str();

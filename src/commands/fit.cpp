@@ -119,7 +119,9 @@ void run_fit(const fit_arguments& args) {
       const auto& own = structure.at(name);
       if (own.states() != intervals.states()) {
         throw data_error("'" + args.intervals_file + "' gives '" + name + "' the states {" +
-                         detail::join(intervals.states()) + "}, the data {" + detail::join(own.states()) + "}");
+                         detail::list_for_message(intervals.states()) + "}, the data {" +
+                         detail::list_for_message(own.states()) + "}" +
+                         (own.cardinality() > intervals.cardinality() ? "; are the columns still raw? use --discretization" : ""));
       }
       structure.update_variable(variable::with_edges(name, own.states(), intervals.edges(), intervals.tags()));
     }
@@ -166,7 +168,7 @@ void add_fit_command(CLI::App& app) {
                                     "Edges file whose intervals the already discretized columns hold; "
                                     "saved with the model");
   raw->excludes(intervals);
-  cmd->add_option("--threads", args->threads, "Counting threads (0: all cores)")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Counting threads (0: all cores)")->check(whole_number(0, 1024))->capture_default_str();
   cmd->add_option("--out", args->out, "The fitted network, .bif or .json")->required();
   add_transfer_options(*cmd, args->transfer, true);
   cmd->callback([args] {

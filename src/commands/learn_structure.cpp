@@ -117,10 +117,11 @@ void add_learn_structure_command(CLI::App& app) {
   cmd->add_option("--test", args->test, "Independence test: chi2 (Pearson) or g2 (likelihood ratio)")
       ->check(CLI::IsMember({"chi2", "g2"}))
       ->capture_default_str();
-  cmd->add_option("--alpha", args->alpha, "Significance level: an edge goes when a test has p > alpha")
+  cmd->add_option("--alpha", args->alpha, "Significance level, strictly between 0 and 1: an edge goes when a test has p > alpha")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--max-cond", args->max_conditioning, "Largest conditioning set tried")
+      ->check(whole_number(0, 64))
       ->capture_default_str();
   cmd->add_option("--tiers", args->tiers,
                   "Tiers, earliest first, e.g. \"xOff1,yOff1;onTop1;onTop2\": no edge points into an "
@@ -128,6 +129,7 @@ void add_learn_structure_command(CLI::App& app) {
   cmd->add_option("--forbid", args->forbid, "Edges that may not exist, e.g. \"a->b,c->d\"");
   cmd->add_option("--require", args->require, "Edges that must exist, e.g. \"xOff1->onTop1\"");
   cmd->add_option("--threads", args->threads, "Worker threads (0: all cores); the result is the same")
+      ->check(whole_number(0, 1024))
       ->capture_default_str();
   cmd->add_flag("--explain", args->explain, "Also print the test that removed each absent edge");
   cmd->add_option("--out", args->out, "The learned structure, a .json model without tables")->required();

@@ -22,7 +22,7 @@ struct predict_arguments {
 
 void run_predict(const predict_arguments& args) {
   const auto model = read_decision_model(args.model, args.success);
-  const auto planned = parse_assignment(args.assign, model.network);
+  const auto planned = read_assignment(args.assign, model.network);
   const auto p = predict_success(model.network, model.success, planned, {.marginalize_missing = args.marginalize});
   std::cout << "success: " << model.success.variable << "=" << model.success.state << '\n';
   for (const auto& [name, value] : planned) {

@@ -28,7 +28,7 @@ struct prevent_arguments {
 void run_prevent(const prevent_arguments& args) {
   const auto model = read_decision_model(args.model, args.success);
   const auto& network = model.network;
-  const auto planned = parse_assignment(args.assign, network);
+  const auto planned = read_assignment(args.assign, network);
   std::vector<std::string> controllable;
   if (args.controllable.empty()) {
     for (const auto& p : network.table(model.success.variable).parents()) controllable.push_back(p.name());

@@ -90,10 +90,11 @@ void add_simulate_command(CLI::App& app) {
                   "sim, or reality: the stacking tasks' stand-in for the real robot (not real data)")
       ->check(CLI::IsMember({"sim", "reality"}))
       ->capture_default_str();
-  cmd->add_option("--rows", args->rows, "Number of experiments")->required();
+  cmd->add_option("--rows", args->rows, "Number of experiments")->check(whole_number(1, 1'000'000'000))->required();
   cmd->add_option("--seed", args->seed, "Random seed; the same seed gives the same data for any --threads")
+      ->check(whole_number(0, UINT64_MAX))
       ->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->check(whole_number(0, 1024))->capture_default_str();
   cmd->add_option("--tasks-dir", args->tasks_dir,
                   "Directory of task files (default: $PGM_TASKS_DIR, then the source tree's tasks/)");
   cmd->add_option("--out", args->out, "Output CSV file (written atomically)")->required();

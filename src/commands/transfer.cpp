@@ -68,6 +68,7 @@ network_structure target_structure(const transfer_command_arguments& args, const
 void run_transfer(const transfer_command_arguments& args) {
   require_extension(args.out, {".csv"});
   if (args.transfer.prior_model.empty()) throw error("pgm transfer needs --prior-model");
+  if (args.transfer.map.empty()) throw error("pgm transfer needs --map, e.g. --map \"onTop2=onTop1,xOff2~xOff1\"");
   if (args.edges.empty() == args.model.empty()) throw error("give the target structure with --edges or --model");
   const auto prior = read_network(args.transfer.prior_model);
   std::optional<correspondence> given;
@@ -142,8 +143,10 @@ void run_correspond(const correspond_arguments& args) {
 void add_transfer_command(CLI::App& app) {
   auto args = std::make_shared<transfer_command_arguments>();
   auto* cmd = app.add_subcommand("transfer", "Write the prior table a strategy transfers to a target node, without data");
-  cmd->add_option("--edges", args->edges, "The target structure as edges, e.g. \"xOff1->onTop2,xOff2->onTop2\"");
-  cmd->add_option("--model", args->model, "The target structure from a JSON model file instead");
+  auto* edges = cmd->add_option("--edges", args->edges, "The target structure as edges, e.g. \"xOff1->onTop2,xOff2->onTop2\"");
+  auto* model = cmd->add_option("--model", args->model, "The target structure from a JSON model file instead");
+  edges->excludes(model);
+  model->excludes(edges);
   cmd->add_option("--intervals", args->intervals_file, "Edges file (from pgm discretize) with the target's intervals");
   cmd->add_option("--out", args->out, "The prior table f(θ′) as CSV")->required();
   cmd->add_flag("--explain", args->explain, "Print the prior configuration u′ behind every target configuration u");
@@ -157,7 +160,7 @@ void add_correspond_command(CLI::App& app) {
   cmd->add_option("--prior-model", args->prior_model, "The prior task's network (.bif or .json)")->required();
   cmd->add_option("--target-model", args->target_model, "The target task's network or structure (.bif or .json)")
       ->required();
-  cmd->add_option("--top", args->top, "How many candidates to list")->capture_default_str();
+  cmd->add_option("--top", args->top, "How many candidates to list")->check(whole_number(1, 1000000))->capture_default_str();
   cmd->callback([args] { run_correspond(*args); });
 }
 

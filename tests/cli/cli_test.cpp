@@ -354,5 +354,41 @@ TEST_F(cli_test, learn_structure_errors) {
   expect_failure("learn-structure --data " + path("absent.csv").string() + " --out " + out.string(), "cannot open", out);
 }
 
+TEST_F(cli_test, counts_must_be_whole_numbers_in_range) {
+  for (const std::string& arguments : {"simulate --task 1-stack --rows -5 --out " + path("s.csv").string(),
+                                      "simulate --task 1-stack --rows 18446744073709551615 --out " + path("s.csv").string(),
+                                      "experiment --scenario 2-stack-reality --reps 0 --out " + path("r").string(),
+                                      "discretize --in x.csv --bins 0 --out " + path("o.csv").string()}) {
+    const auto r = run(arguments);
+    EXPECT_EQ(r.code, 2) << arguments;
+    EXPECT_THAT(r.err, HasSubstr("expected a whole number from")) << arguments;
+  }
+  EXPECT_FALSE(fs::exists(path("r")));
+}
+
+TEST_F(cli_test, experiment_output_folder_is_checked_first) {
+  const auto a_file = file("a.csv", "x\n1\n");
+  expect_failure("experiment --scenario 2-stack-reality --reps 1 --out " + a_file.string(), "is a file, not a folder");
+  expect_failure("experiment --scenario 2-stack-reality --reps 1 --out " + path("missing/results").string(),
+                 "the folder '" + path("missing").string() + "' does not exist", path("missing"));
+  expect_failure("experiment --scenario bogus --out " + path("r").string(), "unknown scenario 'bogus'", path("r"));
+}
+
+TEST_F(cli_test, a_number_too_large_for_a_double_in_json_is_a_parse_error) {
+  const auto model = file("m.json", R"({"format": "pgm-model", "version": 1,
+  "variables": [{"name": "a", "states": ["0", "1"]}], "edges": [],
+  "tables": [{"variable": "a", "parents": [], "values": [[1e999, 0.5]]}]})");
+  expect_failure("show " + model.string(), "m.json:3:59: number out of range: '1e999'");
+}
+
+TEST_F(cli_test, discretize_checks_every_output_before_writing_any) {
+  const auto data = file("raw.csv", "x,y\n1.5,0\n2.5,1\n3.5,0\n4.5,1\n");
+  expect_failure("discretize --in " + data.string() + " --columns x --bins 2 --out " + path("o.csv").string() +
+                     " --edges-out " + path("missing/e.json").string(),
+                 "the directory '" + path("missing").string() + "' does not exist", path("o.csv"));
+  expect_failure("discretize --in " + data.string() + " --columns x --bins 2 --out " + data.string(), "is the input file");
+  EXPECT_EQ(slurp(data), "x,y\n1.5,0\n2.5,1\n3.5,0\n4.5,1\n");
+}
+
 }  // namespace
 }  // namespace pgm

@@ -36,14 +36,24 @@ namespace pgm::detail {
 /// Calls `write` with a stream to a temporary file and renames it to `path` on success.
 /// On any failure — including an exception from `write` — the temporary file is removed and
 /// the previous content of `path`, if any, is left untouched.
-inline void write_file_atomically(const std::filesystem::path& path,
-                                  const std::function<void(std::ostream&)>& write) {
+/// Throws io_error unless a file could be written at `path`: its folder exists and `path` is
+/// not a folder. Commands with several outputs check them all before writing any.
+inline void check_output_path(const std::filesystem::path& path) {
   const auto directory = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   std::error_code ec;
   if (!std::filesystem::is_directory(directory, ec)) {
     throw io_error("cannot write '" + path.string() + "': the directory '" + directory.string() +
                    "' does not exist");
   }
+  if (std::filesystem::is_directory(path, ec)) {
+    throw io_error("cannot write '" + path.string() + "': it is a folder");
+  }
+}
+
+inline void write_file_atomically(const std::filesystem::path& path,
+                                  const std::function<void(std::ostream&)>& write) {
+  check_output_path(path);
+  std::error_code ec;
   std::random_device entropy;
   const auto temporary = std::filesystem::path(
       path.string() + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(entropy()));

@@ -53,6 +53,7 @@ class scenario_reader : public json_reader {
     const auto& prior = member(doc, "", "prior");
     s.prior_task = string(member(prior, "/prior", "task"), "/prior/task");
     s.prior_rows = count(member(prior, "/prior", "rows"), "/prior/rows");
+    if (s.prior_rows == 0) fail("/prior/rows", "the prior needs at least one row");
     s.prior_node = string(member(prior, "/prior", "node"), "/prior/node");
     const auto& target = member(doc, "", "target");
     s.target_node = string(member(target, "/target", "node"), "/target/node");

@@ -129,6 +129,23 @@ class json_reader {
       std::string what = e.what();
       if (const auto colon = what.rfind(": "); colon != std::string::npos) what = what.substr(colon + 2);
       throw parse_error(source_, line, column, "invalid JSON: " + what);
+    } catch (const nlohmann::json::out_of_range& e) {
+      // A number too large for a double ("1e999"): nlohmann gives no position, so find the
+      // number it names in the text.
+      const std::string what = e.what();
+      const auto open = what.find('\''), close = what.rfind('\'');
+      const auto number = open != std::string::npos && close > open ? what.substr(open + 1, close - open - 1) : std::string();
+      const auto at = number.empty() ? std::string_view::npos : text.find(number);
+      std::size_t line = 1, column = 1;
+      for (std::size_t i = 0; at != std::string_view::npos && i < at; ++i) {
+        if (text[i] == '\n') {
+          ++line;
+          column = 1;
+        } else {
+          ++column;
+        }
+      }
+      throw parse_error(source_, line, column, "number out of range: '" + number + "'");
     }
   }
 
