@@ -1,6 +1,7 @@
 #include "cli/common.hpp"
 
 #include <charconv>
+#include <cmath>
 
 #include <iostream>
 
@@ -91,6 +92,16 @@ CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
         return {};
       },
       "INT in " + range);
+}
+
+CLI::Validator non_negative_number() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        const auto value = detail::parse_double(text);
+        if (!value || !std::isfinite(*value) || *value < 0) return "expected a finite number ≥ 0, got '" + text + "'";
+        return {};
+      },
+      "NUMBER ≥ 0");
 }
 
 }  // namespace pgm::cli

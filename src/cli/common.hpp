@@ -42,6 +42,9 @@ inline const std::vector<std::string> network_extensions{".bif", ".json"};
 /// Accepts only a whole number in [lo, hi], so that "-5" is an error rather than 2^64 - 5.
 CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi);
 
+/// Accepts only a finite number ≥ 0.
+CLI::Validator non_negative_number();
+
 /// Prints "pgm: note: …" to stderr, for what the user should know but need not act on.
 void note(const std::string& text);
 

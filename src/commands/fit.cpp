@@ -155,9 +155,9 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--prior", args->prior, "Prior of the Bayesian estimator: dirichlet, k2 or bdeu (default)")
       ->check(CLI::IsMember({"dirichlet", "k2", "bdeu"}));
   cmd->add_option("--alpha", args->alpha, "Pseudo-count per cell of the dirichlet prior (default 1)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_option("--ess", args->ess, "Equivalent sample size of the bdeu prior (default 1)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(non_negative_number());
   cmd->add_option("--empty", args->empty,
                   "A parent configuration with no data: uniform (1/J) or fail")
       ->check(CLI::IsMember({"uniform", "fail"}))

@@ -125,6 +125,7 @@ void run_correspond(const correspond_arguments& args) {
   const auto prior = view_of(args.prior_model, prior_document, prior_network);
   const auto target = view_of(args.target_model, target_document, target_network);
   const auto ranking = rank_correspondences(target, prior);
+  const auto proposal = propose_correspondence(target, prior);  // fails before anything is printed
   std::cout << "related-variable candidates (target ~ prior), best first:\n";
   for (std::size_t i = 0; i < std::min(args.top, ranking.size()); ++i) {
     const auto& c = ranking[i];
@@ -134,7 +135,6 @@ void run_correspond(const correspond_arguments& args) {
     std::cout << "  " << score.str() << "  " << c.target << " ~ " << c.prior << "  (" << detail::join(c.reasons, "; ")
               << ")\n";
   }
-  const auto proposal = propose_correspondence(target, prior);
   std::cout << "proposal: --map \"" << to_string(proposal) << "\"\n";
 }
 
