@@ -58,4 +58,18 @@ assignment read_assignment(const std::string& text, const bayesian_network& netw
   return planned;
 }
 
+void add_decision_options(CLI::App& command, decision_arguments& args) {
+  command.add_option("--model", args.model, "The fitted network, .bif or .json")->required();
+  command
+      .add_option("--assign", args.assign,
+                  "Planned values, e.g. \"xOff1=0.3,yOff1=-1.2,colour=Red\": numbers are binned with an interval "
+                  "variable's saved edges; '@2' names the state labelled 2")
+      ->required();
+  command.add_option("--success", args.success,
+                     "The success event, e.g. onTop2=1 (default: a JSON model's metadata, else the unique outcome)");
+  command.add_flag("--marginalize", args.marginalize,
+                   "Sum out unassigned, non-controllable parents of the success variable (exact inference) instead "
+                   "of failing");
+}
+
 }  // namespace pgm::cli

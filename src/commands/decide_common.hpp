@@ -4,6 +4,8 @@
 
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/decide/assignment.hpp"
 #include "pgm/decide/predict.hpp"
@@ -15,6 +17,18 @@ struct decision_model {
   bayesian_network network;
   success_event success;
 };
+
+/// The options `pgm predict` and `pgm prevent` share: the model, the plan, the success event and
+/// what to do with unassigned parents.
+struct decision_arguments {
+  std::string model;
+  std::string assign;
+  std::string success;
+  bool marginalize = false;
+};
+
+/// Adds --model, --assign, --success and --marginalize to `command`.
+void add_decision_options(CLI::App& command, decision_arguments& args);
 
 /// Reads the model and settles the success event: `success_text` ("onTop2=1") if given, else
 /// a JSON model's "metadata": {"success": "onTop2=1"} if present, else default_success_event.

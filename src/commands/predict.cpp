@@ -14,16 +14,13 @@ namespace pgm::cli {
 namespace {
 
 struct predict_arguments {
-  std::string model;
-  std::string assign;
-  std::string success;
-  bool marginalize = false;
+  decision_arguments decision;
 };
 
 void run_predict(const predict_arguments& args) {
-  const auto model = read_decision_model(args.model, args.success);
-  const auto planned = read_assignment(args.assign, model.network);
-  const auto p = predict_success(model.network, model.success, planned, {.marginalize_missing = args.marginalize});
+  const auto model = read_decision_model(args.decision.model, args.decision.success);
+  const auto planned = read_assignment(args.decision.assign, model.network);
+  const auto p = predict_success(model.network, model.success, planned, {.marginalize_missing = args.decision.marginalize});
   std::cout << "success: " << model.success.variable << "=" << model.success.state << '\n';
   for (const auto& [name, value] : planned) {
     const auto& v = model.network.at(name);
@@ -47,14 +44,7 @@ void add_predict_command(CLI::App& app) {
       "Predict the probability that a planned action succeeds.\n"
       "The success event is --success, else a JSON model's \"metadata\": {\"success\": \"onTop2=1\"}, else the "
       "unique variable with parents, no children and a state \"1\".");
-  cmd->add_option("--model", args->model, "The fitted network, .bif or .json")->required();
-  cmd->add_option("--assign", args->assign,
-                  "Planned values, e.g. \"xOff1=0.3,yOff1=-1.2,colour=Red\": numbers are binned with an interval "
-                  "variable's saved edges; '@2' names the state labelled 2")
-      ->required();
-  cmd->add_option("--success", args->success, "The success event, e.g. onTop2=1");
-  cmd->add_flag("--marginalize", args->marginalize,
-                "Sum out unassigned parents of the success variable (exact inference) instead of failing");
+  add_decision_options(*cmd, args->decision);
   cmd->callback([args] { run_predict(*args); });
 }
 

@@ -16,19 +16,16 @@ namespace pgm::cli {
 namespace {
 
 struct prevent_arguments {
-  std::string model;
-  std::string assign;
-  std::string success;
+  decision_arguments decision;
   std::string controllable;
   double epsilon = 0.8;
   std::string distance = "steps";
-  bool marginalize = false;
 };
 
 void run_prevent(const prevent_arguments& args) {
-  const auto model = read_decision_model(args.model, args.success);
+  const auto model = read_decision_model(args.decision.model, args.decision.success);
   const auto& network = model.network;
-  const auto planned = read_assignment(args.assign, network);
+  const auto planned = read_assignment(args.decision.assign, network);
   std::vector<std::string> controllable;
   if (args.controllable.empty()) {
     for (const auto& p : network.table(model.success.variable).parents()) controllable.push_back(p.name());
@@ -41,7 +38,7 @@ void run_prevent(const prevent_arguments& args) {
   options.epsilon = args.epsilon;
   options.metric = args.distance == "units" ? prevention_options::distance::units : prevention_options::distance::steps;
   const auto plan = plan_prevention(network, model.success, planned, controllable, options,
-                                    {.marginalize_missing = args.marginalize});
+                                    {.marginalize_missing = args.decision.marginalize});
   const auto& why = plan.why;
   std::cout << "success: " << why.success_variable << "=" << why.success_state << '\n';
   std::cout << "predicted success probability: " << detail::format_short(why.predicted) << '\n';
@@ -96,12 +93,7 @@ void add_prevent_command(CLI::App& app) {
       "Predict success; below epsilon, explain the failure and suggest the nearest values of the controllable "
       "variables predicted to succeed (breadth-first in bin steps; ties to the higher prediction; if none "
       "exceeds epsilon, the best).");
-  cmd->add_option("--model", args->model, "The fitted network, .bif or .json")->required();
-  cmd->add_option("--assign", args->assign,
-                  "Planned values, e.g. \"xOff1=0.3,yOff1=-1.2\": numbers are binned with an interval variable's "
-                  "saved edges; '@2' names the state labelled 2")
-      ->required();
-  cmd->add_option("--success", args->success, "The success event, e.g. onTop2=1 (default: as for predict)");
+  add_decision_options(*cmd, args->decision);
   cmd->add_option("--controllable", args->controllable,
                   "Variables the robot may change, e.g. xOff1,yOff1 (default: every parent of the success variable)");
   cmd->add_option("--epsilon", args->epsilon, "Success threshold")->check(CLI::Range(0.0, 1.0))->capture_default_str();
@@ -109,8 +101,6 @@ void add_prevent_command(CLI::App& app) {
                   "Nearness: steps (bins moved) or units (Euclidean distance between interval midpoints)")
       ->check(CLI::IsMember({"steps", "units"}))
       ->capture_default_str();
-  cmd->add_flag("--marginalize", args->marginalize,
-                "Sum out unassigned, non-controllable parents of the success variable instead of failing");
   cmd->callback([args] { run_prevent(*args); });
 }
 

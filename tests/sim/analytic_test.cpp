@@ -104,12 +104,8 @@ TEST(analytic_test, unknown_backend_is_an_error) {
   simulate_options o;
   o.backend = "unity";
   o.rows = 1;
-  try {
-    (void)simulate(shipped("1-stack"), o);
-    FAIL();
-  } catch (const data_error& e) {
-    EXPECT_THAT(e.what(), HasSubstr("unknown simulator back-end 'unity' (available: analytic"));
-  }
+  EXPECT_THAT([&] { (void)simulate(shipped("1-stack"), o); },
+              ::testing::ThrowsMessage<data_error>(HasSubstr("unknown simulator back-end 'unity' (available: analytic")));
 }
 
 // Monte-Carlo rates per Table I box agree with the integrated probability within 4.5

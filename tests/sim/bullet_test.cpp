@@ -141,12 +141,8 @@ TEST(bullet_test, reports_that_it_was_not_built) {
   simulate_options o;
   o.backend = "bullet";
   o.rows = 1;
-  try {
-    (void)simulate(shipped("1-stack"), o);
-    FAIL();
-  } catch (const data_error& e) {
-    EXPECT_THAT(e.what(), HasSubstr("the bullet back-end was not built"));
-  }
+  EXPECT_THAT([&] { (void)simulate(shipped("1-stack"), o); },
+              ::testing::ThrowsMessage<data_error>(HasSubstr("the bullet back-end was not built")));
 }
 
 #endif
