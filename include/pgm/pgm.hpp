@@ -53,5 +53,8 @@
 #include "pgm/eval/scenario.hpp"
 #include "pgm/sim/analytic.hpp"
 #include "pgm/sim/analytic_probability.hpp"
+#include "pgm/sim/registry.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task.hpp"
+#include "pgm/sim/task_file.hpp"
+#include "pgm/sim/task_lookup.hpp"

@@ -16,7 +16,7 @@
 #include "pgm/detail/file.hpp"
 #include "pgm/eval/experiment.hpp"
 #include "pgm/sim/simulator.hpp"
-#include "pgm/sim/task.hpp"
+#include "pgm/sim/task_lookup.hpp"
 
 namespace pgm::cli {
 namespace {
