@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Everything pgm offers in one include. Include the module headers directly for faster
-/// builds; docs/api.md lists which header gives what.
+/// builds; docs/api.md lists which header gives what. The optional adapters
+/// (pgm/adapters/eigen.hpp) are not included: they need their library on the include path.
 
 #include "pgm/core/assert.hpp"
 #include "pgm/core/bayesian_network.hpp"
