@@ -8,31 +8,8 @@
 #include <map>
 #include <pgm/eval/experiment.hpp>
 #include <pgm/eval/scenario.hpp>
-#include <pgm/sim/simulator.hpp>
+#include <pgm/eval/simulated_source.hpp>
 #include <pgm/sim/task_lookup.hpp>
-
-namespace {
-
-// Data and facts of a task, from its file and the analytic simulator.
-pgm::task_source simulated(std::vector<std::filesystem::path> directories) {
-  return {[directories](const std::string& task, std::size_t rows, std::uint64_t seed) {
-            return pgm::sim::simulate(pgm::sim::load_task(task, directories), {.rows = rows, .seed = seed});
-          },
-          [directories](const std::string& name, const std::string& node) {
-            const auto task = pgm::sim::load_task(name, directories);
-            pgm::task_facts facts;
-            for (const auto& edge : task.structure) {
-              if (edge.to == node) facts.parents.push_back(edge.from);
-            }
-            for (const auto& v : task.variables) {
-              facts.tags.emplace(v.name, v.tags);
-              if (v.controllable) facts.controllable.insert(v.name);
-            }
-            return facts;
-          }};
-}
-
-}  // namespace
 
 int main() {
   try {
@@ -41,7 +18,8 @@ int main() {
     auto directories = pgm::sim::default_task_directories();  // $PGM_TASKS_DIR
     directories.insert(directories.begin(), here / "tasks");
 
-    const auto points = pgm::run_experiment(scenario, simulated(directories), {.seed = 1, .automatic_lines = false});
+    const auto points = pgm::run_experiment(scenario, pgm::simulated_source({.task_folders = directories}),
+                                            {.seed = 1, .automatic_lines = false});
     // Mean-Difference to the ground truth by the number of target rows |D|: the transferred
     // prior helps most where the target task has few trials.
     std::cout << scenario.title << ", Mean-Difference over " << scenario.repetitions << " repetitions\n";

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,6 +41,9 @@ struct scenario {
   std::size_t subsets = 20;
   std::size_t repetitions = 20;
   double epsilon = 0.8;
+  /// Where `--scenario all` runs it (pgm::scenario_catalog): ascending; scenarios without one
+  /// come after those with one. Ties and missing orders go by file name.
+  std::optional<std::size_t> order;
   std::filesystem::path source;
 };
 
@@ -83,6 +87,7 @@ class scenario_reader : public json_reader {
     if (const auto* v = optional_member(doc, "subsets")) s.subsets = count(*v, "/subsets");
     if (const auto* v = optional_member(doc, "repetitions")) s.repetitions = count(*v, "/repetitions");
     if (const auto* v = optional_member(doc, "epsilon")) s.epsilon = number(*v, "/epsilon");
+    if (const auto* v = optional_member(doc, "order")) s.order = count(*v, "/order");
     if (s.bins < 2) fail("/bins", "needs at least 2 bins");
     if (s.subsets == 0 || s.repetitions == 0) fail("/subsets", "subsets and repetitions must be positive");
     if (!(s.epsilon > 0 && s.epsilon < 1)) fail("/epsilon", "must lie strictly between 0 and 1");
