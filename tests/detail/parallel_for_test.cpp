@@ -107,8 +107,12 @@ TEST(parallel_for_test, a_failure_is_rethrown_and_stops_handing_out_work) {
           failing = true;
           throw std::runtime_error("item 10 failed");
         }
-        // Later items wait until item 10 is failing, so they cannot all finish before it.
-        while (i > 10 && !failing) std::this_thread::yield();
+        // Later items wait until item 10 is failing, so they cannot all finish before it, and
+        // then take a while, so that the others cannot run them all while it is being recorded.
+        if (i > 10) {
+          while (!failing) std::this_thread::yield();
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        }
         ++ran;
       }
     };

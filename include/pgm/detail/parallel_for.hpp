@@ -72,8 +72,8 @@ struct parallel_options {
   unsigned threads = 0;
   /// Consecutive items handed out at a time (at least 1).
   std::size_t chunk = 1;
-  /// Fewer threads are used than would get fewer items than this each: a thread's start-up must
-  /// pay for itself.
+  /// Each thread gets at least this many items, so small jobs use fewer threads: starting one
+  /// must pay for itself.
   std::size_t min_items_per_thread = 1;
   process_share share;
   /// Called with the number of this process's items finished so far: one call at a time (from

@@ -130,8 +130,9 @@ namespace detail {
 
 /// Counts the table (x | given..., y) into `counts` (resized and zeroed) over all rows.
 /// The layout is the one test_independence reads: x fastest, then y, then the strata of
-/// `given` (its last column fastest). With `threads` > 1 the rows are counted on that many
-/// threads, each into a private table, summed: the counts are the same.
+/// `given` (its last column fastest). With `threads` > 1 (0: every hardware thread) the rows
+/// are counted on up to that many threads, each into a private table, summed: the counts are
+/// the same.
 /// Throws model_error if the table has 2^32 cells or more.
 inline void count_ci_table(const discrete_column& x, const discrete_column& y,
                            std::span<const discrete_column* const> given,

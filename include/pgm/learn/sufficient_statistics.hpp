@@ -151,7 +151,7 @@ inline void count_rows(std::span<const code_vector* const> columns, std::span<co
   }
 }
 
-/// Adds the counts of rows [begin, end) into `counts` on up to `threads` threads (0: all),
+/// Adds the counts of rows [begin, end) into `counts` on up to `threads` threads (0: every one),
 /// each with at least `min_rows_per_thread` rows: every thread counts its chunks into a private
 /// table and the tables are summed, which gives the same counts for any split.
 inline void count_rows_parallel(std::span<const code_vector* const> columns, std::span<const std::uint32_t> strides,
