@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Everything pgm offers in one include. Include the module headers directly for faster
-/// builds; docs/api.md lists which header gives what.
+/// builds; docs/api.md lists which header gives what. The optional adapters
+/// (pgm/adapters/eigen.hpp) are not included: they need their library on the include path.
 
 #include "pgm/core/assert.hpp"
 #include "pgm/core/bayesian_network.hpp"
@@ -62,5 +63,8 @@
 #include "pgm/eval/simulated_source.hpp"
 #include "pgm/sim/analytic.hpp"
 #include "pgm/sim/analytic_probability.hpp"
+#include "pgm/sim/registry.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task.hpp"
+#include "pgm/sim/task_file.hpp"
+#include "pgm/sim/task_lookup.hpp"

@@ -12,7 +12,7 @@
 #include "pgm/eval/run_scenarios.hpp"
 #include "pgm/eval/scenario_catalog.hpp"
 #include "pgm/eval/simulated_source.hpp"
-#include "pgm/sim/task.hpp"
+#include "pgm/sim/task_lookup.hpp"
 
 namespace pgm::cli {
 namespace {

@@ -5,13 +5,18 @@
 /// and correspondences, the strategies and weights, and the protocol's repetitions and subsets.
 /// Files live in `tasks/scenarios/<name>.json`; tasks/README.md documents the format.
 
+#include <cmath>
+#include <cstddef>
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "pgm/detail/file.hpp"
-#include "pgm/io/json_model.hpp"
+#include "pgm/detail/json_reader.hpp"
 
 namespace pgm {
 

@@ -17,6 +17,7 @@
 #include "pgm/eval/experiment.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task.hpp"
+#include "pgm/sim/task_lookup.hpp"
 
 namespace pgm {
 

@@ -13,7 +13,7 @@
 ///   circular opening is integrated in polar form so the integrand stays smooth.
 ///
 /// Against a 16× finer integration the result differs by less than 1e-4 on the 2-Stack
-/// and SphereDropping boxes of Table I (tests/sim/sim_test.cpp checks 1e-3), and all 625
+/// and SphereDropping boxes of Table I (tests/sim/analytic_test.cpp checks 1e-3), and all 625
 /// onTop2 boxes of 2-Stack take about 0.45 s on one core.
 
 #include <algorithm>

@@ -14,6 +14,7 @@
 
 #include <btBulletDynamicsCommon.h>
 
+#include "pgm/sim/registry.hpp"
 #include "pgm/sim/run.hpp"
 
 namespace pgm::sim {
@@ -283,5 +284,10 @@ static_assert(Simulator<bullet_simulator>);
 dataset simulate_bullet(const task_definition& task, const simulate_options& options) {
   return run_experiments<bullet_simulator>(task, options, 8);
 }
+
+namespace {
+// Offers "bullet" to simulate() and `pgm simulate --backend bullet` when this object is linked.
+const register_backend registered("bullet", &simulate_bullet);
+}  // namespace
 
 }  // namespace pgm::sim

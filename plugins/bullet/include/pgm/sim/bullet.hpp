@@ -1,8 +1,9 @@
 #pragma once
 /// \file
-/// The Bullet back-end (library pgm_bullet): rigid-body simulation of the task, one
-/// btDiscreteDynamicsWorld per experiment, experiments spread over threads. Linking
-/// pgm_bullet defines PGM_WITH_BULLET, which makes pgm::sim::simulate() offer "bullet".
+/// The Bullet back-end (plugin pgm_bullet): rigid-body simulation of the task, one
+/// btDiscreteDynamicsWorld per experiment, experiments spread over threads. Linking the
+/// pgm_bullet object library registers it as "bullet" for pgm::sim::simulate(); this header
+/// is only for calling it directly.
 
 #include "pgm/data/dataset.hpp"
 #include "pgm/sim/simulator_concept.hpp"
