@@ -188,19 +188,18 @@ chunk_part parse_chunk(std::string_view text, char delimiter, std::size_t width,
     if (plans[c].mode != column_mode::known) continue;
     for (const auto& state : plans[c].known->states()) part.columns[c].labels.add(state, {});
   }
-  detail::csv_record_reader reader(text, delimiter, true, {0, 0, 0});
   std::vector<detail::csv_field> fields;
   try {
-    while (reader.next(fields) == detail::csv_record::complete) {
-      if (fields.size() != width) detail::fail_width(fields, width);
-      for (std::size_t c = 0; c < plans.size(); ++c)
-        add_value(plans[c], part.columns[c], fields[plans[c].position], chunk);
+    part.lines = detail::for_each_record(text, delimiter, fields, [&](const std::vector<detail::csv_field>& record) {
+      if (record.size() != width) detail::fail_width(record, width);
+      for (std::size_t c = 0; c < plans.size(); ++c) {
+        add_value(plans[c], part.columns[c], record[plans[c].position], chunk);
+      }
       ++part.rows;
-    }
+    });
   } catch (const detail::csv_failure& failure) {
     throw detail::chunk_failure{chunk, failure};
   }
-  part.lines = reader.cursor().line;
   return part;
 }
 

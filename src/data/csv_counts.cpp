@@ -151,10 +151,12 @@ void fit_layout(const counter_impl& plan, partial_impl& partial, family_counts& 
 struct count_worker {
   explicit count_worker(const counter_impl& plan) : partial(empty_partial(plan)) {
     for (std::size_t c = 0; c < plan.columns.size(); ++c) block.emplace_back(std::vector<std::uint32_t>(block_rows));
+    for (auto& column : block) ids.push_back(std::get<std::vector<std::uint32_t>>(column).data());
   }
 
   partial_impl partial;
-  std::vector<code_vector> block;  // per column: the provisional ids of the rows not counted yet
+  std::vector<code_vector> block;   // per column: the provisional ids of the rows not counted yet
+  std::vector<std::uint32_t*> ids;  // per column: where `block` holds them (a move keeps the buffers)
   std::size_t filled = 0;
   std::vector<detail::csv_field> fields;
 };
@@ -203,22 +205,20 @@ void count_block(const counter_impl& plan, count_worker& worker) {
 /// Counts the records of `text` (chunk `chunk` of a window, whole records); returns the line
 /// ends it consumed.
 std::size_t count_piece(const counter_impl& plan, count_worker& worker, std::string_view text, std::size_t chunk) {
-  detail::csv_record_reader reader(text, plan.delimiter, true, {0, 0, 0});
-  auto& fields = worker.fields;
   try {
-    while (reader.next(fields) == detail::csv_record::complete) {
-      if (fields.size() != plan.width) detail::fail_width(fields, plan.width);
-      for (std::size_t c = 0; c < plan.columns.size(); ++c) {
-        const auto id = provisional_id(plan.columns[c], worker.partial, c, fields[plan.columns[c].position], chunk);
-        std::get<std::vector<std::uint32_t>>(worker.block[c])[worker.filled] = id;
-      }
-      ++worker.partial.rows;
-      if (++worker.filled == block_rows) count_block(plan, worker);
-    }
+    return detail::for_each_record(
+        text, plan.delimiter, worker.fields, [&](const std::vector<detail::csv_field>& fields) {
+          if (fields.size() != plan.width) detail::fail_width(fields, plan.width);
+          for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+            worker.ids[c][worker.filled] =
+                provisional_id(plan.columns[c], worker.partial, c, fields[plan.columns[c].position], chunk);
+          }
+          ++worker.partial.rows;
+          if (++worker.filled == block_rows) count_block(plan, worker);
+        });
   } catch (const detail::csv_failure& failure) {
     throw detail::chunk_failure{chunk, failure};
   }
-  return reader.cursor().line;
 }
 
 /// Adds `other` into `into`. Label places in `other` are relative to the first lines of their

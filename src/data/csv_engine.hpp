@@ -180,6 +180,90 @@ class csv_record_reader {
   std::size_t used_ = 0;
 };
 
+/// Reads the records of text that holds no quote, all of whose records are whole (the final
+/// text of csv_record_reader): the same records, fields, lines and columns as that reader, in
+/// one tighter scan. The fast path of every chunk without a quote.
+class csv_plain_reader {
+ public:
+  csv_plain_reader(std::string_view text, char delimiter) : text_(text), delimiter_(delimiter) {
+    for (auto& e : ends_) e = false;
+    ends_[static_cast<unsigned char>(delimiter)] = true;
+    ends_[static_cast<unsigned char>('\n')] = true;
+    ends_[static_cast<unsigned char>('\r')] = true;
+  }
+
+  /// Line ends consumed so far.
+  [[nodiscard]] std::size_t lines() const noexcept { return line_; }
+
+  /// Reads the next non-blank record into `fields`; false at the end of the text.
+  bool next(std::vector<csv_field>& fields) {
+    fields.clear();
+    const std::size_t n = text_.size();
+    const char* const text = text_.data();
+    while (true) {  // blank lines: only blanks and CRs before a line feed
+      std::size_t p = pos_;
+      while (p < n && (text[p] == ' ' || text[p] == '\t' || text[p] == '\r')) ++p;
+      if (p >= n) {
+        pos_ = n;
+        return false;
+      }
+      if (text[p] != '\n') break;
+      pos_ = p + 1;
+      ++line_;
+      line_start_ = pos_;
+    }
+    while (true) {
+      const std::size_t start = pos_;
+      std::size_t p = start;
+      while (p < n && !ends_[static_cast<unsigned char>(text[p])]) ++p;
+      std::size_t first = start;
+      std::size_t last = p;
+      while (first < last && (text[first] == ' ' || text[first] == '\t')) ++first;
+      while (last > first && (text[last - 1] == ' ' || text[last - 1] == '\t')) --last;
+      fields.push_back({text_.substr(first, last - first), line_, start - line_start_ + 1});
+      if (p >= n) {
+        pos_ = n;
+        return true;
+      }
+      const char c = text[p++];
+      if (c == delimiter_) {
+        pos_ = p;
+        continue;
+      }
+      if (c == '\r' && p < n && text[p] == '\n') ++p;  // CRLF; else LF or a lone CR
+      pos_ = p;
+      ++line_;
+      line_start_ = p;
+      return true;
+    }
+  }
+
+ private:
+  std::string_view text_;
+  char delimiter_;
+  std::size_t pos_ = 0;
+  std::size_t line_ = 0;
+  std::size_t line_start_ = 0;
+  bool ends_[256];
+};
+
+/// Calls `on_record(fields)` for every non-blank record of `text`, which holds whole records
+/// only, and returns the line ends consumed; lines and columns in `fields` count from the start
+/// of `text` (line 0, column 1). Text without a quote takes csv_plain_reader. Throws
+/// csv_failure for bad quoting, and whatever `on_record` throws.
+template <class OnRecord>
+std::size_t for_each_record(std::string_view text, char delimiter, std::vector<csv_field>& fields,
+                            OnRecord&& on_record) {
+  if (text.find('"') == std::string_view::npos) {
+    csv_plain_reader reader(text, delimiter);
+    while (reader.next(fields)) on_record(fields);
+    return reader.lines();
+  }
+  csv_record_reader reader(text, delimiter, true, {0, 0, 0});
+  while (reader.next(fields) == csv_record::complete) on_record(fields);
+  return reader.cursor().line;
+}
+
 /// Skips a UTF-8 byte order mark at the start of the input.
 [[nodiscard]] inline std::size_t byte_order_mark(std::string_view text) {
   return text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
