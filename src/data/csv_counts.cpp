@@ -174,8 +174,14 @@ void count_block(const counter_impl& plan, count_worker& worker) {
   worker.filled = 0;
 }
 
-[[nodiscard]] std::uint32_t provisional_id(const counted_column& column, partial_impl& partial, std::size_t c,
-                                           const detail::csv_field& field, std::size_t chunk) {
+/// The id of a label seen before (the common case, inlined into the record loop), or none.
+[[nodiscard]] inline std::uint32_t known_label_id(const counted_column& column, const partial_impl& partial,
+                                                  std::size_t c, const detail::csv_field& field) {
+  return column.mode == count_mode::labels ? partial.labels[c].find(field.text) : detail::label_dictionary::none;
+}
+
+std::uint32_t provisional_id(const counted_column& column, partial_impl& partial, std::size_t c,
+                             const detail::csv_field& field, std::size_t chunk) {
   detail::check_present(field, column.name);
   switch (column.mode) {
     case count_mode::labels: {
@@ -206,16 +212,20 @@ void count_block(const counter_impl& plan, count_worker& worker) {
 /// ends it consumed.
 std::size_t count_piece(const counter_impl& plan, count_worker& worker, std::string_view text, std::size_t chunk) {
   try {
-    return detail::for_each_record(
-        text, plan.delimiter, worker.fields, [&](const std::vector<detail::csv_field>& fields) {
-          if (fields.size() != plan.width) detail::fail_width(fields, plan.width);
-          for (std::size_t c = 0; c < plan.columns.size(); ++c) {
-            worker.ids[c][worker.filled] =
-                provisional_id(plan.columns[c], worker.partial, c, fields[plan.columns[c].position], chunk);
-          }
-          ++worker.partial.rows;
-          if (++worker.filled == block_rows) count_block(plan, worker);
-        });
+    return detail::for_each_record(text, plan.delimiter, worker.fields,
+                                   [&](const std::vector<detail::csv_field>& fields) {
+                                     if (fields.size() != plan.width) detail::fail_width(fields, plan.width);
+                                     for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+                                       const auto& column = plan.columns[c];
+                                       const auto& field = fields[column.position];
+                                       auto id = known_label_id(column, worker.partial, c, field);
+                                       if (id == detail::label_dictionary::none)
+                                         id = provisional_id(column, worker.partial, c, field, chunk);
+                                       worker.ids[c][worker.filled] = id;
+                                     }
+                                     ++worker.partial.rows;
+                                     if (++worker.filled == block_rows) count_block(plan, worker);
+                                   });
   } catch (const detail::csv_failure& failure) {
     throw detail::chunk_failure{chunk, failure};
   }

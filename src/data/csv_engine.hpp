@@ -376,10 +376,12 @@ class label_dictionary {
   };
 
   [[nodiscard]] std::uint32_t find(std::string_view text) const {
-    const int small = small_whole_number(text);
-    if (small >= 0) return dense_.empty() ? none : dense_[static_cast<std::size_t>(small)];
-    const auto it = others_.find(text);
-    return it == others_.end() ? none : it->second;
+    // A one-digit label (the common case of codes) first, small enough to be inlined.
+    if (text.size() == 1 && !dense_.empty()) {
+      const unsigned digit = static_cast<unsigned char>(text[0]) - static_cast<unsigned>('0');
+      if (digit <= 9) return dense_[digit];
+    }
+    return find_any(text);
   }
 
   /// Adds a label that is not there yet.
@@ -401,6 +403,13 @@ class label_dictionary {
   [[nodiscard]] std::vector<entry>& entries() noexcept { return entries_; }
 
  private:
+  [[nodiscard]] std::uint32_t find_any(std::string_view text) const {
+    const int small = small_whole_number(text);
+    if (small >= 0) return dense_.empty() ? none : dense_[static_cast<std::size_t>(small)];
+    const auto it = others_.find(text);
+    return it == others_.end() ? none : it->second;
+  }
+
   std::vector<std::uint32_t> dense_;  // by value, for small_whole_number labels
   std::unordered_map<std::string, std::uint32_t, string_hash, std::equal_to<>> others_;
   std::vector<entry> entries_;
