@@ -29,6 +29,53 @@ void require_extension(const std::filesystem::path& path, const std::vector<std:
   throw io_error("'" + path.string() + "': expected a file ending in " + detail::join(extensions, " or "));
 }
 
+namespace {
+
+// Outside values go to the outer bins by design; many of them suggest the wrong edges, or data
+// that was binned already (then --intervals was meant).
+void note_outside(const std::string& name, std::size_t outside, std::size_t rows, const variable& intervals) {
+  if (outside == 0) return;
+  const auto& edges = intervals.edges();
+  note(std::to_string(outside) + " of " + std::to_string(rows) + " values of '" + name +
+       "' lie outside the edges' range [" + detail::format_short(edges.front()) + ", " +
+       detail::format_short(edges.back()) + "] and count in the outer bins");
+}
+
+// A column with nearly as many states as rows is almost surely a raw quantity.
+void note_many_states(const variable& v, std::size_t rows) {
+  const auto states = v.cardinality();
+  if (states > 50 && 2 * states > rows) {
+    note("'" + v.name() + "' has " + std::to_string(states) + " distinct values in " + std::to_string(rows) +
+         " rows: if it is a continuous quantity, bin it first (pgm discretize, or --discretization)");
+  }
+}
+
+}  // namespace
+
+csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>& columns, const data_plan& plan,
+                               std::vector<csv_family> families, unsigned threads) {
+  csv_count_request request;
+  request.columns = columns;
+  request.families = std::move(families);
+  request.threads = threads;
+  if (plan.known) {
+    for (const auto& v : *plan.known) request.variables.emplace(v.name(), v);
+  }
+  if (plan.raw_intervals) {
+    for (const auto& [name, intervals] : *plan.raw_intervals) {
+      if (std::find(columns.begin(), columns.end(), name) == columns.end()) continue;
+      request.variables.erase(name);
+      request.intervals.emplace(name, intervals);
+    }
+  }
+  auto counts = count_csv(input, request);
+  for (const auto& [name, outside] : counts.outside) {
+    note_outside(name, outside, counts.rows, request.intervals.at(name));
+  }
+  for (const auto& v : counts.variables) note_many_states(v, counts.rows);
+  return counts;
+}
+
 dataset read_discrete_data(const std::filesystem::path& path, const std::vector<std::string>& columns,
                            const data_plan& plan) {
   csv_options options;
@@ -50,27 +97,15 @@ dataset read_discrete_data(const std::filesystem::path& path, const std::vector<
     for (const auto& [name, intervals] : *plan.raw_intervals) {
       if (!data.contains(name)) continue;
       used.emplace(name, intervals);
-      // Outside values go to the outer bins by design; many of them suggest the wrong edges,
-      // or data that was binned already (then --intervals was meant).
       const auto& edges = intervals.edges();
       std::size_t outside = 0;
       for (double v : data.continuous(name).values()) outside += v < edges.front() || v > edges.back();
-      if (outside > 0) {
-        note(std::to_string(outside) + " of " + std::to_string(data.rows()) + " values of '" + name +
-             "' lie outside the edges' range [" + detail::format_short(edges.front()) + ", " +
-             detail::format_short(edges.back()) + "] and count in the outer bins");
-      }
+      note_outside(name, outside, data.rows(), intervals);
     }
     data = apply_discretization(data, used);
   }
-  // A column with nearly as many states as rows is almost surely a raw quantity.
   for (const auto& name : data.names()) {
-    if (!data.is_discrete(name)) continue;
-    const auto states = data.discrete(name).var().cardinality();
-    if (states > 50 && 2 * states > data.rows()) {
-      note("'" + name + "' has " + std::to_string(states) + " distinct values in " + std::to_string(data.rows()) +
-           " rows: if it is a continuous quantity, bin it first (pgm discretize, or --discretization)");
-    }
+    if (data.is_discrete(name)) note_many_states(data.discrete(name).var(), data.rows());
   }
   return data;
 }

@@ -12,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "pgm/core/network_structure.hpp"
+#include "pgm/data/csv_counts.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/discretizer.hpp"
 
@@ -33,8 +34,17 @@ struct data_plan {
 };
 
 /// Reads `columns` of a CSV file as discrete data, discretizing raw columns as planned.
+/// "-" reads standard input; gzip data (.csv.gz) is inflated.
 dataset read_discrete_data(const std::filesystem::path& path, const std::vector<std::string>& columns,
                            const data_plan& plan);
+
+/// Counts `families` of the rest of `input`, reading `columns` as read_discrete_data would
+/// (the same checks, states and notes) but without holding the data in memory.
+csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>& columns, const data_plan& plan,
+                               std::vector<csv_family> families, unsigned threads);
+
+/// What --data and --in say about the input files they accept.
+inline constexpr const char* data_file_help = " ('-' reads standard input; a .csv.gz is read compressed)";
 
 /// Network files are .bif or .json.
 inline const std::vector<std::string> network_extensions{".bif", ".json"};

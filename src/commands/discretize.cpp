@@ -115,7 +115,8 @@ void run_discretize(const discretize_arguments& args) {
 void add_discretize_command(CLI::App& app) {
   auto args = std::make_shared<discretize_arguments>();
   auto* cmd = app.add_subcommand("discretize", "Bin continuous columns into intervals");
-  cmd->add_option("--in", args->in, "CSV file with raw (continuous) columns")->required();
+  cmd->add_option("--in", args->in, std::string("CSV file with raw (continuous) columns") + data_file_help)
+      ->required();
   cmd->add_option("--method", args->method,
                   "quantile (equal frequency, as in the paper), width (equal width) or edges (saved edges)")
       ->check(CLI::IsMember({"quantile", "width", "edges"}))

@@ -1,13 +1,19 @@
 // pgm fit: estimate every table of a network from data.
 
+#include <algorithm>
 #include <cmath>
+#include <exception>
 #include <iostream>
 #include <optional>
+#include <span>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
 #include "cli/common.hpp"
 #include "cli/transfer_arguments.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/data/csv_counts.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/fit.hpp"
@@ -33,9 +39,9 @@ struct fit_arguments {
 };
 
 /// Sets the weighted prior (eq. 8) of every node the map transfers to, choosing w from the
-/// data when asked.
-void add_transferred_priors(const fit_arguments& args, const network_structure& structure, const dataset& data,
-                            fit_options& options) {
+/// counts when asked.
+void add_transferred_priors(const fit_arguments& args, const network_structure& structure,
+                            const std::vector<count_table>& counts, fit_options& options) {
   std::optional<double> fixed_weight;
   if (args.transfer.w_prior != "auto") {
     fixed_weight = detail::parse_double(args.transfer.w_prior);
@@ -49,8 +55,7 @@ void add_transferred_priors(const fit_arguments& args, const network_structure& 
   std::map<std::string, double, std::less<>> weights;
   for (const auto& [node, transferred] : priors) {
     if (!fixed_weight) {
-      const auto choice = choose_prior_weight(count_node(structure, structure.id(node), data, options.counting),
-                                              transferred.table());
+      const auto choice = choose_prior_weight(counts[structure.id(node).value()], transferred.table());
       note("--w-prior auto for '" + node + "': " + choice.reason);
       weights.emplace(node, choice.weight);
     } else {
@@ -62,6 +67,18 @@ void add_transferred_priors(const fit_arguments& args, const network_structure& 
     note("'" + node + "' gets the " + args.transfer.strategy + " prior from '" + map.transferred.at(node) + "' with w = " +
          detail::format_short(w));
   }
+}
+
+/// Each node's family by name, in node order, parents in the structure's order.
+std::vector<csv_family> families_of(const network_structure& structure) {
+  std::vector<csv_family> families;
+  for (std::size_t i = 0; i < structure.size(); ++i) {
+    const variable_id node(static_cast<variable_id::rep>(i));
+    csv_family family{structure.at(node).name(), {}};
+    for (const auto& parent : structure.parent_variables(node)) family.parents.push_back(parent.name());
+    families.push_back(std::move(family));
+  }
+  return families;
 }
 
 parameter_prior make_prior(const fit_arguments& args) {
@@ -89,8 +106,9 @@ void run_fit(const fit_arguments& args) {
   std::optional<discretization> raw_intervals;
   if (!args.discretization_file.empty()) raw_intervals = read_discretization_json(args.discretization_file);
 
+  // The data are never held in memory: each node's family is counted as the file streams by.
   network_structure structure;
-  dataset data;
+  csv_counts counted;
   if (!args.model.empty()) {
     structure = read_model_json(args.model).structure;
     for (const auto& v : structure.variables()) {
@@ -98,8 +116,9 @@ void run_fit(const fit_arguments& args) {
     }
     std::vector<std::string> columns;
     for (const auto& v : structure.variables()) columns.push_back(v.name());
-    data = read_discrete_data(args.data, columns, {raw_intervals ? &*raw_intervals : nullptr,
-                                                   &structure.variables()});
+    csv_reader input(args.data);
+    counted = count_discrete_data(input, columns, {raw_intervals ? &*raw_intervals : nullptr, &structure.variables()},
+                                  families_of(structure), args.threads);
   } else {
     const auto edges = parse_edge_list(args.edges);
     std::vector<std::string> columns;
@@ -108,10 +127,29 @@ void run_fit(const fit_arguments& args) {
         if (std::find(columns.begin(), columns.end(), *name) == columns.end()) columns.push_back(*name);
       }
     }
-    // Check the names against the header first, so that an unknown variable is reported as
-    // such rather than as a problem with some other column's values.
-    data = read_discrete_data(args.data, columns, {raw_intervals ? &*raw_intervals : nullptr, nullptr});
-    structure = structure_from_data(data, edges);
+    csv_reader input(args.data);
+    // The families come from the structure over the data's columns in file order (as
+    // structure_from_data builds it); a problem with the structure itself, such as a cycle, is
+    // reported after any problem with the data, as when the data were read first.
+    std::vector<std::string> ordered;
+    for (const auto& name : input.header()) {
+      if (std::find(columns.begin(), columns.end(), name) != columns.end()) ordered.push_back(name);
+    }
+    std::vector<variable> placeholders;
+    for (const auto& name : ordered) placeholders.emplace_back(name, std::vector<std::string>{"?"});
+    std::vector<csv_family> families;
+    std::exception_ptr structure_error;
+    if (ordered.size() == columns.size()) {  // else counting reports the missing column
+      try {
+        families = families_of(network_structure(placeholders, edges));
+      } catch (const error&) {
+        structure_error = std::current_exception();
+      }
+    }
+    counted = count_discrete_data(input, columns, {raw_intervals ? &*raw_intervals : nullptr, nullptr},
+                                  std::move(families), args.threads);
+    if (structure_error) std::rethrow_exception(structure_error);
+    structure = network_structure(counted.variables, edges);
   }
   if (!args.intervals_file.empty()) {
     for (const auto& [name, intervals] : read_discretization_json(args.intervals_file)) {
@@ -126,15 +164,28 @@ void run_fit(const fit_arguments& args) {
       structure.update_variable(variable::with_edges(name, own.states(), intervals.edges(), intervals.tags()));
     }
   }
+  // The counts under the structure's variables, which may carry intervals and tags.
+  std::vector<count_table> counts;
+  for (std::size_t i = 0; i < structure.size(); ++i) {
+    const variable_id node(static_cast<variable_id::rep>(i));
+    auto parents = structure.parent_variables(node);
+    const auto& family = counted.families[i];
+    bool same_family = family.child().name() == structure.at(node).name() && family.parents().size() == parents.size();
+    for (std::size_t k = 0; same_family && k < parents.size(); ++k) {
+      same_family = family.parents()[k].name() == parents[k].name();
+    }
+    if (!same_family) throw std::logic_error("the counted family of '" + family.child().name() + "' is out of order");
+    counts.push_back(family.with_variables(structure.at(node), std::move(parents)));
+  }
   if (!args.transfer.prior_model.empty()) {
-    add_transferred_priors(args, structure, data, options);
+    add_transferred_priors(args, structure, counts, options);
   } else if (!args.transfer.map.empty()) {
     throw error("--map applies with --prior-model");
   }
-  const auto network = fit(structure, data, options);
+  const auto network = fit(structure, std::span<const count_table>(counts), options);
   write_network(network, args.out);
   std::cout << "fitted " << network.size() << " tables (" << network.free_parameters()
-            << " free parameters) from " << data.rows() << " rows -> " << args.out << '\n';
+            << " free parameters) from " << counted.rows << " rows -> " << args.out << '\n';
 }
 
 }  // namespace
@@ -142,7 +193,8 @@ void run_fit(const fit_arguments& args) {
 void add_fit_command(CLI::App& app) {
   auto args = std::make_shared<fit_arguments>();
   auto* cmd = app.add_subcommand("fit", "Estimate the tables of a network from data (MLE or Bayesian)");
-  cmd->add_option("--data", args->data, "CSV file with one column per variable")->required();
+  cmd->add_option("--data", args->data, std::string("CSV file with one column per variable") + data_file_help)
+      ->required();
   auto* edges = cmd->add_option("--edges", args->edges,
                                 "The structure as edges, e.g. \"xOff1->onTop1,yOff1->onTop1\"; "
                                 "states are the values found in the data, sorted (numbers numerically)");

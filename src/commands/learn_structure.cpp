@@ -113,7 +113,9 @@ void add_learn_structure_command(CLI::App& app) {
   auto args = std::make_shared<learn_structure_arguments>();
   auto* cmd = app.add_subcommand("learn-structure",
                                  "Learn a causal structure from discrete data with PC-stable");
-  cmd->add_option("--data", args->data, "CSV file of discrete data, one column per variable")->required();
+  cmd->add_option("--data", args->data,
+                  std::string("CSV file of discrete data, one column per variable") + data_file_help)
+      ->required();
   cmd->add_option("--test", args->test, "Independence test: chi2 (Pearson) or g2 (likelihood ratio)")
       ->check(CLI::IsMember({"chi2", "g2"}))
       ->capture_default_str();

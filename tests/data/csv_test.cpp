@@ -6,6 +6,8 @@
 #include <random>
 #include <sstream>
 
+#include "support/random_csv.hpp"
+
 namespace pgm {
 namespace {
 
@@ -143,6 +145,82 @@ TEST(csv_test, write_then_read_gives_the_same_bits) {
   options.variables.emplace("label", data.discrete("label").var());
   const auto back = parse(out.str(), options);
   EXPECT_EQ(back, data);
+}
+
+TEST(csv_test, the_same_data_for_any_threads_and_chunk_size) {
+  // Tiny chunks put a boundary at every line: inside quoted fields that hold line ends, between
+  // the CR and LF of a line end, before blank lines.
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    for (const bool quotes : {false, true}) {
+      const auto csv = testing::make_random_csv(seed, {.rows = 300, .quotes = quotes, .final_newline = seed % 2 == 0});
+      for (const auto kind : {column_kind::automatic, column_kind::discrete}) {
+        csv_options options;
+        options.default_kind = kind;
+        options.threads = 1;
+        options.chunk_bytes = 1 << 20;
+        const auto expected = parse(csv.text, options);
+        ASSERT_EQ(expected.rows(), csv.rows);
+        for (unsigned threads : {1u, 2u, 3u, 8u}) {
+          for (std::size_t chunk : {1u, 2u, 7u, 64u, 0u}) {
+            options.threads = threads;
+            options.chunk_bytes = chunk;
+            EXPECT_EQ(parse(csv.text, options), expected)
+                << "seed " << seed << " quotes " << quotes << " threads " << threads << " chunk " << chunk;
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(csv_test, tricky_text_in_tiny_chunks) {
+  csv_options options;
+  options.chunk_bytes = 1;
+  options.threads = 4;
+  // A quoted line end right at a chunk boundary, CRLF, blank lines with blanks, a BOM, numbers
+  // written several ways, and no line end at the end.
+  const auto data = parse("\xEF\xBB\xBF" "id,label,n\r\n1,\"a\nb\",1e3\r\n\r\n  \t\n2,\"c,\r\nd\",-0\n3, plain ,1.0\n"
+                          "4,\"\"\"q\"\"\",1",
+                          options);
+  EXPECT_EQ(data.rows(), 4u);
+  EXPECT_THAT(data.continuous("n").values(), ElementsAre(1000.0, -0.0, 1.0, 1.0));
+  const auto& label = data.discrete("label");
+  EXPECT_EQ(label.label(0), "a\nb");
+  EXPECT_EQ(label.label(1), "c,\r\nd");
+  EXPECT_EQ(label.label(2), "plain");
+  EXPECT_EQ(label.label(3), "\"q\"");
+  options.default_kind = column_kind::discrete;
+  const auto discrete = parse("n\n1\n1.0\n01\n-0\n0\n1e3\n1000\n", options);
+  EXPECT_EQ(discrete.discrete("n").var().states(), (std::vector<std::string>{"-0", "1", "1e3"}));
+  EXPECT_EQ(discrete.discrete("n").code(4), 0u);  // "0" is the state "-0"
+  // A trailing delimiter is one more (empty) field.
+  EXPECT_THAT([] { parse("a,b\n1,2,\n"); },
+              ThrowsMessage<parse_error>(HasSubstr("runs.csv:2:5: expected 2 fields as in the header, found 3")));
+  EXPECT_THAT([] { parse("a,b,\n1,2,\n"); }, ThrowsMessage<parse_error>(HasSubstr("runs.csv:1:5: a column in the header has no name")));
+  // A column that turns out to hold text in a later chunk is read as labels throughout.
+  options.default_kind = column_kind::automatic;
+  const auto mixed = parse("x\n1\n2\n2.0\nlate\n", options);
+  EXPECT_EQ(mixed.discrete("x").var().states(), (std::vector<std::string>{"1", "2", "2.0", "late"}));
+}
+
+TEST(csv_test, the_scanner_reads_records_one_at_a_time) {
+  detail::csv_scanner scanner("\xEF\xBB\xBF" "a,b\n\n\"x\ny\",2\r\n3 , 4", "s.csv", ',');
+  std::vector<detail::csv_field> fields;
+  ASSERT_TRUE(scanner.next(fields));
+  EXPECT_EQ(fields[1].text, "b");
+  ASSERT_TRUE(scanner.next(fields));
+  EXPECT_EQ(scanner.record_line(), 3u);
+  EXPECT_EQ(fields[0].text, "x\ny");
+  EXPECT_EQ(fields[1].line, 4u);
+  EXPECT_EQ(fields[1].column, 4u);
+  ASSERT_TRUE(scanner.next(fields));
+  EXPECT_EQ(fields[0].text, "3");
+  EXPECT_EQ(fields[1].text, "4");
+  EXPECT_FALSE(scanner.next(fields));
+  detail::csv_scanner bad("a\n\"x\"y\n", "s.csv", ',');
+  ASSERT_TRUE(bad.next(fields));
+  EXPECT_THAT([&] { bad.next(fields); },
+              ThrowsMessage<parse_error>(HasSubstr("s.csv:2:4: expected a delimiter or the end of the line")));
 }
 
 }  // namespace

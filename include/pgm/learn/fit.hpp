@@ -4,6 +4,7 @@
 
 #include <map>
 #include <set>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -64,17 +65,17 @@ struct fit_options {
   };
   std::vector<const discrete_column*> parent_columns;
   for (const auto& p : parents) parent_columns.push_back(&column_of(p));
-  const auto counted = count_family(column_of(child), parent_columns, counting, rows);
   // Same codes, the structure's own variables (which may carry intervals and tags).
-  count_table table(child, parents);
-  std::copy(counted.counts().begin(), counted.counts().end(), table.counts().begin());
-  return table;
+  return count_family(column_of(child), parent_columns, counting, rows).with_variables(child, parents);
 }
 
-/// Fits every table of `structure` from `data`. Columns must carry the states the structure
-/// gives its variables.
-[[nodiscard]] inline bayesian_network fit(const network_structure& structure, const dataset& data,
-                                          const fit_options& options = {}) {
+namespace detail {
+
+/// Every table of `structure`, node by node, from `counts_of(node)` (a count_table over the
+/// structure's variables).
+template <class CountsOf>
+[[nodiscard]] bayesian_network fit_tables(const network_structure& structure, const fit_options& options,
+                                          CountsOf&& counts_of) {
   for (const auto& [name, prior] : options.node_priors) {
     if (!structure.contains(name)) {
       throw model_error("a prior is given for '" + name + "', which is not in the network");
@@ -84,12 +85,42 @@ struct fit_options {
   tables.reserve(structure.size());
   for (std::size_t i = 0; i < structure.size(); ++i) {
     const variable_id node(static_cast<variable_id::rep>(i));
-    const auto counts = count_node(structure, node, data, options.counting, options.rows);
+    const auto& counts = counts_of(node);
     const auto own = options.node_priors.find(structure.at(node).name());
-    tables.push_back(estimate(counts, own != options.node_priors.end() ? own->second : options.prior,
-                              options.estimation));
+    tables.push_back(
+        estimate(counts, own != options.node_priors.end() ? own->second : options.prior, options.estimation));
   }
   return bayesian_network(structure, std::move(tables));
+}
+
+}  // namespace detail
+
+/// Fits every table of `structure` from `data`. Columns must carry the states the structure
+/// gives its variables.
+[[nodiscard]] inline bayesian_network fit(const network_structure& structure, const dataset& data,
+                                          const fit_options& options = {}) {
+  return detail::fit_tables(structure, options, [&](variable_id node) {
+    return count_node(structure, node, data, options.counting, options.rows);
+  });
+}
+
+/// Fits every table of `structure` from the counts of each node's family: `counts[i]` is node
+/// i's, over the structure's variables (from count_node, or from pgm/data/csv_counts.hpp for
+/// a file too large for memory). Throws model_error for a table of another family.
+[[nodiscard]] inline bayesian_network fit(const network_structure& structure, std::span<const count_table> counts,
+                                          const fit_options& options = {}) {
+  if (counts.size() != structure.size()) {
+    throw model_error("fitting " + std::to_string(structure.size()) + " tables needs as many count tables, got " +
+                      std::to_string(counts.size()));
+  }
+  return detail::fit_tables(structure, options, [&](variable_id node) -> const count_table& {
+    const auto& table = counts[node.value()];
+    if (table.child() != structure.at(node) || table.parents() != structure.parent_variables(node)) {
+      throw model_error("the count table given for '" + structure.at(node).name() +
+                        "' is not of its family in the network");
+    }
+    return table;
+  });
 }
 
 }  // namespace pgm

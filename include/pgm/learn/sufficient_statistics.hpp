@@ -72,6 +72,22 @@ class count_table {
   [[nodiscard]] std::span<const count_type> counts() const noexcept { return counts_; }
   [[nodiscard]] std::span<count_type> counts() noexcept { return counts_; }
 
+  /// The same counts under other variables with the same numbers of states (the structure's
+  /// own, say, which may carry intervals and tags). Throws model_error otherwise.
+  [[nodiscard]] count_table with_variables(variable child, std::vector<variable> parents) const {
+    bool same_shape = child.cardinality() == child_.cardinality() && parents.size() == parents_.size();
+    for (std::size_t k = 0; same_shape && k < parents.size(); ++k) {
+      same_shape = parents[k].cardinality() == parents_[k].cardinality();
+    }
+    if (!same_shape) {
+      throw model_error("the counts of '" + child_.name() + "' cannot be given the variables of '" + child.name() +
+                        "' and its parents: the numbers of states differ");
+    }
+    count_table result(std::move(child), std::move(parents));
+    result.counts_ = counts_;
+    return result;
+  }
+
   /// Adds the counts of another table of the same family.
   count_table& operator+=(const count_table& other) {
     if (other.child_ != child_ || other.parents_ != parents_) {

@@ -1,0 +1,153 @@
+#pragma once
+/// \file
+/// Counting families straight from CSV, without holding the data in memory: `csv_reader`
+/// opens a file (mapped), standard input ("-") or gzip-compressed data and reads its header;
+/// `count_csv` streams the rest in windows and counts every family (node + parents) on
+/// provisional per-column ids, in chunks split at line boundaries on several threads, then
+/// maps the ids to the states `read_csv` would give the same columns. The counts equal
+/// `count_family` on the data set `read_csv` returns, for any number of threads, chunk size or
+/// window size, and memory stays bounded by the window, not the file.
+///
+/// The byte-range step is public for splitting a file over processes (the scale-out issue):
+/// each counts its own whole records with `csv_counter::count`, the partial counts add up
+/// with `+=`, and `csv_counter::finish` turns the sum into tables.
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "pgm/core/variable.hpp"
+#include "pgm/data/csv.hpp"
+#include "pgm/learn/sufficient_statistics.hpp"
+
+namespace pgm {
+
+namespace detail {
+struct csv_access;  // the implementation's way in (src/data)
+}  // namespace detail
+
+/// One family to count: a child column and its parent columns, by name.
+struct csv_family {
+  std::string child;
+  std::vector<std::string> parents;
+};
+
+struct csv_count_request {
+  /// The columns to read, by name; each value is checked as `read_csv` would. Every family's
+  /// columns must be among them. Naming a column the file lacks is an error.
+  std::vector<std::string> columns;
+  /// Columns whose variable is known (from a model): their values must be its state labels,
+  /// and the counts follow its state order.
+  std::map<std::string, variable, std::less<>> variables;
+  /// Raw numeric columns binned into these interval variables while they are read (values
+  /// outside the edges go to the outer bins).
+  std::map<std::string, variable, std::less<>> intervals;
+  /// The families to count.
+  std::vector<csv_family> families;
+  /// Counting threads; 0 uses every hardware thread. The counts are the same for any number.
+  unsigned threads = 0;
+  /// Bytes per chunk (split at a line end) and per window (what is in memory at once); 0
+  /// chooses. Tests set them small to put boundaries everywhere.
+  std::size_t chunk_bytes = 0;
+  std::size_t window_bytes = 0;
+};
+
+struct csv_counts {
+  /// Data rows read.
+  std::size_t rows = 0;
+  /// The columns read, in file order, with their states: the values seen, sorted as
+  /// `read_csv` sorts them, or the given variable, or the interval variable.
+  std::vector<variable> variables;
+  /// One table per requested family, in request order, over `variables`.
+  std::vector<count_table> families;
+  /// For each binned column, how many values lie outside its edges' range.
+  std::map<std::string, std::size_t, std::less<>> outside;
+};
+
+/// A CSV input opened and its header read: a file (mapped), standard input ("-", named
+/// "<stdin>"), or gzip-compressed data (a .gz file, or gzip bytes on standard input), or text
+/// in memory. Move-only.
+class csv_reader {
+ public:
+  /// Opens `path` and reads the header. Throws io_error when it cannot be read (or is not
+  /// gzip data though named .gz), parse_error for an empty file or a bad header.
+  explicit csv_reader(const std::filesystem::path& path, char delimiter = ',');
+  /// Reads CSV held in memory (valid while the reader is used); `source` names it.
+  csv_reader(std::string_view text, std::string source, char delimiter = ',');
+  ~csv_reader();
+  csv_reader(csv_reader&&) noexcept;
+  csv_reader& operator=(csv_reader&&) noexcept;
+
+  /// The name used in messages: the path, or "<stdin>".
+  [[nodiscard]] const std::string& source() const noexcept;
+  /// The column names, in file order.
+  [[nodiscard]] const std::vector<std::string>& header() const noexcept;
+
+  struct impl;
+
+ private:
+  friend struct detail::csv_access;
+  std::unique_ptr<impl> impl_;
+};
+
+/// Reads the rest of `input` and counts the requested families. Errors are those `read_csv`
+/// reports for the same columns (file:line:column), plus "no data rows" for an empty body.
+[[nodiscard]] csv_counts count_csv(csv_reader& input, const csv_count_request& request);
+
+/// Counts of some of a file's records, over provisional ids: add up those of one counter with
+/// `+=` (in any order) and turn them into tables with csv_counter::finish. They refer to their
+/// counter, which must outlive them. A default-constructed one is empty.
+class csv_partial_counts {
+ public:
+  csv_partial_counts();
+  ~csv_partial_counts();
+  csv_partial_counts(csv_partial_counts&&) noexcept;
+  csv_partial_counts& operator=(csv_partial_counts&&) noexcept;
+
+  /// Records counted.
+  [[nodiscard]] std::size_t rows() const noexcept;
+  /// Line ends consumed (blank lines included): where the next range's lines start.
+  [[nodiscard]] std::size_t lines() const noexcept;
+
+  /// Adds the counts of other records of the same counter (std::invalid_argument otherwise).
+  csv_partial_counts& operator+=(csv_partial_counts&& other);
+
+  struct impl;
+
+ private:
+  friend struct detail::csv_access;
+  std::unique_ptr<impl> impl_;
+};
+
+/// The plan of a count: which columns of a header are read, how, and which families counted.
+class csv_counter {
+ public:
+  /// Throws data_error for a requested column the header lacks or a family column that is
+  /// not requested.
+  csv_counter(std::string source, std::vector<std::string> header, const csv_count_request& request,
+              char delimiter = ',');
+  ~csv_counter();
+  csv_counter(csv_counter&&) noexcept;
+  csv_counter& operator=(csv_counter&&) noexcept;
+
+  /// Counts the whole records in `bytes`, which starts at a record boundary and ends at one
+  /// (or at the end of the input). `first_line` is the line it starts on, for messages and
+  /// for the order in which labels first appear (by line and column). Throws parse_error.
+  [[nodiscard]] csv_partial_counts count(std::string_view bytes, std::size_t first_line) const;
+
+  /// The tables of all the counts added up. Throws data_error when there are no rows.
+  [[nodiscard]] csv_counts finish(const csv_partial_counts& counts) const;
+
+  struct impl;
+
+ private:
+  friend struct detail::csv_access;
+  std::unique_ptr<impl> impl_;
+};
+
+}  // namespace pgm

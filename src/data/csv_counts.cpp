@@ -1,0 +1,476 @@
+// Counting families straight from CSV (count_csv): windows of the input, chunks of a window on
+// several threads, provisional per-column ids, tables summed and mapped to the final states.
+
+#include "pgm/data/csv_counts.hpp"
+
+#include <algorithm>
+#include <limits>
+#include <numeric>
+#include <stdexcept>
+#include <utility>
+
+#include "data/csv_input.hpp"
+#include "pgm/detail/parallel_for.hpp"
+
+namespace pgm {
+namespace detail {
+
+constexpr std::size_t count_chunk_bytes = std::size_t{512} << 10;
+constexpr std::size_t count_window_bytes = std::size_t{16} << 20;
+// Rows parsed before their ids are counted: the counting kernel then runs over a block of
+// codes per column, as it does over a data set.
+constexpr std::size_t block_rows = 4 * detail::count_block_rows;
+constexpr std::uint64_t max_cells = std::numeric_limits<std::uint32_t>::max();
+
+enum class count_mode { labels, known, binned };
+
+struct counted_column {
+  std::string name;
+  std::size_t position = 0;  // field index in a record
+  count_mode mode = count_mode::labels;
+  variable var{"?", {"?"}};  // the known or interval variable
+};
+
+/// A family's counts over provisional ids: child first, then the parents, laid out like a
+/// count_table (child fastest, last parent next) with the cardinalities in `cards`.
+struct family_counts {
+  std::vector<std::size_t> members;  // counted column indices, child first
+  std::vector<std::uint32_t> cards;
+  std::vector<std::uint32_t> strides;
+  std::vector<std::uint64_t> counts;
+  bool too_large = false;  // more than 2^32 cells: reported when the tables are made
+};
+
+}  // namespace detail
+
+namespace {
+
+using detail::block_rows;
+using detail::count_mode;
+using detail::counted_column;
+using detail::family_counts;
+using detail::max_cells;
+
+[[nodiscard]] std::vector<std::uint32_t> strides_of(const std::vector<std::uint32_t>& cards) {
+  std::vector<std::uint32_t> strides(cards.size(), 1);
+  if (cards.empty()) return strides;
+  std::uint32_t stride = cards[0];
+  for (std::size_t m = cards.size(); m-- > 1;) {
+    strides[m] = stride;
+    stride *= cards[m];
+  }
+  return strides;
+}
+
+/// Lays `family` out for `cards` (each at least the old one), keeping its counts.
+void relayout(family_counts& family, const std::vector<std::uint32_t>& cards) {
+  if (family.too_large || cards == family.cards) return;
+  std::uint64_t cells = 1;
+  for (auto card : cards) {
+    cells *= card;
+    if (cells > max_cells) {
+      family.too_large = true;
+      family.counts = {};
+      return;
+    }
+  }
+  const auto strides = strides_of(cards);
+  std::vector<std::uint64_t> counts(cells, 0);
+  for (std::size_t cell = 0; cell < family.counts.size(); ++cell) {
+    if (family.counts[cell] == 0) continue;
+    std::size_t moved = 0;
+    for (std::size_t m = 0; m < cards.size(); ++m) {
+      moved += cell / family.strides[m] % family.cards[m] * strides[m];
+    }
+    counts[moved] += family.counts[cell];
+  }
+  family.cards = cards;
+  family.strides = strides;
+  family.counts = std::move(counts);
+}
+
+}  // namespace
+
+struct csv_counter::impl {
+  std::string source;
+  char delimiter = ',';
+  std::size_t width = 0;
+  std::vector<counted_column> columns;  // in file order
+  std::vector<std::vector<std::size_t>> families;
+  unsigned threads = 0;
+  std::size_t chunk_bytes = detail::count_chunk_bytes;
+  std::size_t window_bytes = detail::count_window_bytes;
+};
+
+struct csv_partial_counts::impl {
+  const csv_counter::impl* plan = nullptr;  // the counter these counts belong to
+  std::size_t rows = 0;
+  std::size_t lines = 0;
+  std::vector<detail::label_dictionary> labels;  // per column: the labels (known: the states)
+  std::vector<std::uint64_t> outside;            // per binned column
+  std::vector<family_counts> families;
+};
+
+namespace {
+
+using partial_impl = csv_partial_counts::impl;
+using counter_impl = csv_counter::impl;
+
+[[nodiscard]] partial_impl empty_partial(const counter_impl& plan) {
+  partial_impl partial;
+  partial.plan = &plan;
+  partial.labels.resize(plan.columns.size());
+  partial.outside.assign(plan.columns.size(), 0);
+  for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+    if (plan.columns[c].mode != count_mode::known) continue;
+    for (const auto& state : plan.columns[c].var.states()) partial.labels[c].add(state, {});
+  }
+  for (const auto& members : plan.families) {
+    family_counts family;
+    family.members = members;
+    family.cards.assign(members.size(), 0);
+    family.strides.assign(members.size(), 1);
+    partial.families.push_back(std::move(family));
+  }
+  return partial;
+}
+
+[[nodiscard]] std::uint32_t cardinality(const counter_impl& plan, const partial_impl& partial, std::size_t column) {
+  return static_cast<std::uint32_t>(plan.columns[column].mode == count_mode::binned
+                                        ? plan.columns[column].var.cardinality()
+                                        : partial.labels[column].size());
+}
+
+void fit_layout(const counter_impl& plan, partial_impl& partial, family_counts& family) {
+  std::vector<std::uint32_t> cards;
+  for (auto column : family.members) cards.push_back(cardinality(plan, partial, column));
+  relayout(family, cards);
+}
+
+/// A thread's state: its counts over its own ids, and the block of rows not counted yet.
+struct count_worker {
+  explicit count_worker(const counter_impl& plan) : partial(empty_partial(plan)) {
+    for (std::size_t c = 0; c < plan.columns.size(); ++c) block.emplace_back(std::vector<std::uint32_t>(block_rows));
+    for (auto& column : block) ids.push_back(std::get<std::vector<std::uint32_t>>(column).data());
+  }
+
+  partial_impl partial;
+  std::vector<code_vector> block;   // per column: the provisional ids of the rows not counted yet
+  std::vector<std::uint32_t*> ids;  // per column: where `block` holds them (a move keeps the buffers)
+  std::size_t filled = 0;
+  std::vector<detail::csv_field> fields;
+};
+
+void count_block(const counter_impl& plan, count_worker& worker) {
+  if (worker.filled == 0) return;
+  std::vector<const code_vector*> columns;
+  for (auto& family : worker.partial.families) {
+    fit_layout(plan, worker.partial, family);
+    if (family.too_large) continue;
+    columns.clear();
+    for (auto column : family.members) columns.push_back(&worker.block[column]);
+    detail::count_rows(columns, family.strides, 0, worker.filled, family.counts.data());
+  }
+  worker.filled = 0;
+}
+
+/// The id of a label seen before (the common case, inlined into the record loop), or none.
+[[nodiscard]] inline std::uint32_t known_label_id(const counted_column& column, const partial_impl& partial,
+                                                  std::size_t c, const detail::csv_field& field) {
+  return column.mode == count_mode::labels ? partial.labels[c].find(field.text) : detail::label_dictionary::none;
+}
+
+std::uint32_t provisional_id(const counted_column& column, partial_impl& partial, std::size_t c,
+                             const detail::csv_field& field, std::size_t chunk) {
+  detail::check_present(field, column.name);
+  switch (column.mode) {
+    case count_mode::labels: {
+      auto& labels = partial.labels[c];
+      const auto id = labels.find(field.text);
+      return id != detail::label_dictionary::none ? id : labels.add(field.text, {field.line, field.column, chunk});
+    }
+    case count_mode::known: {
+      const auto id = partial.labels[c].find(field.text);
+      if (id == detail::label_dictionary::none) {
+        detail::fail_field(field, column.name,
+                           "'" + std::string(field.text) + "' is not a state of '" + column.name +
+                               "' (states: " + detail::list_for_message(column.var.states()) + ")");
+      }
+      return id;
+    }
+    case count_mode::binned: {
+      const double value = detail::continuous_value(field, column.name);
+      const auto& edges = column.var.edges();
+      partial.outside[c] += value < edges.front() || value > edges.back();
+      return static_cast<std::uint32_t>(column.var.bin(value).value());
+    }
+  }
+  return 0;
+}
+
+/// Counts the records of `text` (chunk `chunk` of a window, whole records); returns the line
+/// ends it consumed.
+std::size_t count_piece(const counter_impl& plan, count_worker& worker, std::string_view text, std::size_t chunk) {
+  try {
+    return detail::for_each_record(text, plan.delimiter, worker.fields,
+                                   [&](const std::vector<detail::csv_field>& fields) {
+                                     if (fields.size() != plan.width) detail::fail_width(fields, plan.width);
+                                     for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+                                       const auto& column = plan.columns[c];
+                                       const auto& field = fields[column.position];
+                                       auto id = known_label_id(column, worker.partial, c, field);
+                                       if (id == detail::label_dictionary::none)
+                                         id = provisional_id(column, worker.partial, c, field, chunk);
+                                       worker.ids[c][worker.filled] = id;
+                                     }
+                                     ++worker.partial.rows;
+                                     if (++worker.filled == block_rows) count_block(plan, worker);
+                                   });
+  } catch (const detail::csv_failure& failure) {
+    throw detail::chunk_failure{chunk, failure};
+  }
+}
+
+/// Adds `other` into `into`. Label places in `other` are relative to the first lines of their
+/// chunks, `first_lines` (none: they are absolute already).
+void merge(const counter_impl& plan, partial_impl& into, partial_impl& other,
+           const std::vector<std::size_t>* first_lines) {
+  into.rows += other.rows;
+  into.lines += other.lines;
+  std::vector<std::vector<std::uint32_t>> id_of(plan.columns.size());
+  for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+    into.outside[c] += other.outside[c];
+    if (plan.columns[c].mode != count_mode::labels) continue;
+    auto& labels = into.labels[c];
+    for (auto& entry : other.labels[c].entries()) {
+      auto first = entry.first;
+      if (first_lines) first.line += (*first_lines)[first.chunk];
+      auto id = labels.find(entry.text);
+      if (id == detail::label_dictionary::none) {
+        id = labels.add(entry.text, first);
+      } else {
+        auto& known = labels.entries()[id].first;
+        if (std::pair(first.line, first.column) < std::pair(known.line, known.column)) known = first;
+      }
+      id_of[c].push_back(id);
+    }
+  }
+  for (std::size_t f = 0; f < into.families.size(); ++f) {
+    auto& family = into.families[f];
+    const auto& theirs = other.families[f];
+    fit_layout(plan, into, family);
+    if (theirs.too_large) {
+      family.too_large = true;
+      family.counts = {};
+    }
+    if (family.too_large) continue;
+    for (std::size_t cell = 0; cell < theirs.counts.size(); ++cell) {
+      if (theirs.counts[cell] == 0) continue;
+      std::size_t mine = 0;
+      for (std::size_t m = 0; m < family.members.size(); ++m) {
+        const auto digit = cell / theirs.strides[m] % theirs.cards[m];
+        const auto& map = id_of[family.members[m]];
+        mine += (map.empty() ? digit : map[digit]) * family.strides[m];
+      }
+      family.counts[mine] += theirs.counts[cell];
+    }
+  }
+}
+
+/// Counts the whole records at the start of `text` (up to about `limit` bytes; all of them
+/// when `final`) in chunks on several threads and adds the counts to `into`; returns the bytes
+/// consumed, 0 when `text` does not hold a whole record yet.
+std::size_t count_window(const counter_impl& plan, partial_impl& into, std::string_view text, std::size_t limit,
+                         bool final, std::size_t first_line) {
+  const auto bounds = detail::record_chunks(text, plan.delimiter, plan.chunk_bytes, limit, final);
+  const std::size_t chunks = bounds.size() - 1;
+  std::vector<std::size_t> lines(chunks, 0);
+  std::vector<count_worker> workers;
+  detail::rethrow_located(plan.source, first_line, lines, [&] {
+    workers = detail::parallel_for(
+        chunks, {.threads = plan.threads}, [&] { return count_worker(plan); },
+        [&](count_worker& worker, detail::item_range items) {
+          for (auto k = items.begin; k < items.end; ++k) {
+            lines[k] = count_piece(plan, worker, text.substr(bounds[k], bounds[k + 1] - bounds[k]), k);
+          }
+        });
+  });
+  const auto first_lines = detail::chunk_first_lines(first_line, lines);
+  for (auto& worker : workers) {
+    count_block(plan, worker);
+    merge(plan, into, worker.partial, &first_lines);
+  }
+  for (auto l : lines) into.lines += l;
+  return bounds.back();
+}
+
+}  // namespace
+
+// ---- csv_partial_counts --------------------------------------------------------------
+
+csv_partial_counts::csv_partial_counts() : impl_(std::make_unique<impl>()) {}
+csv_partial_counts::~csv_partial_counts() = default;
+csv_partial_counts::csv_partial_counts(csv_partial_counts&&) noexcept = default;
+csv_partial_counts& csv_partial_counts::operator=(csv_partial_counts&&) noexcept = default;
+std::size_t csv_partial_counts::rows() const noexcept { return impl_->rows; }
+std::size_t csv_partial_counts::lines() const noexcept { return impl_->lines; }
+
+// ---- csv_counter ---------------------------------------------------------------------
+
+csv_counter::csv_counter(std::string source, std::vector<std::string> header, const csv_count_request& request,
+                         char delimiter)
+    : impl_(std::make_unique<impl>()) {
+  auto& plan = *impl_;
+  plan.source = std::move(source);
+  plan.delimiter = delimiter;
+  plan.width = header.size();
+  plan.threads = request.threads;
+  if (request.chunk_bytes) plan.chunk_bytes = request.chunk_bytes;
+  if (request.window_bytes) plan.window_bytes = request.window_bytes;
+  for (auto position : detail::column_positions(header, request.columns, plan.source)) {
+    counted_column column;
+    column.name = header[position];
+    column.position = position;
+    if (const auto it = request.intervals.find(column.name); it != request.intervals.end()) {
+      if (!it->second.has_intervals()) {
+        throw model_error("variable '" + column.name + "' has no interval edges to bin values by");
+      }
+      column.mode = count_mode::binned;
+      column.var = it->second;
+    } else if (const auto known = request.variables.find(column.name); known != request.variables.end()) {
+      column.mode = count_mode::known;
+      column.var = known->second;
+    }
+    plan.columns.push_back(std::move(column));
+  }
+  auto index_of = [&](const std::string& name) {
+    for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+      if (plan.columns[c].name == name) return c;
+    }
+    throw data_error(plan.source + ": the column '" + name + "' of a family to count is not among the columns read");
+  };
+  for (const auto& family : request.families) {
+    std::vector<std::size_t> members{index_of(family.child)};
+    for (const auto& parent : family.parents) members.push_back(index_of(parent));
+    plan.families.push_back(std::move(members));
+  }
+}
+
+csv_counter::~csv_counter() = default;
+csv_counter::csv_counter(csv_counter&&) noexcept = default;
+csv_counter& csv_counter::operator=(csv_counter&&) noexcept = default;
+
+csv_partial_counts csv_counter::count(std::string_view bytes, std::size_t first_line) const {
+  csv_partial_counts result;
+  auto& partial = detail::csv_access::of(result);
+  partial = empty_partial(*impl_);
+  count_window(*impl_, partial, bytes, bytes.size(), true, first_line);
+  return result;
+}
+
+csv_partial_counts& csv_partial_counts::operator+=(csv_partial_counts&& other) {
+  if (!other.impl_->plan) return *this;
+  if (!impl_->plan) {
+    std::swap(impl_, other.impl_);
+    return *this;
+  }
+  if (impl_->plan != other.impl_->plan) throw std::invalid_argument("counts of different csv_counters cannot be added");
+  merge(*impl_->plan, *impl_, *other.impl_, nullptr);
+  return *this;
+}
+
+csv_counts csv_counter::finish(const csv_partial_counts& counts) const {
+  const auto& plan = *impl_;
+  const auto& partial = detail::csv_access::of(counts);
+  if (partial.rows == 0) throw data_error(plan.source + ": there are no data rows after the header");
+  csv_counts result;
+  result.rows = partial.rows;
+  // Each column's variable and the state of each provisional id.
+  std::vector<std::vector<std::uint32_t>> state_of(plan.columns.size());
+  for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+    const auto& column = plan.columns[c];
+    if (column.mode != count_mode::labels) {
+      result.variables.push_back(column.var);
+      if (column.mode == count_mode::binned) result.outside.emplace(column.name, partial.outside[c]);
+      continue;
+    }
+    const auto& entries = partial.labels[c].entries();
+    // Labels in order of first appearance, as read_csv meets them.
+    std::vector<std::uint32_t> order(entries.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) {
+      return std::pair(entries[a].first.line, entries[a].first.column) <
+             std::pair(entries[b].first.line, entries[b].first.column);
+    });
+    std::vector<std::string_view> labels;
+    for (auto id : order) labels.push_back(entries[id].text);
+    auto states = detail::order_states(labels);
+    if (states.first_non_finite) {
+      const auto& entry = entries[order[*states.first_non_finite]];
+      throw parse_error(plan.source, entry.first.line, entry.first.column,
+                        "column '" + column.name + "': " + detail::non_finite_message(entry.text));
+    }
+    state_of[c].resize(entries.size());
+    for (std::size_t i = 0; i < order.size(); ++i) state_of[c][order[i]] = states.state_of[i];
+    result.variables.emplace_back(column.name, std::move(states.states));
+  }
+  for (std::size_t f = 0; f < plan.families.size(); ++f) {
+    const auto& members = plan.families[f];
+    std::vector<variable> parents;
+    for (std::size_t m = 1; m < members.size(); ++m) parents.push_back(result.variables[members[m]]);
+    count_table table(result.variables[members[0]], std::move(parents));
+    const auto& family = partial.families[f];
+    if (family.too_large || table.counts().size() > max_cells) {
+      throw model_error("the table of '" + table.child().name() + "' has " + std::to_string(table.counts().size()) +
+                        " cells, more than pgm can count (2^32)");
+    }
+    // Final strides: the child's state, then each parent's state times its stride in the table.
+    std::vector<std::size_t> strides{1};
+    for (std::size_t m = 1; m < members.size(); ++m) {
+      strides.push_back(table.child_cardinality() * table.parent_radix().stride(m - 1));
+    }
+    auto cells = table.counts();
+    for (std::size_t cell = 0; cell < family.counts.size(); ++cell) {
+      if (family.counts[cell] == 0) continue;
+      std::size_t final_cell = 0;
+      for (std::size_t m = 0; m < members.size(); ++m) {
+        const auto digit = cell / family.strides[m] % family.cards[m];
+        const auto& map = state_of[members[m]];
+        final_cell += (map.empty() ? digit : map[digit]) * strides[m];
+      }
+      cells[final_cell] += family.counts[cell];
+    }
+    result.families.push_back(std::move(table));
+  }
+  return result;
+}
+
+// ---- count_csv -----------------------------------------------------------------------
+
+csv_counts count_csv(csv_reader& input, const csv_count_request& request) {
+  auto& reader = detail::csv_access::of(input);
+  const csv_counter counter(reader.source, reader.header, request, reader.delimiter);
+  const auto& plan = detail::csv_access::of(counter);
+  csv_partial_counts total;
+  auto& sum = detail::csv_access::of(total);
+  sum = empty_partial(plan);
+  auto& bytes = *reader.bytes;
+  std::size_t line = reader.first_line;
+  while (true) {
+    bytes.fetch(plan.window_bytes);
+    const auto text = bytes.available();
+    if (text.empty()) break;
+    const std::size_t lines_before = sum.lines;
+    const auto consumed = count_window(plan, sum, text, plan.window_bytes, bytes.at_end(), line);
+    line += sum.lines - lines_before;
+    if (consumed == 0) {
+      if (bytes.at_end()) break;     // only blank space was left
+      bytes.fetch(text.size() * 2);  // a record longer than what is here
+      continue;
+    }
+    bytes.consume(consumed);
+  }
+  return counter.finish(total);
+}
+
+}  // namespace pgm

@@ -1,0 +1,501 @@
+#pragma once
+// Internal to the CSV reader (src/data), not installed: the one record scanner every CSV path
+// uses (csv_scanner, read_csv, count_csv), how a field's text becomes a value, the label
+// dictionary and the order of states. Callable on any byte buffer (for fuzzing, issue 17).
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <deque>
+#include <functional>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+#include "pgm/core/error.hpp"
+#include "pgm/data/csv.hpp"
+#include "pgm/detail/text.hpp"
+
+namespace pgm::detail {
+
+/// A problem at a place in a piece of text whose first line is not known yet (a chunk parsed
+/// in parallel): `line` counts from the cursor's starting line. The piece's driver turns it
+/// into a parse_error once the lines before the piece are known.
+struct csv_failure {
+  std::size_t line;
+  std::size_t column;
+  std::string what;
+};
+
+enum class csv_record {
+  complete,    // a record was read
+  end,         // the text ended (only blank lines were left)
+  incomplete,  // the text ended inside a record that may go on: fetch more, then read again
+};
+
+/// Reads records from `text`. With `final` false the text is a prefix of the input: a record
+/// that reaches its end is `incomplete` and the cursor is left at the record's start.
+class csv_record_reader {
+ public:
+  csv_record_reader(std::string_view text, char delimiter, bool final, csv_cursor start = {})
+      : text_(text), delimiter_(delimiter), final_(final), cursor_(start) {
+    for (auto& e : ends_) e = false;
+    ends_[static_cast<unsigned char>(delimiter)] = true;
+    ends_[static_cast<unsigned char>('\n')] = true;
+    ends_[static_cast<unsigned char>('\r')] = true;
+  }
+
+  [[nodiscard]] const csv_cursor& cursor() const noexcept { return cursor_; }
+  /// The line where the last record read starts.
+  [[nodiscard]] std::size_t record_line() const noexcept { return record_line_; }
+
+  /// Reads the next non-blank record into `fields`. Throws csv_failure for bad quoting.
+  csv_record next(std::vector<csv_field>& fields) {
+    fields.clear();
+    used_ = 0;
+    if (!skip_blank_lines()) return csv_record::incomplete;
+    if (cursor_.pos >= text_.size()) return final_ ? csv_record::end : csv_record::incomplete;
+    const csv_cursor start = cursor_;
+    record_line_ = cursor_.line;
+    const auto give_up = [&] {
+      cursor_ = start;
+      fields.clear();
+      return csv_record::incomplete;
+    };
+    while (true) {
+      csv_field field;
+      if (!read_field(field)) return give_up();
+      fields.push_back(field);
+      if (cursor_.pos >= text_.size()) return final_ ? csv_record::complete : give_up();
+      const char c = text_[cursor_.pos];
+      if (c == delimiter_) {
+        ++cursor_.pos;
+        continue;
+      }
+      // End of line: LF, CRLF or a lone CR.
+      if (c == '\r') {
+        ++cursor_.pos;
+        if (cursor_.pos >= text_.size() && !final_) return give_up();
+      }
+      if (cursor_.pos < text_.size() && text_[cursor_.pos] == '\n') ++cursor_.pos;
+      new_line();
+      return csv_record::complete;
+    }
+  }
+
+ private:
+  void new_line() {
+    ++cursor_.line;
+    cursor_.line_start = cursor_.pos;
+  }
+
+  // False when, before the whole input is here, the text ends in a line that is blank so far.
+  bool skip_blank_lines() {
+    while (cursor_.pos < text_.size()) {
+      std::size_t p = cursor_.pos;
+      while (p < text_.size() && (text_[p] == ' ' || text_[p] == '\t' || text_[p] == '\r')) ++p;
+      if (p < text_.size() && text_[p] == '\n') {
+        cursor_.pos = p + 1;
+        new_line();
+      } else if (p >= text_.size()) {
+        if (!final_) return false;
+        cursor_.pos = p;
+      } else {
+        return true;
+      }
+    }
+    return true;
+  }
+
+  [[nodiscard]] bool at_field_end(std::size_t p) const {
+    return p >= text_.size() || ends_[static_cast<unsigned char>(text_[p])];
+  }
+
+  bool read_field(csv_field& field) {
+    // Leading blanks before a quote are tolerated.
+    std::size_t p = cursor_.pos;
+    while (p < text_.size() && (text_[p] == ' ' || text_[p] == '\t')) ++p;
+    if (p < text_.size() && text_[p] == '"') return read_quoted(p, field);
+    const std::size_t start = cursor_.pos;
+    std::size_t pos = start;
+    while (pos < text_.size() && !ends_[static_cast<unsigned char>(text_[pos])]) ++pos;
+    cursor_.pos = pos;
+    // Trim blanks (a field holds no line end).
+    std::size_t first = start;
+    std::size_t last = pos;
+    while (first < last && (text_[first] == ' ' || text_[first] == '\t')) ++first;
+    while (last > first && (text_[last - 1] == ' ' || text_[last - 1] == '\t')) --last;
+    field = {text_.substr(first, last - first), cursor_.line, start - cursor_.line_start + 1};
+    return true;
+  }
+
+  bool read_quoted(std::size_t quote, csv_field& field) {
+    const std::size_t line = cursor_.line;
+    const std::size_t column = quote - cursor_.line_start + 1;
+    if (used_ == unescaped_.size()) unescaped_.emplace_back();
+    std::string& value = unescaped_[used_++];
+    value.clear();
+    cursor_.pos = quote + 1;
+    while (true) {
+      if (cursor_.pos >= text_.size()) {
+        if (!final_) return false;
+        throw csv_failure{line, column, "a quoted field is never closed"};
+      }
+      const char c = text_[cursor_.pos++];
+      if (c == '"') {
+        if (cursor_.pos >= text_.size() && !final_) return false;  // "" may be split
+        if (cursor_.pos < text_.size() && text_[cursor_.pos] == '"') {
+          value += '"';
+          ++cursor_.pos;
+          continue;
+        }
+        break;
+      }
+      if (c == '\n') new_line();
+      value += c;
+    }
+    while (cursor_.pos < text_.size() && (text_[cursor_.pos] == ' ' || text_[cursor_.pos] == '\t')) ++cursor_.pos;
+    if (cursor_.pos >= text_.size() && !final_) return false;
+    if (!at_field_end(cursor_.pos)) {
+      throw csv_failure{cursor_.line, cursor_.pos - cursor_.line_start + 1,
+                        "expected a delimiter or the end of the line after a closing quote"};
+    }
+    field = {value, line, column};
+    return true;
+  }
+
+  std::string_view text_;
+  char delimiter_;
+  bool final_;
+  csv_cursor cursor_;
+  std::size_t record_line_ = 1;
+  bool ends_[256];
+  std::deque<std::string> unescaped_;  // deque: views into it survive emplace_back
+  std::size_t used_ = 0;
+};
+
+/// Reads the records of text that holds no quote, all of whose records are whole (the final
+/// text of csv_record_reader): the same records, fields, lines and columns as that reader, in
+/// one tighter scan. The fast path of every chunk without a quote.
+class csv_plain_reader {
+ public:
+  csv_plain_reader(std::string_view text, char delimiter) : text_(text), delimiter_(delimiter) {
+    for (auto& e : ends_) e = false;
+    ends_[static_cast<unsigned char>(delimiter)] = true;
+    ends_[static_cast<unsigned char>('\n')] = true;
+    ends_[static_cast<unsigned char>('\r')] = true;
+  }
+
+  /// Line ends consumed so far.
+  [[nodiscard]] std::size_t lines() const noexcept { return line_; }
+
+  /// Reads the next non-blank record into `fields`; false at the end of the text.
+  bool next(std::vector<csv_field>& fields) {
+    fields.clear();
+    const std::size_t n = text_.size();
+    const char* const text = text_.data();
+    while (true) {  // blank lines: only blanks and CRs before a line feed
+      std::size_t p = pos_;
+      while (p < n && (text[p] == ' ' || text[p] == '\t' || text[p] == '\r')) ++p;
+      if (p >= n) {
+        pos_ = n;
+        return false;
+      }
+      if (text[p] != '\n') break;
+      pos_ = p + 1;
+      ++line_;
+      line_start_ = pos_;
+    }
+    while (true) {
+      const std::size_t start = pos_;
+      std::size_t p = start;
+      while (p < n && !ends_[static_cast<unsigned char>(text[p])]) ++p;
+      std::size_t first = start;
+      std::size_t last = p;
+      while (first < last && (text[first] == ' ' || text[first] == '\t')) ++first;
+      while (last > first && (text[last - 1] == ' ' || text[last - 1] == '\t')) --last;
+      fields.push_back({text_.substr(first, last - first), line_, start - line_start_ + 1});
+      if (p >= n) {
+        pos_ = n;
+        return true;
+      }
+      const char c = text[p++];
+      if (c == delimiter_) {
+        pos_ = p;
+        continue;
+      }
+      if (c == '\r' && p < n && text[p] == '\n') ++p;  // CRLF; else LF or a lone CR
+      pos_ = p;
+      ++line_;
+      line_start_ = p;
+      return true;
+    }
+  }
+
+ private:
+  std::string_view text_;
+  char delimiter_;
+  std::size_t pos_ = 0;
+  std::size_t line_ = 0;
+  std::size_t line_start_ = 0;
+  bool ends_[256];
+};
+
+/// Calls `on_record(fields)` for every non-blank record of `text`, which holds whole records
+/// only, and returns the line ends consumed; lines and columns in `fields` count from the start
+/// of `text` (line 0, column 1). Text without a quote takes csv_plain_reader. Throws
+/// csv_failure for bad quoting, and whatever `on_record` throws.
+template <class OnRecord>
+std::size_t for_each_record(std::string_view text, char delimiter, std::vector<csv_field>& fields,
+                            OnRecord&& on_record) {
+  if (text.find('"') == std::string_view::npos) {
+    csv_plain_reader reader(text, delimiter);
+    while (reader.next(fields)) on_record(fields);
+    return reader.lines();
+  }
+  csv_record_reader reader(text, delimiter, true, {0, 0, 0});
+  while (reader.next(fields) == csv_record::complete) on_record(fields);
+  return reader.cursor().line;
+}
+
+/// Skips a UTF-8 byte order mark at the start of the input.
+[[nodiscard]] inline std::size_t byte_order_mark(std::string_view text) {
+  return text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
+}
+
+/// The header record: column names, none empty, none repeated. Throws parse_error.
+[[nodiscard]] inline std::vector<std::string> header_names(const std::vector<csv_field>& fields,
+                                                           const std::string& source) {
+  std::vector<std::string> header;
+  for (const auto& field : fields) {
+    if (field.text.empty()) throw parse_error(source, field.line, field.column, "a column in the header has no name");
+    if (std::find(header.begin(), header.end(), field.text) != header.end()) {
+      throw parse_error(source, field.line, field.column,
+                        "the column '" + std::string(field.text) + "' appears twice in the header");
+    }
+    header.emplace_back(field.text);
+  }
+  return header;
+}
+
+/// The positions of `names` in `header`, in file order, each once; all of them for no names.
+[[nodiscard]] inline std::vector<std::size_t> column_positions(const std::vector<std::string>& header,
+                                                               const std::vector<std::string>& names,
+                                                               const std::string& source) {
+  std::vector<std::size_t> wanted;
+  if (names.empty()) {
+    for (std::size_t i = 0; i < header.size(); ++i) wanted.push_back(i);
+    return wanted;
+  }
+  for (const auto& name : names) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    if (it == header.end()) {
+      throw data_error(source + ": there is no column '" + name + "' (columns: " + list_for_message(header) + ")");
+    }
+    wanted.push_back(static_cast<std::size_t>(it - header.begin()));
+  }
+  std::sort(wanted.begin(), wanted.end());
+  wanted.erase(std::unique(wanted.begin(), wanted.end()), wanted.end());
+  return wanted;
+}
+
+/// A record with another number of fields than the header.
+[[noreturn]] inline void fail_width(const std::vector<csv_field>& fields, std::size_t width) {
+  const auto& last = fields.back();
+  throw csv_failure{
+      last.line, last.column,
+      "expected " + std::to_string(width) + " fields as in the header, found " + std::to_string(fields.size())};
+}
+
+[[noreturn]] inline void fail_field(const csv_field& field, const std::string& column, const std::string& what) {
+  throw csv_failure{field.line, field.column, "column '" + column + "': " + what};
+}
+
+[[nodiscard]] inline std::string non_finite_message(std::string_view text) {
+  return "'" + std::string(text) + "' is not a finite number (NaN and infinities are not supported)";
+}
+
+/// Missing values: today an empty field is an error. This is the one place that decides what
+/// a field without a value is (issue 18 adds NA and `?` and what to do with them).
+inline void check_present(const csv_field& field, const std::string& column) {
+  if (field.text.empty()) fail_field(field, column, "the value is empty (missing values are not supported)");
+}
+
+/// A field's number for a continuous column: fails on text and on NaN or an infinity.
+[[nodiscard]] inline double continuous_value(const csv_field& field, const std::string& column) {
+  const auto value = parse_double(field.text);
+  if (!value) fail_field(field, column, "expected a number, got '" + std::string(field.text) + "'");
+  if (!std::isfinite(*value)) fail_field(field, column, non_finite_message(field.text));
+  return *value;
+}
+
+/// The value of a label that is a small whole number written the one canonical way ("7", not
+/// "07" or "7.0"), or -1: such labels are looked up by value, with no hashing.
+[[nodiscard]] inline int small_whole_number(std::string_view text) {
+  if (text.empty() || text.size() > 3) return -1;
+  int value = 0;
+  for (char c : text) {
+    const unsigned digit = static_cast<unsigned char>(c) - static_cast<unsigned>('0');
+    if (digit > 9) return -1;
+    value = value * 10 + static_cast<int>(digit);
+  }
+  if (text.size() > 1 && text.front() == '0') return -1;
+  return value;
+}
+
+/// Where a value first appears: its line (relative to the first line of chunk `chunk` until
+/// the lines before the chunk are known) and column. Within a column, (line, column) orders
+/// fields as they stand in the file.
+struct csv_place {
+  std::size_t line = 0;
+  std::size_t column = 0;
+  std::size_t chunk = 0;
+};
+
+struct string_hash {
+  using is_transparent = void;
+  [[nodiscard]] std::size_t operator()(std::string_view text) const noexcept {
+    return std::hash<std::string_view>{}(text);
+  }
+};
+
+/// The labels of a discrete column and their provisional ids, in the order added.
+class label_dictionary {
+ public:
+  static constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
+
+  struct entry {
+    std::string text;
+    csv_place first;
+  };
+
+  [[nodiscard]] std::uint32_t find(std::string_view text) const {
+    // A one-digit label (the common case of codes) first, small enough to be inlined.
+    if (text.size() == 1 && !dense_.empty()) {
+      const unsigned digit = static_cast<unsigned char>(text[0]) - static_cast<unsigned>('0');
+      if (digit <= 9) return dense_[digit];
+    }
+    return find_any(text);
+  }
+
+  /// Adds a label that is not there yet.
+  std::uint32_t add(std::string_view text, const csv_place& first) {
+    const auto id = static_cast<std::uint32_t>(entries_.size());
+    entries_.push_back({std::string(text), first});
+    const int small = small_whole_number(text);
+    if (small >= 0) {
+      if (dense_.empty()) dense_.assign(1000, none);
+      dense_[static_cast<std::size_t>(small)] = id;
+    } else {
+      others_.emplace(entries_.back().text, id);
+    }
+    return id;
+  }
+
+  [[nodiscard]] std::size_t size() const noexcept { return entries_.size(); }
+  [[nodiscard]] const std::vector<entry>& entries() const noexcept { return entries_; }
+  [[nodiscard]] std::vector<entry>& entries() noexcept { return entries_; }
+
+ private:
+  [[nodiscard]] std::uint32_t find_any(std::string_view text) const {
+    const int small = small_whole_number(text);
+    if (small >= 0) return dense_.empty() ? none : dense_[static_cast<std::size_t>(small)];
+    const auto it = others_.find(text);
+    return it == others_.end() ? none : it->second;
+  }
+
+  std::vector<std::uint32_t> dense_;  // by value, for small_whole_number labels
+  std::unordered_map<std::string, std::uint32_t, string_hash, std::equal_to<>> others_;
+  std::vector<entry> entries_;
+};
+
+/// The states of a discrete column from its labels in order of first appearance: labels that
+/// are all numbers sort by value (and "1" and "1.0" are one state, labelled as it first
+/// appeared); others sort alphabetically. `state_of[i]` is the state of label i;
+/// `first_non_finite` the first label (in that order) that reads as NaN or an infinity when all
+/// are numbers, which is an error.
+struct state_order {
+  std::vector<std::string> states;
+  std::vector<std::uint32_t> state_of;
+  std::optional<std::size_t> first_non_finite;
+};
+
+[[nodiscard]] inline state_order order_states(const std::vector<std::string_view>& labels) {
+  std::vector<std::optional<double>> values;
+  values.reserve(labels.size());
+  bool all_numeric = true;
+  for (const auto& label : labels) {
+    values.push_back(parse_double(label));
+    all_numeric = all_numeric && values.back().has_value();
+  }
+  state_order result;
+  if (all_numeric) {
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+      if (!std::isfinite(*values[i])) {
+        result.first_non_finite = i;
+        break;
+      }
+    }
+  }
+  std::vector<std::uint32_t> order(labels.size());
+  std::iota(order.begin(), order.end(), 0u);
+  if (all_numeric) {
+    std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return *values[a] < *values[b]; });
+  } else {
+    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return labels[a] < labels[b]; });
+  }
+  result.state_of.resize(labels.size());
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    const bool same_number = all_numeric && i > 0 && *values[order[i]] == *values[order[i - 1]];
+    if (!same_number) result.states.emplace_back(labels[order[i]]);
+    result.state_of[order[i]] = static_cast<std::uint32_t>(result.states.size() - 1);
+  }
+  return result;
+}
+
+/// Splits `text`, which starts at a record boundary, into chunks of whole records that can be
+/// parsed independently: the start of every chunk, then the end of the last. A chunk is about
+/// `bytes` long and ends just after a line end; where it holds a quote, a line end may lie
+/// inside a quoted field, so a sequential scan of its records finds where it ends. Chunks
+/// stop once one ends at or past `limit`. When not `final` the text is a prefix of the input
+/// and only complete records are taken (perhaps none). Bad quoting ends the splitting: the last
+/// chunk then runs to the end of the text, where parsing meets the same problem in its place.
+[[nodiscard]] inline std::vector<std::size_t> record_chunks(std::string_view text, char delimiter, std::size_t bytes,
+                                                            std::size_t limit, bool final) {
+  std::vector<std::size_t> bounds{0};
+  std::vector<csv_field> fields;
+  std::size_t at = 0;
+  bytes = std::max<std::size_t>(bytes, 1);
+  while (at < text.size() && at < limit) {
+    const auto newline = text.find('\n', std::min(text.size(), at + bytes) - 1);
+    std::size_t end = newline == std::string_view::npos ? text.size() : newline + 1;
+    if (newline == std::string_view::npos && !final) {  // the last line may go on
+      const auto last = text.rfind('\n');
+      if (last == std::string_view::npos || last < at) break;
+      end = last + 1;
+    }
+    if (text.substr(at, end - at).find('"') != std::string_view::npos) {
+      csv_record_reader reader(text.substr(at), delimiter, final, {0, 0, 0});
+      try {
+        while (at + reader.cursor().pos < end && reader.next(fields) == csv_record::complete) {
+        }
+      } catch (const csv_failure&) {
+        bounds.push_back(text.size());
+        return bounds;
+      }
+      end = at + reader.cursor().pos;
+      if (end == at) break;  // no whole record here yet
+    }
+    bounds.push_back(end);
+    at = end;
+  }
+  return bounds;
+}
+
+}  // namespace pgm::detail

@@ -1,0 +1,118 @@
+// Data as users have it, for every command that reads a CSV: standard input ("-") and
+// gzip-compressed files, with the same results as the plain file; broken gzip and errors deep
+// in a large file named by file, line and column.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "support/program_test.hpp"
+#include "support/random_csv.hpp"
+
+namespace pgm {
+namespace {
+
+using ::testing::HasSubstr;
+
+using data_input_test = pgm::testing::program_test;
+
+// Two offsets and an outcome, raw and binned, 2000 rows.
+std::string raw_trials() {
+  std::string csv = "xOff1,yOff1,colour,onTop1\n";
+  for (int i = 0; i < 2000; ++i) {
+    const double x = (i * 37 % 200) / 40.0 - 2.5;
+    const double y = (i * 91 % 200) / 40.0 - 2.5;
+    csv += std::to_string(x) + "," + std::to_string(y) + "," + (i % 3 ? "Red" : "Blue") + "," +
+           std::to_string(x * x + y * y < 2.0 || i % 7 == 0) + "\n";
+  }
+  return csv;
+}
+
+TEST_F(data_input_test, every_command_reads_standard_input_and_gzip_alike) {
+  const auto raw = file("raw.csv", raw_trials());
+  ASSERT_EQ(std::system(("gzip -k " + raw.string()).c_str()), 0);
+  const auto gz = path("raw.csv.gz");
+  // discretize: file, stdin, gzip, gzip on stdin.
+  const std::string bins = " --bins 4 --columns xOff1,yOff1 --edges-out ";
+  const auto plain =
+      run("discretize --in " + raw.string() + bins + path("e.json").string() + " --out " + path("d.csv").string());
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  for (const std::string& input : {"- < " + raw.string(), gz.string(), "- < " + gz.string()}) {
+    const auto r =
+        run("discretize --in " + input + bins + path("e2.json").string() + " --out " + path("d2.csv").string());
+    ASSERT_EQ(r.code, 0) << input << ": " << r.err;
+    EXPECT_EQ(slurp(path("d2.csv")), slurp(path("d.csv"))) << input;
+    EXPECT_EQ(slurp(path("e2.json")), slurp(path("e.json"))) << input;
+  }
+  ASSERT_EQ(std::system(("gzip -k " + path("d.csv").string()).c_str()), 0);
+  // fit, with every way of giving the structure and the bins.
+  const std::string edges = " --edges \"xOff1->onTop1,yOff1->onTop1,colour->onTop1\"";
+  const std::vector<std::pair<std::string, std::string>> fits{
+      {path("d.csv").string(), edges + " --intervals " + path("e.json").string()},
+      {raw.string(), edges + " --discretization " + path("e.json").string()},
+      {path("d.csv").string(), edges + " --estimator bayes --prior bdeu --ess 3"},
+  };
+  for (const auto& [data, rest] : fits) {
+    const auto expected = run("fit --data " + data + rest + " --out " + path("a.json").string());
+    ASSERT_EQ(expected.code, 0) << expected.err;
+    for (const std::string& input : {"- < " + data, data + ".gz", "- < " + data + ".gz"}) {
+      const auto r = run("fit --data " + input + rest + " --out " + path("b.json").string());
+      ASSERT_EQ(r.code, 0) << input << rest << ": " << r.err;
+      EXPECT_EQ(r.out.substr(0, r.out.find(" -> ")), expected.out.substr(0, expected.out.find(" -> ")));
+      EXPECT_EQ(r.err, expected.err) << input << rest;
+      EXPECT_EQ(slurp(path("b.json")), slurp(path("a.json"))) << input << rest;
+    }
+  }
+  // fit --model and learn-structure.
+  const auto model = run("fit --data " + path("d.csv").string() + " --model " + path("a.json").string() + " --out " +
+                         path("m.json").string());
+  ASSERT_EQ(model.code, 0) << model.err;
+  const auto model_gz = run("fit --data - --model " + path("a.json").string() + " --out " + path("m2.json").string() +
+                            " < " + path("d.csv.gz").string());
+  ASSERT_EQ(model_gz.code, 0) << model_gz.err;
+  EXPECT_EQ(slurp(path("m2.json")), slurp(path("m.json")));
+  const auto learned = run("learn-structure --data " + path("d.csv").string() + " --out " + path("l.json").string());
+  ASSERT_EQ(learned.code, 0) << learned.err;
+  const auto learned_gz =
+      run("learn-structure --data - --out " + path("l2.json").string() + " < " + path("d.csv.gz").string());
+  ASSERT_EQ(learned_gz.code, 0) << learned_gz.err;
+  EXPECT_EQ(slurp(path("l2.json")), slurp(path("l.json")));
+}
+
+TEST_F(data_input_test, broken_gzip_is_an_error_naming_the_file_and_writes_nothing) {
+  auto csv = testing::make_random_csv(3, {.rows = 3000, .quotes = false}).text;
+  const auto data = file("d.csv", csv);
+  ASSERT_EQ(std::system(("gzip -k " + data.string()).c_str()), 0);
+  const auto whole = slurp(path("d.csv.gz"));
+  file("cut.csv.gz", whole.substr(0, whole.size() / 2));
+  const std::string edges = " --edges \"c0->c4\" --out ";
+  expect_failure("fit --data " + path("cut.csv.gz").string() + edges + path("f.json").string(),
+                 "pgm: error: '" + path("cut.csv.gz").string() + "' is truncated", path("f.json"));
+  expect_failure("fit --data - " + edges + path("f.json").string() + " < " + path("cut.csv.gz").string(),
+                 "pgm: error: '<stdin>' is truncated", path("f.json"));
+  expect_failure("discretize --in " + path("cut.csv.gz").string() + " --out " + path("o.csv").string(), "is truncated",
+                 path("o.csv"));
+  expect_failure("fit --data " + file("plain.csv.gz", "c0,c4\n1,0\n").string() + edges + path("f.json").string(),
+                 "plain.csv.gz' is not gzip data", path("f.json"));
+  // A problem deep in a file (past its first chunks) is reported at its place.
+  std::string big = "a,b\n";
+  for (int row = 0; row < 300000; ++row) big += std::to_string(row % 5) + "," + std::to_string(row % 2) + "\n";
+  const auto at = big.find('\n', big.size() * 3 / 4) + 1;
+  const auto line = 1 + static_cast<std::size_t>(std::count(big.begin(), big.begin() + static_cast<long>(at), '\n'));
+  big.insert(at, "3,x,1\n");
+  const auto big_file = file("big.csv", big);
+  ASSERT_EQ(std::system(("gzip -k " + big_file.string()).c_str()), 0);
+  const std::string message = ":" + std::to_string(line) + ":5: expected 2 fields as in the header, found 3";
+  expect_failure("fit --data " + big_file.string() + " --edges \"a->b\" --out " + path("f.json").string(),
+                 "big.csv" + message, path("f.json"));
+  expect_failure("fit --data - --edges \"a->b\" --out " + path("f.json").string() + " < " + path("big.csv.gz").string(),
+                 "<stdin>" + message, path("f.json"));
+}
+
+}  // namespace
+}  // namespace pgm

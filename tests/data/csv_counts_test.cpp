@@ -1,0 +1,288 @@
+#include "pgm/data/csv_counts.hpp"
+
+#include <fcntl.h>
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "pgm/data/csv.hpp"
+#include "pgm/data/discretizer.hpp"
+#include "support/folder_test.hpp"
+#include "support/random_csv.hpp"
+
+namespace pgm {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
+
+using csv_input_test = pgm::testing::folder_test;
+
+const std::vector<csv_family> random_families{
+    {"c4", {"c0", "c1"}}, {"c3", {"c2"}}, {"c1", {}}, {"c2", {"c4", "c0", "c3"}}, {"c0", {"c3", "c4"}}};
+
+csv_count_request request_for(const std::vector<csv_family>& families, unsigned threads = 0, std::size_t chunk = 0,
+                              std::size_t window = 0) {
+  csv_count_request request;
+  for (const auto& family : families) {
+    for (const auto* name : {&family.child}) request.columns.push_back(*name);
+    for (const auto& parent : family.parents) request.columns.push_back(parent);
+  }
+  request.families = families;
+  request.threads = threads;
+  request.chunk_bytes = chunk;
+  request.window_bytes = window;
+  return request;
+}
+
+/// The reference: count_family over the data set read_csv gives.
+void expect_counts_of(const csv_counts& counts, const dataset& data, const std::vector<csv_family>& families,
+                      const std::string& context) {
+  ASSERT_EQ(counts.rows, data.rows()) << context;
+  ASSERT_EQ(counts.families.size(), families.size()) << context;
+  for (std::size_t f = 0; f < families.size(); ++f) {
+    const auto expected = count_family(data, families[f].child, families[f].parents);
+    EXPECT_EQ(counts.families[f], expected) << context << " family of " << families[f].child;
+  }
+}
+
+void write_gzip(const std::filesystem::path& path, const std::string& text) {
+  gzFile out = gzopen(path.c_str(), "wb");
+  ASSERT_NE(out, nullptr);
+  ASSERT_EQ(gzwrite(out, text.data(), static_cast<unsigned>(text.size())), static_cast<int>(text.size()));
+  ASSERT_EQ(gzclose(out), Z_OK);
+}
+
+csv_options discrete_options() {
+  csv_options options;
+  options.default_kind = column_kind::discrete;
+  return options;
+}
+
+TEST(csv_counts_test, equal_in_memory_counts_for_any_threads_chunks_and_windows) {
+  for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+    const auto csv = testing::make_random_csv(seed, {.rows = 300, .final_newline = seed % 2 == 0});
+    const auto data = parse_csv(csv.text, "r.csv", discrete_options());
+    ASSERT_EQ(data.rows(), csv.rows);
+    for (unsigned threads : {1u, 2u, 3u, 8u}) {
+      for (std::size_t chunk : {1u, 7u, 64u, 0u}) {
+        for (std::size_t window : {1u, 50u, 0u}) {
+          csv_reader input(csv.text, "r.csv");
+          const auto counts = count_csv(input, request_for(random_families, threads, chunk, window));
+          expect_counts_of(counts, data, random_families,
+                           "seed " + std::to_string(seed) + " threads " + std::to_string(threads) + " chunk " +
+                               std::to_string(chunk) + " window " + std::to_string(window));
+        }
+      }
+    }
+  }
+}
+
+TEST_F(csv_input_test, equal_in_memory_counts_when_streamed_from_gzip) {
+  // A stream is held a window at a time: records, quoted line ends and CRLFs cross windows.
+  for (std::uint64_t seed = 5; seed <= 7; ++seed) {
+    const auto csv = testing::make_random_csv(seed, {.rows = 300});
+    const auto data = parse_csv(csv.text, path("r.csv.gz").string(), discrete_options());
+    write_gzip(path("r.csv.gz"), csv.text);
+    for (std::size_t window : {1u, 13u, 200u, 0u}) {
+      csv_reader input(path("r.csv.gz"));
+      const auto counts = count_csv(input, request_for(random_families, 2, 5, window));
+      expect_counts_of(counts, data, random_families, "gzip window " + std::to_string(window));
+    }
+    EXPECT_EQ(read_csv(path("r.csv.gz"), discrete_options()), data);
+  }
+}
+
+TEST_F(csv_input_test, a_pipe_is_streamed) {
+  const auto csv = testing::make_random_csv(11, {.rows = 400});
+  const auto fifo = path("pipe.csv");
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  // The writer hands the text over in small pieces, so that reads return part of a record.
+  auto write_slowly = [&] {
+    const int fd = ::open(fifo.c_str(), O_WRONLY);
+    for (std::size_t at = 0; at < csv.text.size(); at += 61) {
+      const auto piece = csv.text.substr(at, 61);
+      if (::write(fd, piece.data(), piece.size()) != static_cast<ssize_t>(piece.size())) break;
+    }
+    ::close(fd);
+  };
+  const auto data = parse_csv(csv.text, fifo.string(), discrete_options());
+  {
+    std::jthread writer(write_slowly);
+    csv_reader input(fifo);
+    expect_counts_of(count_csv(input, request_for(random_families, 2, 16, 40)), data, random_families, "pipe");
+  }
+  {
+    std::jthread writer(write_slowly);
+    EXPECT_EQ(read_csv(fifo, discrete_options()), data);
+  }
+}
+
+TEST(csv_counts_test, known_states_and_binned_columns) {
+  const auto csv = testing::make_random_csv(21, {.rows = 400});
+  std::vector<std::string> reversed;
+  for (int v = 12; v >= 0; --v) reversed.push_back(std::to_string(v));
+  const variable c0("c0", reversed);
+  const auto c1 = variable::intervals("c1", {-5, 0, 2, 10});
+
+  csv_options options = discrete_options();
+  options.variables.emplace("c0", c0);
+  options.kinds["c1"] = column_kind::continuous;
+  const auto raw = parse_csv(csv.text, "r.csv", options);
+  const auto data = apply_discretization(raw, {{"c1", c1}});
+  std::size_t outside = 0;
+  for (double v : raw.continuous("c1").values()) outside += v < -5 || v > 10;
+  ASSERT_GT(outside, 0u);
+
+  const std::vector<csv_family> families{{"c0", {"c1", "c4"}}, {"c1", {"c0"}}};
+  for (std::size_t chunk : {3u, 0u}) {
+    auto request = request_for(families, 3, chunk, 100);
+    request.variables.emplace("c0", c0);
+    request.intervals.emplace("c1", c1);
+    csv_reader input(csv.text, "r.csv");
+    const auto counts = count_csv(input, request);
+    expect_counts_of(counts, data, families, "known and binned");
+    EXPECT_EQ(counts.variables[0], c0);  // the given states, in the given order
+    EXPECT_EQ(counts.variables[1], c1);
+    EXPECT_EQ(counts.outside.at("c1"), outside);
+  }
+}
+
+TEST(csv_counts_test, states_are_sorted_as_read_csv_sorts_them) {
+  // "1" and "1.0" are one state, labelled as it first appears; "-0" equals "0".
+  const std::string text = "n,w\n10,b\n1.0,a\n-0,c\n9,b\n1,a\n0,a\n1e3,c\n";
+  for (std::size_t chunk : {1u, 0u}) {
+    auto request = request_for({{"n", {"w"}}}, 2, chunk, 0);
+    csv_reader input(text, "t.csv");
+    const auto counts = count_csv(input, request);
+    EXPECT_EQ(counts.variables[0].states(), (std::vector<std::string>{"-0", "1.0", "9", "10", "1e3"}));
+    EXPECT_EQ(counts.variables[1].states(), (std::vector<std::string>{"a", "b", "c"}));
+    const auto& table = counts.families[0];
+    // n = 1.0 (two rows, both with w = a)
+    EXPECT_EQ(table(state_index(1), config_index(0)), 2u);
+    EXPECT_EQ(table.total(), 7u);
+  }
+}
+
+TEST(csv_counts_test, partial_counts_of_byte_ranges_add_up) {
+  const auto csv = testing::make_random_csv(31, {.rows = 600, .quotes = false});
+  const auto data = parse_csv(csv.text, "r.csv", discrete_options());
+  csv_reader input(csv.text, "r.csv");
+  const auto request = request_for(random_families, 2, 50, 0);
+  const csv_counter counter("r.csv", input.header(), request);
+  // The body after the header, split at a line end near its middle.
+  const auto body_start = csv.text.find('\n') + 1;
+  const auto body = std::string_view(csv.text).substr(body_start);
+  const auto split = body.find('\n', body.size() / 2) + 1;
+  auto first = counter.count(body.substr(0, split), 2);
+  auto second = counter.count(body.substr(split), 2 + first.lines());
+  EXPECT_EQ(first.rows() + second.rows(), data.rows());
+  csv_partial_counts total;
+  total += std::move(second);  // the order of the sum does not matter
+  total += std::move(first);
+  expect_counts_of(counter.finish(total), data, random_families, "ranges");
+}
+
+TEST(csv_counts_test, errors_in_the_middle_name_their_line_and_column) {
+  std::string text = "a,b\n";
+  for (int row = 0; row < 3000; ++row) text += std::to_string(row % 3) + "," + std::to_string(row % 2) + "\n";
+  auto with_row = [&](std::size_t row, const std::string& line, const std::string& base = {}) {
+    // Data row `row` (1-based) is on line row + 1.
+    std::string changed = base.empty() ? text : base;
+    std::size_t at = 0;
+    for (std::size_t r = 0; r < row; ++r) at = changed.find('\n', at) + 1;
+    const auto end = changed.find('\n', at);
+    return changed.replace(at, end - at, line);
+  };
+  const variable b("b", {"0", "1"});
+  auto count = [&](const std::string& csv) {
+    auto request = request_for({{"a", {"b"}}}, 4, 64, 1000);
+    request.variables.emplace("b", b);
+    csv_reader input(csv, "big.csv");
+    return count_csv(input, request);
+  };
+  auto read = [&](const std::string& csv) {
+    csv_options options = discrete_options();
+    options.variables.emplace("b", b);
+    options.threads = 4;
+    options.chunk_bytes = 64;
+    return parse_csv(csv, "big.csv", options);
+  };
+  const auto bad_state = with_row(1500, "0,x");
+  const std::string state_message = "big.csv:1501:3: column 'b': 'x' is not a state of 'b' (states: 0, 1)";
+  EXPECT_THAT([&] { (void)count(bad_state); }, ThrowsMessage<parse_error>(HasSubstr(state_message)));
+  EXPECT_THAT([&] { (void)read(bad_state); }, ThrowsMessage<parse_error>(HasSubstr(state_message)));
+  // Of two errors, the one earlier in the file, whichever thread meets it.
+  const auto two = with_row(2900, "1");
+  const auto both = with_row(1500, "0,x", two);
+  EXPECT_THAT([&] { (void)count(both); }, ThrowsMessage<parse_error>(HasSubstr(state_message)));
+  EXPECT_THAT([&] { (void)read(both); }, ThrowsMessage<parse_error>(HasSubstr(state_message)));
+  const std::string ragged = "big.csv:2901:1: expected 2 fields as in the header, found 1";
+  EXPECT_THAT([&] { (void)count(two); }, ThrowsMessage<parse_error>(HasSubstr(ragged)));
+  EXPECT_THAT([&] { (void)read(two); }, ThrowsMessage<parse_error>(HasSubstr(ragged)));
+  const auto unclosed = with_row(2000, "\"1,0");
+  EXPECT_THAT([&] { (void)count(unclosed); },
+              ThrowsMessage<parse_error>(HasSubstr("big.csv:2001:1: a quoted field is never closed")));
+  // Found when the states are sorted, after the whole file: still at its place.
+  const auto not_finite = with_row(1200, "nan,1");
+  const std::string nan_message = "big.csv:1201:1: column 'a': 'nan' is not a finite number";
+  EXPECT_THAT([&] { (void)count(not_finite); }, ThrowsMessage<parse_error>(HasSubstr(nan_message)));
+  EXPECT_THAT([&] { (void)read(not_finite); }, ThrowsMessage<parse_error>(HasSubstr(nan_message)));
+  EXPECT_THAT([&] { (void)count("a,b\n\n"); }, ThrowsMessage<data_error>(HasSubstr("big.csv: there are no data rows")));
+  EXPECT_THAT([&] { (void)count("a,c\n1,2\n"); },
+              ThrowsMessage<data_error>(HasSubstr("big.csv: there is no column 'b' (columns: a, c)")));
+}
+
+TEST_F(csv_input_test, corrupt_and_truncated_gzip_are_errors_naming_the_file) {
+  const auto csv = testing::make_random_csv(41, {.rows = 2000});
+  write_gzip(path("good.csv.gz"), csv.text);
+  const auto bytes = slurp(path("good.csv.gz"));
+  ASSERT_GT(bytes.size(), 100u);
+  const auto truncated = path("cut.csv.gz");
+  std::ofstream(truncated, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  // The first deflate block (after the 10-byte header) of an impossible type, and a wrong
+  // checksum in the trailer (found only at the end of the data).
+  auto corrupt_bytes = bytes;
+  corrupt_bytes[10] = static_cast<char>(corrupt_bytes[10] | 0x06);
+  const auto corrupt = path("bad.csv.gz");
+  std::ofstream(corrupt, std::ios::binary) << corrupt_bytes;
+  auto wrong_check = bytes;
+  wrong_check[bytes.size() - 8] = static_cast<char>(~wrong_check[bytes.size() - 8]);
+  std::ofstream(path("check.csv.gz"), std::ios::binary) << wrong_check;
+  const auto plain = file("plain.csv.gz", "a,b\n1,2\n");
+  std::ofstream(path("trailing.csv.gz"), std::ios::binary) << bytes << "garbage";
+
+  auto count = [&](const std::filesystem::path& p) {
+    csv_reader input(p);
+    return count_csv(input, request_for(random_families, 2, 0, 1000));
+  };
+  EXPECT_THAT([&] { (void)count(truncated); }, ThrowsMessage<io_error>(HasSubstr("cut.csv.gz' is truncated")));
+  EXPECT_THAT([&] { (void)read_csv(truncated); }, ThrowsMessage<io_error>(HasSubstr("cut.csv.gz' is truncated")));
+  EXPECT_THAT([&] { (void)count(corrupt); }, ThrowsMessage<io_error>(HasSubstr("bad.csv.gz' is corrupt")));
+  EXPECT_THAT([&] { (void)count(path("check.csv.gz")); },
+              ThrowsMessage<io_error>(
+                  HasSubstr("check.csv.gz' is corrupt: cannot inflate its gzip data (incorrect data check)")));
+  EXPECT_THAT([&] { (void)read_csv(plain); }, ThrowsMessage<io_error>(HasSubstr("plain.csv.gz' is not gzip data")));
+  EXPECT_THAT([&] { (void)count(path("trailing.csv.gz")); },
+              ThrowsMessage<io_error>(HasSubstr("data after the end of the gzip stream is not gzip")));
+  EXPECT_THAT([&] { (void)read_csv(path("absent.csv")); },
+              ThrowsMessage<io_error>(HasSubstr("cannot open '" + path("absent.csv").string() + "'")));
+  EXPECT_THAT([&] { (void)read_csv(dir_); }, ThrowsMessage<io_error>(HasSubstr("it is a directory")));
+  // Members one after another read as one text, as gzip writes them.
+  const std::string first = "a,b\n1,2\n";
+  write_gzip(path("one.gz"), first);
+  write_gzip(path("two.gz"), "3,4\n");
+  std::ofstream(path("both.csv.gz"), std::ios::binary) << slurp(path("one.gz")) << slurp(path("two.gz"));
+  EXPECT_EQ(read_csv(path("both.csv.gz")).rows(), 2u);
+}
+
+}  // namespace
+}  // namespace pgm
