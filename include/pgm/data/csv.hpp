@@ -11,7 +11,6 @@
 #include <deque>
 #include <filesystem>
 #include <map>
-#include <numeric>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -23,6 +22,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/data/state_order.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/detail/text.hpp"
 
@@ -264,34 +264,13 @@ class csv_column_builder {
     if (labels_.empty()) {
       throw data_error(*source_ + ": column '" + name_ + "' has no values to take states from");
     }
-    // Labels that are all numbers sort by value (and "1" and "1.0" are one state);
-    // others sort alphabetically.
-    std::vector<std::optional<double>> values;
-    bool all_numeric = true;
-    for (const auto& label : labels_) {
-      values.push_back(parse_double(label));
-      all_numeric = all_numeric && values.back().has_value();
-    }
-    if (all_numeric && first_non_finite_) {
+    // Numbers by value, other labels alphabetically (pgm/data/state_order.hpp).
+    auto order = order_states(labels_);
+    if (order.numeric && first_non_finite_) {
       fail(*first_non_finite_, non_finite_message(first_non_finite_text_));
     }
-    std::vector<std::uint32_t> order(labels_.size());
-    std::iota(order.begin(), order.end(), 0u);
-    if (all_numeric) {
-      std::stable_sort(order.begin(), order.end(),
-                       [&](auto a, auto b) { return *values[a] < *values[b]; });
-    } else {
-      std::sort(order.begin(), order.end(), [&](auto a, auto b) { return labels_[a] < labels_[b]; });
-    }
-    std::vector<std::uint32_t> state_of(labels_.size());
-    std::vector<std::string> states;
-    for (std::size_t i = 0; i < order.size(); ++i) {
-      const bool same_number = all_numeric && i > 0 && *values[order[i]] == *values[order[i - 1]];
-      if (!same_number) states.push_back(labels_[order[i]]);
-      state_of[order[i]] = static_cast<std::uint32_t>(states.size() - 1);
-    }
-    for (auto& code : codes_) code = state_of[code];
-    return discrete_column(variable(name_, std::move(states)), codes_);
+    for (auto& code : codes_) code = order.state_of[code];
+    return discrete_column(variable(name_, std::move(order.states)), codes_);
   }
 
   static std::string non_finite_message(std::string_view text) {
