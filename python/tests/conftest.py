@@ -118,3 +118,11 @@ def releases_the_gil(monkeypatch, core_function, call):
         sys.setswitchinterval(interval)
     assert "result" in state, "the call failed"
     return released, state["result"]
+
+
+def python_blocks(document):
+    """The ```python blocks of a Markdown file of the repository, in order."""
+    import re
+
+    text = (SOURCE_DIR / document).read_text(encoding="utf-8")
+    return re.findall(r"^```python\n(.*?)^```$", text, flags=re.DOTALL | re.MULTILINE)

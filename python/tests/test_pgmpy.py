@@ -8,7 +8,7 @@ without pgmpy, every test here is skipped with the reason below.
 
 import numpy as np
 import pytest
-from conftest import SOURCE_DIR, stacking_frame
+from conftest import SOURCE_DIR, python_blocks, stacking_frame
 
 import pgm
 
@@ -77,3 +77,14 @@ def test_a_model_fitted_by_pgmpy_comes_over():
 def test_something_else_is_refused():
     with pytest.raises(TypeError, match="expected a pgmpy"):
         pgm.from_pgmpy("not a model")
+
+
+def test_the_round_trip_of_docs_python_md_runs_as_written(capsys):
+    first, round_trip = python_blocks("docs/python.md")
+    names = {}
+    exec(compile(first, "docs/python.md", "exec"), names)
+    exec(compile(round_trip, "docs/python.md", "exec"), names)
+    assert "onTop2" in capsys.readouterr().out
+    for name in names["minimal"].variables:
+        assert names["back"].states(name) == names["minimal"].states(name)
+        assert names["back"].cpt(name).equals(names["minimal"].cpt(name))
