@@ -1,7 +1,9 @@
 #include "columns.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string_view>
 #include <unordered_map>
@@ -71,10 +73,59 @@ code_vector fill_codes(std::size_t cardinality, std::size_t rows, F&& code_of) {
 /// Values spanning fewer than this many integers are mapped by a table, others by search.
 constexpr std::uint64_t dense_range = std::uint64_t{1} << 20;
 
+/// The states of the distinct values, in order, each named by its decimal text as the CSV
+/// reader would read it, ordered as that reader orders them (by value).
+template <class T>
+state_order order_values(const std::vector<T>& distinct) {
+  std::vector<std::string> labels;
+  labels.reserve(distinct.size());
+  for (const T v : distinct) labels.push_back(std::to_string(v));
+  return order_states(labels);
+}
+
+/// Values below this are read in one pass, as the codes of a byte-wide table (codes such as
+/// 0..k-1, the usual case); others take a pass for the range first.
+constexpr std::uint64_t byte_values = 256;
+
+/// The column when every value is in [0, 256): the values are copied as bytes in one pass over
+/// the (wide) input, the ones seen marked from the bytes, and the bytes mapped to their states
+/// if those are not the values themselves.
+/// None when a value is outside (the caller then takes the general way).
+template <class T>
+std::optional<discrete_column> byte_column(const std::string& name, std::span<const T> values) {
+  std::vector<std::uint8_t> codes(values.size());
+  std::uint64_t bits = 0;  // every bit set in some value: ≥ 256 when a value is (or is negative)
+  for (std::size_t r = 0; r < values.size(); ++r) {  // branch-free, so that it vectorizes
+    const auto v = static_cast<std::uint64_t>(values[r]);
+    bits |= v;
+    codes[r] = static_cast<std::uint8_t>(v);
+  }
+  if (bits >= byte_values) return std::nullopt;
+  std::array<std::uint8_t, byte_values> seen{};
+  for (const auto c : codes) seen[c] = 1;
+  std::vector<T> distinct;
+  for (std::size_t v = 0; v < byte_values; ++v) {
+    if (seen[v]) distinct.push_back(static_cast<T>(v));
+  }
+  auto order = order_values(distinct);
+  std::array<std::uint8_t, byte_values> state{};
+  bool own = true;  // each value is its own state: 0..k-1, all seen
+  for (std::size_t i = 0; i < distinct.size(); ++i) {
+    const auto v = static_cast<std::size_t>(distinct[i]);
+    state[v] = static_cast<std::uint8_t>(order.state_of[i]);
+    own = own && state[v] == v;
+  }
+  if (!own) {
+    for (auto& c : codes) c = state[c];
+  }
+  return discrete_column(variable(name, std::move(order.states)), code_vector(std::move(codes)), std::in_place);
+}
+
 /// An integer column: its states are the values seen, ordered as the CSV reader orders them.
 template <class T>
 discrete_column integer_column(const std::string& name, std::span<const T> values, const std::string& source) {
   if (values.empty()) throw data_error(where(source, name) + " has no values to take states from");
+  if (auto column = byte_column(name, values)) return std::move(*column);
   T lo = values.front();
   T hi = values.front();
   for (const T v : values) {  // a plain loop, which the compiler vectorizes
@@ -102,10 +153,7 @@ discrete_column integer_column(const std::string& name, std::span<const T> value
     std::sort(distinct.begin(), distinct.end());
     distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
   }
-  std::vector<std::string> labels;
-  labels.reserve(distinct.size());
-  for (const T v : distinct) labels.push_back(std::to_string(v));
-  auto order = order_states(labels);
+  auto order = order_values(distinct);
   const auto cardinality = order.states.size();
   code_vector codes;
   if (!table.empty()) {

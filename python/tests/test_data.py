@@ -32,6 +32,7 @@ def states_by_cli(program, tmp_path, column):
         (pd.Categorical([3, 1, 3], categories=[3, 2, 1]), ["1", "3"]),
         (pd.array([4, 2, 4], dtype="Int64"), ["2", "4"]),
         (np.array([7, 0, 7], dtype=np.uint8), ["0", "7"]),
+        (np.array([300, 2, 300], dtype=np.int64), ["2", "300"]),
     ],
 )
 def test_states_are_the_values_seen_in_the_clis_order(program, tmp_path, column, states):
@@ -59,6 +60,15 @@ def test_codes_follow_the_states():
     frame = pd.DataFrame({"a": ["y", "x", "y", "y"], "b": [1, 1, 0, 1]})
     table = pgm.fit(frame, "a->b").cpt("b")
     assert list(table["a"]) == ["x", "y"]
+    assert list(table["1"]) == [1.0, 2 / 3]
+
+
+@pytest.mark.parametrize("values", [[7, 0, 7, 7], [1, 0, 1, 1], [700, -1, 700, 700]])
+def test_integer_codes_follow_the_states(values):
+    # Codes 0..k-1 are copied as they are; other small values are mapped, large ones looked up.
+    frame = pd.DataFrame({"a": np.array(values, dtype=np.int64), "b": [1, 1, 0, 1]})
+    table = pgm.fit(frame, "a->b").cpt("b")
+    assert list(table["a"]) == [str(values[1]), str(values[0])]
     assert list(table["1"]) == [1.0, 2 / 3]
 
 
