@@ -1,10 +1,10 @@
 #include "cli/transfer_arguments.hpp"
 
+#include <cmath>
 #include <iostream>
 
 #include "cli/common.hpp"
-#include "pgm/transfer/propose.hpp"
-#include "pgm/transfer/registry.hpp"
+#include "pgm/detail/text.hpp"
 
 namespace pgm::cli {
 
@@ -28,11 +28,31 @@ void add_transfer_options(CLI::App& command, transfer_arguments& args, bool with
       ->capture_default_str();
 }
 
-correspondence resolve_map(const transfer_arguments& args, const bayesian_network& prior, const network_structure& target) {
+transfer_settings settings_of(const transfer_arguments& args) {
+  transfer_settings settings;
+  settings.strategy = args.strategy;
+  settings.map = args.map;
+  settings.success = args.success;
+  settings.matching = args.matching == "overlap" ? state_matching::overlap : state_matching::midpoint;
+  if (args.w_prior == "auto") {
+    settings.weight.reset();
+  } else {
+    settings.weight = detail::parse_double(args.w_prior);
+    if (!settings.weight || !std::isfinite(*settings.weight) || *settings.weight < 0) {
+      throw error("--w-prior must be a number ≥ 0 or auto, got '" + args.w_prior + "'");
+    }
+  }
+  return settings;
+}
+
+void require_map(const transfer_arguments& args) {
   if (args.map.empty()) throw error("--prior-model needs --map, e.g. --map \"onTop2=onTop1,xOff2~xOff1\" or --map auto");
-  if (args.map != "auto") return parse_correspondence(args.map);
-  const auto map = propose_correspondence({&target, nullptr}, {&prior.structure(), &prior});
-  note("--map auto: " + to_string(map));
+}
+
+correspondence resolve_map(const transfer_arguments& args, const bayesian_network& prior, const network_structure& target) {
+  require_map(args);
+  const auto map = resolve_correspondence(args.map, prior, target);
+  if (args.map == "auto") note("--map auto: " + to_string(map));
   return map;
 }
 
@@ -40,10 +60,7 @@ std::map<std::string, transferred_prior, std::less<>> resolve_priors(const trans
                                                                      const bayesian_network& prior,
                                                                      const network_structure& target,
                                                                      const correspondence& map) {
-  transfer_options options;
-  options.success_state = args.success;
-  options.matching = args.matching == "overlap" ? state_matching::overlap : state_matching::midpoint;
-  return transfer_priors(prior, target, map, transfer_registry::instance().at(args.strategy), options);
+  return transfer_priors(prior, target, map, settings_of(args));
 }
 
 }  // namespace pgm::cli

@@ -1,32 +1,13 @@
 #include "commands/decide_common.hpp"
 
-#include <nlohmann/json.hpp>
-
 #include "cli/common.hpp"
-#include "pgm/detail/file.hpp"
 #include "pgm/detail/text.hpp"
-#include "pgm/io/network_file.hpp"
 
 namespace pgm::cli {
 
 decision_model read_decision_model(const std::string& path, const std::string& success_text) {
   require_extension(path, network_extensions);
-  auto network = read_network(path);
-  if (!success_text.empty()) return {network, parse_success_event(success_text, network)};
-  if (format_of(path) == network_format::json) {
-    // The model reader has checked the file; only the optional metadata is read here.
-    const auto document = nlohmann::json::parse(detail::read_file(path), nullptr, false);
-    const auto metadata = document.find("metadata");
-    if (metadata != document.end() && metadata->is_object()) {
-      const auto success = metadata->find("success");
-      if (success != metadata->end()) {
-        if (!success->is_string()) throw data_error(path + ": /metadata/success: expected a string such as \"onTop2=1\"");
-        return {network, parse_success_event(success->get<std::string>(), network)};
-      }
-    }
-  }
-  auto success = default_success_event(network);
-  return {std::move(network), std::move(success)};
+  return pgm::read_decision_model(path, success_text);
 }
 
 std::string describe_state(const variable& v, std::size_t state) {

@@ -8,15 +8,10 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/decide/assignment.hpp"
+#include "pgm/decide/decision_model.hpp"
 #include "pgm/decide/predict.hpp"
 
 namespace pgm::cli {
-
-/// The network of a .bif or .json model file.
-struct decision_model {
-  bayesian_network network;
-  success_event success;
-};
 
 /// The options `pgm predict` and `pgm prevent` share: the model, the plan, the success event and
 /// what to do with unassigned parents.
@@ -30,8 +25,7 @@ struct decision_arguments {
 /// Adds --model, --assign, --success and --marginalize to `command`.
 void add_decision_options(CLI::App& command, decision_arguments& args);
 
-/// Reads the model and settles the success event: `success_text` ("onTop2=1") if given, else
-/// a JSON model's "metadata": {"success": "onTop2=1"} if present, else default_success_event.
+/// Reads the model (a .bif or .json file) and settles the success event (pgm::read_decision_model).
 decision_model read_decision_model(const std::string& path, const std::string& success_text);
 
 /// "2 [-0.4, 0.4) cm" for an interval state, the label otherwise.

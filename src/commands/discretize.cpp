@@ -2,12 +2,12 @@
 
 #include <filesystem>
 #include <iostream>
-#include <set>
 #include <sstream>
 #include <string>
 
 #include "cli/common.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/data/bin_columns.hpp"
 #include "pgm/data/csv.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/io/json_model.hpp"
@@ -57,40 +57,20 @@ void run_discretize(const discretize_arguments& args) {
     for (const auto& name : wanted) options.kinds.emplace(name, column_kind::continuous);
   }
   const auto data = read_csv(args.in, options);
-  discretization fitted;
+  column_binning request;
+  request.columns = wanted;
+  request.method = args.method == "quantile" ? binning::quantile : binning::equal_width;
+  request.bins = args.bins;
   if (args.method == "edges") {
-    const auto saved = read_discretization_json(args.edges_in);
-    for (const auto& [name, v] : saved) {
-      if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), name) == wanted.end()) continue;
-      fitted.emplace(name, v);
-    }
-    for (const auto& name : wanted) {
-      if (!saved.contains(name)) throw data_error("'" + args.edges_in + "' has no edges for '" + name + "'");
-    }
-  } else {
-    std::vector<std::string> columns = wanted;
-    if (columns.empty()) {
-      // Every numeric column with more distinct values than bins; outcomes such as 0/1 stay.
-      for (const auto& c : data.columns()) {
-        const auto* values = std::get_if<continuous_column>(&c);
-        if (!values) continue;
-        std::set<double> distinct;
-        for (double v : values->values()) {
-          if (distinct.insert(v).second && distinct.size() > args.bins) break;
-        }
-        if (distinct.size() > args.bins) {
-          columns.push_back(values->name());
-        } else {
-          note("left '" + values->name() + "' as it is: it has only " + std::to_string(distinct.size()) +
-               " distinct values");
-        }
-      }
-      if (columns.empty()) throw data_error(args.in + ": no numeric column has more than " + std::to_string(args.bins) + " distinct values to bin");
-    }
-    fitted = fit_discretization(data, columns, args.method == "quantile" ? binning::quantile : binning::equal_width,
-                                args.bins);
+    request.saved = read_discretization_json(args.edges_in);
+    request.saved_source = args.edges_in;
   }
-  const auto binned = apply_discretization(data, fitted);
+  const auto result = bin_columns(data, request);
+  for (const auto& [name, distinct] : result.left) {
+    note("left '" + name + "' as it is: it has only " + std::to_string(distinct) + " distinct values");
+  }
+  const auto& fitted = result.edges;
+  const auto& binned = result.data;
   // Both outputs are complete in memory before either file is written.
   std::ostringstream csv_text;
   write_csv(binned, csv_text);

@@ -1,8 +1,6 @@
 // pgm fit: estimate every table of a network from data.
 
 #include <algorithm>
-#include <cmath>
-#include <exception>
 #include <iostream>
 #include <optional>
 #include <span>
@@ -16,8 +14,9 @@
 #include "pgm/data/csv_counts.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
+#include "pgm/learn/estimator_choice.hpp"
 #include "pgm/learn/fit.hpp"
-#include "pgm/transfer/prior_weight.hpp"
+#include "pgm/transfer/transfer_settings.hpp"
 
 namespace pgm::cli {
 namespace {
@@ -39,33 +38,20 @@ struct fit_arguments {
 };
 
 /// Sets the weighted prior (eq. 8) of every node the map transfers to, choosing w from the
-/// counts when asked.
-void add_transferred_priors(const fit_arguments& args, const network_structure& structure,
-                            const std::vector<count_table>& counts, fit_options& options) {
-  std::optional<double> fixed_weight;
-  if (args.transfer.w_prior != "auto") {
-    fixed_weight = detail::parse_double(args.transfer.w_prior);
-    if (!fixed_weight || !std::isfinite(*fixed_weight) || *fixed_weight < 0) {
-      throw error("--w-prior must be a number ≥ 0 or auto, got '" + args.transfer.w_prior + "'");
-    }
-  }
+/// data when asked, and says what was chosen.
+void use_prior_model(const fit_arguments& args, const network_structure& structure, const std::vector<count_table>& counts,
+                     fit_options& options) {
+  const auto settings = settings_of(args.transfer);
   const auto prior = read_network(args.transfer.prior_model);
-  const auto map = resolve_map(args.transfer, prior, structure);
-  const auto priors = resolve_priors(args.transfer, prior, structure, map);
-  std::map<std::string, double, std::less<>> weights;
-  for (const auto& [node, transferred] : priors) {
-    if (!fixed_weight) {
-      const auto choice = choose_prior_weight(counts[structure.id(node).value()], transferred.table());
-      note("--w-prior auto for '" + node + "': " + choice.reason);
-      weights.emplace(node, choice.weight);
-    } else {
-      weights.emplace(node, *fixed_weight);
-    }
+  require_map(args.transfer);
+  const auto report = pgm::add_transferred_priors(options, structure, std::span<const count_table>(counts), prior, settings);
+  if (report.map_proposed) note("--map auto: " + to_string(report.map));
+  for (const auto& [node, entry] : report.nodes) {
+    if (entry.reason) note("--w-prior auto for '" + node + "': " + *entry.reason);
   }
-  use_transferred_priors(options, priors, weights);
-  for (const auto& [node, w] : weights) {
-    note("'" + node + "' gets the " + args.transfer.strategy + " prior from '" + map.transferred.at(node) + "' with w = " +
-         detail::format_short(w));
+  for (const auto& [node, entry] : report.nodes) {
+    note("'" + node + "' gets the " + args.transfer.strategy + " prior from '" + entry.prior_node + "' with w = " +
+         detail::format_short(entry.weight));
   }
 }
 
@@ -81,25 +67,10 @@ std::vector<csv_family> families_of(const network_structure& structure) {
   return families;
 }
 
-parameter_prior make_prior(const fit_arguments& args) {
-  if (args.estimator == "mle") {
-    if (!args.prior.empty() || args.alpha || args.ess) {
-      throw error("--prior, --alpha and --ess apply to --estimator bayes");
-    }
-    return no_prior{};
-  }
-  const auto prior = args.prior.empty() ? std::string("bdeu") : args.prior;
-  if (args.alpha && prior != "dirichlet") throw error("--alpha applies to --prior dirichlet");
-  if (args.ess && prior != "bdeu") throw error("--ess applies to --prior bdeu");
-  if (prior == "dirichlet") return dirichlet_prior{args.alpha.value_or(1.0)};
-  if (prior == "k2") return k2_prior{};
-  return bdeu_prior{args.ess.value_or(1.0)};
-}
-
 void run_fit(const fit_arguments& args) {
   require_extension(args.out, network_extensions);
   fit_options options;
-  options.prior = make_prior(args);
+  options.prior = prior_of({args.estimator, args.prior, args.alpha, args.ess});
   options.estimation.empty = args.empty == "fail" ? empty_configuration::fail : empty_configuration::uniform;
   options.counting.threads = args.threads;
 
@@ -152,17 +123,7 @@ void run_fit(const fit_arguments& args) {
     structure = network_structure(counted.variables, edges);
   }
   if (!args.intervals_file.empty()) {
-    for (const auto& [name, intervals] : read_discretization_json(args.intervals_file)) {
-      if (!structure.contains(name)) continue;
-      const auto& own = structure.at(name);
-      if (own.states() != intervals.states()) {
-        throw data_error("'" + args.intervals_file + "' gives '" + name + "' the states {" +
-                         detail::list_for_message(intervals.states()) + "}, the data {" +
-                         detail::list_for_message(own.states()) + "}" +
-                         (own.cardinality() > intervals.cardinality() ? "; are the columns still raw? use --discretization" : ""));
-      }
-      structure.update_variable(variable::with_edges(name, own.states(), intervals.edges(), intervals.tags()));
-    }
+    structure = with_intervals(std::move(structure), read_discretization_json(args.intervals_file), args.intervals_file);
   }
   // The counts under the structure's variables, which may carry intervals and tags.
   std::vector<count_table> counts;
@@ -178,7 +139,7 @@ void run_fit(const fit_arguments& args) {
     counts.push_back(family.with_variables(structure.at(node), std::move(parents)));
   }
   if (!args.transfer.prior_model.empty()) {
-    add_transferred_priors(args, structure, counts, options);
+    use_prior_model(args, structure, counts, options);
   } else if (!args.transfer.map.empty()) {
     throw error("--map applies with --prior-model");
   }

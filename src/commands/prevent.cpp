@@ -28,7 +28,7 @@ void run_prevent(const prevent_arguments& args) {
   const auto planned = read_assignment(args.decision.assign, network);
   std::vector<std::string> controllable;
   if (args.controllable.empty()) {
-    for (const auto& p : network.table(model.success.variable).parents()) controllable.push_back(p.name());
+    controllable = default_controllable(network, model.success);
     note("no --controllable given: every parent of '" + model.success.variable + "' may move (" +
          detail::join(controllable) + ")");
   } else {
@@ -67,17 +67,15 @@ void run_prevent(const prevent_arguments& args) {
     std::cout << '\n';
   }
   std::cout << "suggested values:\n";
+  const auto suggested = suggested_values(why, planned);
   for (const auto& c : why.changes) {
     const auto& v = network.at(c.variable);
+    const auto& value = suggested.at(c.variable);
     std::cout << "  " << c.variable << " = ";
-    // An unchanged variable keeps the value planned for it; a moved one goes to its interval's middle.
-    const auto given = planned.find(c.variable);
-    if (!c.moves() && given != planned.end() && std::holds_alternative<double>(given->second)) {
-      std::cout << with_unit(v, std::get<double>(given->second)) << " (interval " << describe_state(v, c.to_state) << ")";
-    } else if (c.to_interval) {
-      std::cout << with_unit(v, c.to_interval->midpoint()) << " (interval " << describe_state(v, c.to_state) << ")";
+    if (const auto* number = std::get_if<double>(&value)) {
+      std::cout << with_unit(v, *number) << " (interval " << describe_state(v, c.to_state) << ")";
     } else {
-      std::cout << c.to_label;
+      std::cout << std::get<std::string>(value);
     }
     std::cout << (c.moves() ? "" : " (unchanged)") << '\n';
   }

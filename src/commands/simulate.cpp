@@ -12,6 +12,7 @@
 #include "pgm/detail/text.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task_lookup.hpp"
+#include "pgm/sim/task_variant.hpp"
 
 namespace pgm::cli {
 namespace {
@@ -27,18 +28,6 @@ struct simulate_arguments {
   std::string out;
 };
 
-/// "2-stack" with --variant reality is the task "2-stack-reality".
-std::string task_name(const simulate_arguments& args) {
-  constexpr std::string_view suffix = "-reality";
-  const bool named_reality =
-      args.task.size() > suffix.size() && args.task.compare(args.task.size() - suffix.size(), suffix.size(), suffix) == 0;
-  if (args.variant == "reality" && !named_reality) return args.task + std::string(suffix);
-  if (args.variant == "sim" && named_reality) {
-    throw error("task '" + args.task + "' is a reality variant; leave out --variant or give --variant reality");
-  }
-  return args.task;
-}
-
 void run_simulate(const simulate_arguments& args) {
   require_extension(args.out, {".csv"});
   if (args.rows == 0) throw error("--rows must be positive");
@@ -48,16 +37,7 @@ void run_simulate(const simulate_arguments& args) {
   } else {
     directories = sim::default_task_directories();
   }
-  const auto name = task_name(args);
-  if (args.variant == "reality") {
-    try {
-      (void)sim::find_task(name, directories);
-    } catch (const data_error&) {
-      (void)sim::find_task(args.task, directories);  // an unknown base task is reported as such
-      throw data_error("task '" + args.task + "' has no reality variant ('" + name + "' is not defined)");
-    }
-  }
-  const auto task = sim::load_task(name, directories);
+  const auto task = sim::load_task_variant(args.task, args.variant, directories);
   sim::simulate_options options;
   options.backend = args.backend;
   options.rows = args.rows;

@@ -258,8 +258,8 @@ discrete_column finish_labels(const column_plan& plan, std::size_t column, const
   std::vector<std::string_view> labels;
   for (const auto& entry : all.entries()) labels.push_back(entry.text);
   auto order = detail::order_states(labels);
-  if (order.first_non_finite) {
-    const auto& entry = all.entries()[*order.first_non_finite];
+  if (order.non_finite) {
+    const auto& entry = all.entries()[*order.non_finite];
     throw parse_error(source, entry.first.line, entry.first.column,
                       "column '" + plan.name + "': " + detail::non_finite_message(entry.text));
   }

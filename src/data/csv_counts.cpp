@@ -405,8 +405,8 @@ csv_counts csv_counter::finish(const csv_partial_counts& counts) const {
     std::vector<std::string_view> labels;
     for (auto id : order) labels.push_back(entries[id].text);
     auto states = detail::order_states(labels);
-    if (states.first_non_finite) {
-      const auto& entry = entries[order[*states.first_non_finite]];
+    if (states.non_finite) {
+      const auto& entry = entries[order[*states.non_finite]];
       throw parse_error(plan.source, entry.first.line, entry.first.column,
                         "column '" + column.name + "': " + detail::non_finite_message(entry.text));
     }

@@ -20,6 +20,7 @@
 
 #include "pgm/core/error.hpp"
 #include "pgm/data/csv.hpp"
+#include "pgm/data/state_order.hpp"
 #include "pgm/detail/text.hpp"
 
 namespace pgm::detail {
@@ -415,49 +416,8 @@ class label_dictionary {
   std::vector<entry> entries_;
 };
 
-/// The states of a discrete column from its labels in order of first appearance: labels that
-/// are all numbers sort by value (and "1" and "1.0" are one state, labelled as it first
-/// appeared); others sort alphabetically. `state_of[i]` is the state of label i;
-/// `first_non_finite` the first label (in that order) that reads as NaN or an infinity when all
-/// are numbers, which is an error.
-struct state_order {
-  std::vector<std::string> states;
-  std::vector<std::uint32_t> state_of;
-  std::optional<std::size_t> first_non_finite;
-};
-
-[[nodiscard]] inline state_order order_states(const std::vector<std::string_view>& labels) {
-  std::vector<std::optional<double>> values;
-  values.reserve(labels.size());
-  bool all_numeric = true;
-  for (const auto& label : labels) {
-    values.push_back(parse_double(label));
-    all_numeric = all_numeric && values.back().has_value();
-  }
-  state_order result;
-  if (all_numeric) {
-    for (std::size_t i = 0; i < labels.size(); ++i) {
-      if (!std::isfinite(*values[i])) {
-        result.first_non_finite = i;
-        break;
-      }
-    }
-  }
-  std::vector<std::uint32_t> order(labels.size());
-  std::iota(order.begin(), order.end(), 0u);
-  if (all_numeric) {
-    std::stable_sort(order.begin(), order.end(), [&](auto a, auto b) { return *values[a] < *values[b]; });
-  } else {
-    std::sort(order.begin(), order.end(), [&](auto a, auto b) { return labels[a] < labels[b]; });
-  }
-  result.state_of.resize(labels.size());
-  for (std::size_t i = 0; i < order.size(); ++i) {
-    const bool same_number = all_numeric && i > 0 && *values[order[i]] == *values[order[i - 1]];
-    if (!same_number) result.states.emplace_back(labels[order[i]]);
-    result.state_of[order[i]] = static_cast<std::uint32_t>(result.states.size() - 1);
-  }
-  return result;
-}
+// A discrete column's states come from its labels in pgm's one order: pgm/data/state_order.hpp.
+using pgm::order_states;
 
 /// Splits `text`, which starts at a record boundary, into chunks of whole records that can be
 /// parsed independently: the start of every chunk, then the end of the last. A chunk is about

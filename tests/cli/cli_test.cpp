@@ -166,7 +166,7 @@ TEST_F(cli_test, usage_errors) {
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("--edges or --model"));
   r = run("fit --data " + data.string() + " --edges \"xOff1->onTop1\" --prior k2 --out " + path("f.bif").string());
-  EXPECT_THAT(r.err, HasSubstr("apply to --estimator bayes"));
+  EXPECT_THAT(r.err, HasSubstr("apply to the bayes estimator"));
   r = run("fit --data " + data.string() + " --edges \"xOff1->onTop1\" --out " + path("f.txt").string());
   EXPECT_THAT(r.err, HasSubstr("expected a file ending in .bif or .json"));
   r = run("show " + path("nothing.bif").string());

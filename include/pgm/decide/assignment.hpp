@@ -51,11 +51,20 @@ using assignment = std::map<std::string, planned_value, std::less<>>;
   return result;
 }
 
-/// Parses "name=value,…". A value is a number when the variable has interval edges and the
-/// text reads as one (a state label then needs a leading '@', as in "xOff1=@2"); otherwise a
-/// state label — or, when it is no label of the variable but reads as a number, that number
-/// (which state_of rejects with a message saying why). Throws model_error for a malformed
-/// piece, an unknown or repeated variable.
+/// The planned value `text` gives `v`: a number when `v` has interval edges and the text reads
+/// as one (a state label then needs a leading '@', as in "@2"); otherwise a state label — or,
+/// when it is no label of `v` but reads as a number, that number (which state_of rejects with a
+/// message saying why).
+[[nodiscard]] inline planned_value planned_value_of(const variable& v, std::string_view text) {
+  if (!text.empty() && text.front() == '@') return std::string(text.substr(1));
+  if (const auto number = detail::parse_double(text); number && (v.has_intervals() || !v.find_state(text))) {
+    return *number;
+  }
+  return std::string(text);
+}
+
+/// Parses "name=value,…", each value by planned_value_of ("xOff1=0.3", "xOff1=@2"). Throws
+/// model_error for a malformed piece, an unknown or repeated variable.
 [[nodiscard]] inline assignment parse_assignment(std::string_view text, const bayesian_network& network) {
   assignment result;
   for (const auto& piece : detail::split(text, ',')) {
@@ -64,16 +73,7 @@ using assignment = std::map<std::string, planned_value, std::less<>>;
     const auto value = equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(equals + 1));
     if (name.empty() || value.empty()) throw model_error("'" + piece + "' is not of the form name=value");
     const auto& v = network.structure().at(detail::node_of(network, name));
-    planned_value planned;
-    if (value.front() == '@') {
-      planned = std::string(value.substr(1));
-    } else if (const auto number = detail::parse_double(value);
-               number && (v.has_intervals() || !v.find_state(value))) {
-      planned = *number;
-    } else {
-      planned = std::string(value);
-    }
-    if (!result.emplace(std::string(name), std::move(planned)).second) {
+    if (!result.emplace(std::string(name), planned_value_of(v, value)).second) {
       throw model_error("'" + std::string(name) + "' is assigned twice");
     }
   }

@@ -189,4 +189,31 @@ struct prevention_plan {
   return {std::move(table), std::move(why)};
 }
 
+/// The variables prevention may move when the user names none: every parent of the success
+/// variable, in table order.
+[[nodiscard]] inline std::vector<std::string> default_controllable(const bayesian_network& network,
+                                                                   const success_event& success) {
+  std::vector<std::string> names;
+  for (const auto& p : network.table(detail::node_of(network, success.variable)).parents()) names.push_back(p.name());
+  return names;
+}
+
+/// The value prevention suggests for each controllable variable of `why`: an unchanged one
+/// keeps the number planned for it; an interval variable otherwise goes to the middle of its
+/// target interval; any other variable to its target state's label.
+[[nodiscard]] inline assignment suggested_values(const explanation& why, const assignment& planned) {
+  assignment result;
+  for (const auto& c : why.changes) {
+    const auto given = planned.find(c.variable);
+    if (!c.moves() && given != planned.end() && std::holds_alternative<double>(given->second)) {
+      result.emplace(c.variable, given->second);
+    } else if (c.to_interval) {
+      result.emplace(c.variable, c.to_interval->midpoint());
+    } else {
+      result.emplace(c.variable, c.to_label);
+    }
+  }
+  return result;
+}
+
 }  // namespace pgm

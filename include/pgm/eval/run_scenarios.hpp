@@ -32,6 +32,17 @@ struct run_scenarios_options {
   std::function<void(const std::string&)> headline;
 };
 
+/// One scenario's points by the protocol (pgm::run_experiment); an error is prefixed with the
+/// scenario's file.
+[[nodiscard]] inline std::vector<experiment_point> run_scenario(const scenario& s, const task_source& source,
+                                                                const experiment_options& options) {
+  try {
+    return run_experiment(s, source, options);
+  } catch (const error& e) {
+    throw error(s.source.string() + ": " + e.what());
+  }
+}
+
 /// Runs the scenarios in order into `folder`. The folder is checked before any work and made
 /// once the first scenario is done; an error in a scenario is prefixed with its file.
 inline report_files run_scenarios(const std::vector<scenario>& scenarios, const task_source& source,
@@ -44,13 +55,7 @@ inline report_files run_scenarios(const std::vector<scenario>& scenarios, const 
     if (options.progress) {
       experiment.progress = [&](std::size_t done, std::size_t total) { options.progress(s, done, total); };
     }
-    std::vector<experiment_point> points;
-    try {
-      points = run_experiment(s, source, experiment);
-    } catch (const error& e) {
-      throw error(s.source.string() + ": " + e.what());
-    }
-    writer.add(s, points);
+    writer.add(s, run_scenario(s, source, experiment));
   }
   return writer.finish();
 }

@@ -13,6 +13,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/data/discretizer.hpp"
 #include "pgm/learn/estimate.hpp"
 #include "pgm/learn/parameter_prior.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
@@ -45,6 +46,26 @@ struct fit_options {
     if (named.contains(name)) variables.push_back(data.discrete(name).var());
   }
   return network_structure(std::move(variables), edges);
+}
+
+/// `structure` with the interval edges of the variables `intervals` names (those it lacks are
+/// skipped): the intervals its discretized columns hold, kept with the model. `source` names
+/// where the intervals came from. Throws data_error when a variable's states differ from the
+/// intervals'.
+[[nodiscard]] inline network_structure with_intervals(network_structure structure, const discretization& intervals,
+                                                      std::string_view source) {
+  for (const auto& [name, binned] : intervals) {
+    if (!structure.contains(name)) continue;
+    const auto& own = structure.at(name);
+    if (own.states() != binned.states()) {
+      throw data_error("'" + std::string(source) + "' gives '" + name + "' the states {" +
+                       detail::list_for_message(binned.states()) + "}, the data {" +
+                       detail::list_for_message(own.states()) + "}" +
+                       (own.cardinality() > binned.cardinality() ? "; are the columns still raw? bin them first" : ""));
+    }
+    structure.update_variable(variable::with_edges(name, own.states(), binned.edges(), binned.tags()));
+  }
+  return structure;
 }
 
 /// The count table of one node of a structure, with the structure's variables.

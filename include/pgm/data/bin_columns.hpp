@@ -1,0 +1,85 @@
+#pragma once
+/// \file
+/// Binning the continuous columns of a data set as `pgm discretize` and the Python
+/// `pgm.discretize` do: the named columns, or by default every numeric column with more
+/// distinct values than bins (outcomes such as 0/1 stay as they are), by quantile or equal
+/// width — or by edges saved from an earlier run, so that new data is binned the same way.
+
+#include <algorithm>
+#include <optional>
+#include <set>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "pgm/core/error.hpp"
+#include "pgm/data/dataset.hpp"
+#include "pgm/data/discretizer.hpp"
+
+namespace pgm {
+
+struct column_binning {
+  /// The columns to bin; empty: every continuous column with more distinct values than `bins`.
+  std::vector<std::string> columns;
+  binning method = binning::quantile;
+  std::size_t bins = 5;
+  /// Saved edges to apply instead of fitting new ones (`method` and `bins` then play no part),
+  /// and where they came from, for messages.
+  std::optional<discretization> saved;
+  std::string saved_source;
+};
+
+struct binned_columns {
+  /// The data with the binned columns replaced by their codes.
+  dataset data;
+  /// The edges used, by column.
+  discretization edges;
+  /// Continuous columns the default choice left as they are, with their (few) distinct values.
+  std::vector<std::pair<std::string, std::size_t>> left;
+};
+
+/// Bins the columns `request` names (see column_binning). Throws data_error for a column that
+/// is missing, not numeric or has no saved edges, or when the default choice finds nothing to bin.
+[[nodiscard]] inline binned_columns bin_columns(const dataset& data, const column_binning& request) {
+  binned_columns result;
+  const auto& wanted = request.columns;
+  if (request.saved) {
+    for (const auto& [name, v] : *request.saved) {
+      if (!wanted.empty() && std::find(wanted.begin(), wanted.end(), name) == wanted.end()) continue;
+      result.edges.emplace(name, v);
+    }
+    for (const auto& name : wanted) {
+      if (!request.saved->contains(name)) {
+        throw data_error("'" + request.saved_source + "' has no edges for '" + name + "'");
+      }
+    }
+  } else {
+    auto columns = wanted;
+    if (columns.empty()) {
+      for (const auto& c : data.columns()) {
+        const auto* values = std::get_if<continuous_column>(&c);
+        if (!values) continue;
+        std::set<double> distinct;
+        for (double v : values->values()) {
+          if (distinct.insert(v).second && distinct.size() > request.bins) break;
+        }
+        if (distinct.size() > request.bins) {
+          columns.push_back(values->name());
+        } else {
+          result.left.emplace_back(values->name(), distinct.size());
+        }
+      }
+      if (columns.empty()) {
+        throw data_error((data.source().empty() ? std::string("the data") : data.source()) +
+                         ": no numeric column has more than " + std::to_string(request.bins) +
+                         " distinct values to bin");
+      }
+    }
+    result.edges = fit_discretization(data, columns, request.method, request.bins);
+  }
+  result.data = apply_discretization(data, result.edges);
+  return result;
+}
+
+}  // namespace pgm

@@ -1,0 +1,63 @@
+#pragma once
+/// \file
+/// A network read for decisions, with its success event settled: named by the user, else by a
+/// JSON model's `"metadata": {"success": "onTop2=1"}`, else the default (the unique outcome
+/// with a state "1"). `pgm predict`, `pgm prevent` and the Python `pgm.read_network` read
+/// models this way.
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+
+#include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/error.hpp"
+#include "pgm/decide/predict.hpp"
+#include "pgm/detail/file.hpp"
+#include "pgm/io/network_file.hpp"
+
+namespace pgm {
+
+struct decision_model {
+  bayesian_network network;
+  success_event success;
+};
+
+/// A .json model's `/metadata/success` text, if it has one (a .bif file has none). The model
+/// itself is read elsewhere; this looks only at the metadata. Throws data_error when the entry
+/// is not a string.
+[[nodiscard]] inline std::optional<std::string> read_success_metadata(const std::filesystem::path& path) {
+  if (format_of(path) != network_format::json) return std::nullopt;
+  const auto document = nlohmann::json::parse(detail::read_file(path), nullptr, false);
+  if (!document.is_object()) return std::nullopt;
+  const auto metadata = document.find("metadata");
+  if (metadata == document.end() || !metadata->is_object()) return std::nullopt;
+  const auto success = metadata->find("success");
+  if (success == metadata->end()) return std::nullopt;
+  if (!success->is_string()) {
+    throw data_error(path.string() + ": /metadata/success: expected a string such as \"onTop2=1\"");
+  }
+  return success->get<std::string>();
+}
+
+/// The success event: `given` ("onTop2=1") if not empty, else `metadata` if any, else
+/// default_success_event. Throws model_error for an event the network does not have.
+[[nodiscard]] inline success_event choose_success_event(const bayesian_network& network, std::string_view given,
+                                                        const std::optional<std::string>& metadata) {
+  if (!given.empty()) return parse_success_event(given, network);
+  if (metadata) return parse_success_event(*metadata, network);
+  return default_success_event(network);
+}
+
+/// Reads a .bif or .json network and settles its success event (see choose_success_event).
+[[nodiscard]] inline decision_model read_decision_model(const std::filesystem::path& path,
+                                                        std::string_view success_text) {
+  auto network = read_network(path);
+  auto success =
+      choose_success_event(network, success_text, success_text.empty() ? read_success_metadata(path) : std::nullopt);
+  return {std::move(network), std::move(success)};
+}
+
+}  // namespace pgm

@@ -1,0 +1,105 @@
+"""pandas DataFrames to and from the column buffers of pgm._core (internal).
+
+A column crosses as one NumPy array, never as one Python object per row:
+
+* integer columns as their values ("int"); their states are the values seen, by value;
+* categorical, string, object and boolean columns as integer codes into their distinct labels
+  ("coded"); the states are the labels seen, numbers by value and other text alphabetically;
+* float columns as doubles ("float"): continuous, to be binned by pgm.discretize.
+
+These are the states `pgm fit` takes from the same data written as CSV.
+"""
+
+import numpy as np
+import pandas as pd
+
+
+def _label(value):
+    return str(value)
+
+
+def _require_frame(data):
+    if not isinstance(data, pd.DataFrame):
+        raise TypeError(f"data must be a pandas DataFrame, got {type(data).__name__}")
+
+
+def column_names(data):
+    """The frame's column names, which must be strings."""
+    _require_frame(data)
+    names = []
+    for column in data.columns:
+        if not isinstance(column, str):
+            raise TypeError(f"column names must be strings, got {column!r}")
+        names.append(column)
+    return names
+
+
+def _coded(name, series):
+    codes, uniques = pd.factorize(series, use_na_sentinel=True)
+    return (name, "coded", np.ascontiguousarray(codes), [_label(u) for u in uniques])
+
+
+def discrete_column(name, series):
+    """The (name, kind, array, labels) of a column whose values are states."""
+    dtype = series.dtype
+    if isinstance(dtype, pd.CategoricalDtype):
+        return (name, "coded", np.ascontiguousarray(series.cat.codes.to_numpy()), [_label(c) for c in dtype.categories])
+    if pd.api.types.is_bool_dtype(dtype):
+        return _coded(name, series)
+    if pd.api.types.is_integer_dtype(dtype):
+        if isinstance(dtype, np.dtype):
+            return (name, "int", np.ascontiguousarray(series.to_numpy()), None)
+        if not series.isna().any():  # a nullable integer column without missing values
+            return (name, "int", series.to_numpy(dtype="int64"), None)
+        return _coded(name, series)
+    if pd.api.types.is_float_dtype(dtype):
+        return (name, "float", series.to_numpy(dtype="float64"), None)
+    return _coded(name, series)
+
+
+def is_number_column(series):
+    """Whether the column holds numbers (booleans are states)."""
+    dtype = series.dtype
+    return pd.api.types.is_numeric_dtype(dtype) and not pd.api.types.is_bool_dtype(dtype)
+
+
+def numeric_column(name, series):
+    """The column as numbers (a continuous column) if it holds numbers, else as states."""
+    dtype = series.dtype
+    if is_number_column(series):
+        if isinstance(dtype, np.dtype):
+            return (name, "float", np.ascontiguousarray(series.to_numpy()), None)
+        return (name, "float", series.to_numpy(dtype="float64", na_value=np.nan), None)
+    return discrete_column(name, series)
+
+
+def columns_of(data, names, kind=discrete_column):
+    """The buffers of the named columns, in the frame's order."""
+    wanted = set(names)
+    return [kind(name, data[name]) for name in column_names(data) if name in wanted]
+
+
+def _as_integers(labels):
+    """The labels as integers if each is an integer's own text ("3", "-1"), else None."""
+    try:
+        values = [int(label) for label in labels]
+    except ValueError:
+        return None
+    if any(str(v) != label for v, label in zip(values, labels)):
+        return None
+    return np.array(values, dtype=np.int64)
+
+
+def series_of(kind, array, labels):
+    """A column from pgm._core: doubles, integers (states that are integers) or a categorical."""
+    if kind == "float":
+        return array
+    values = _as_integers(labels)
+    if values is not None:
+        return values[array]
+    return pd.Categorical.from_codes(array.astype(np.int32, copy=False), categories=labels)
+
+
+def frame_of(columns):
+    """A DataFrame of the columns pgm._core returns."""
+    return pd.DataFrame({name: series_of(kind, array, labels) for name, kind, array, labels in columns})

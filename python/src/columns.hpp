@@ -1,0 +1,47 @@
+#pragma once
+// Data frames in and out of the library: each column crosses as a NumPy buffer (integer values,
+// integer codes with their labels, or doubles), never as one Python object per row. The pandas
+// side (which dtype becomes which kind) is in pgm/_frame.py.
+
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "pgm/data/dataset.hpp"
+
+namespace pgm::python {
+
+/// One column's buffer, read while holding the GIL and used without it.
+struct column_buffer {
+  std::string name;
+  /// "int": integer values, whose states are the values seen; "coded": integer codes into
+  /// `labels` (-1 for a missing value); "float": numbers, a continuous column.
+  std::string kind;
+  const void* data = nullptr;
+  std::size_t size = 0;
+  char type = 'i';  ///< NumPy's kind: 'i' signed, 'u' unsigned, 'f' floating
+  std::size_t item_size = 0;
+  std::vector<std::string> labels;
+};
+
+/// The columns pgm/_frame.py hands over as (name, kind, array, labels) tuples. `keep` holds the
+/// (contiguous) arrays the buffers point into; it must outlive them.
+[[nodiscard]] std::vector<column_buffer> read_column_buffers(const pybind11::list& columns,
+                                                             std::vector<pybind11::array>& keep);
+
+/// The data set of these columns, in this order, named `source` in messages. Needs no GIL.
+[[nodiscard]] dataset make_dataset(const std::vector<column_buffer>& columns, const std::string& source);
+
+/// Throws data_error naming the first missing column and listing `available`, unless every
+/// name of `wanted` is among them.
+void require_columns(const std::vector<std::string>& wanted, const std::vector<std::string>& available,
+                     const std::string& source);
+
+/// A data set's columns for pgm/_frame.py: (name, "coded", codes, states) for a discrete
+/// column, (name, "float", values, None) for a continuous one; each array a new NumPy buffer.
+[[nodiscard]] pybind11::list dataset_columns(const dataset& data);
+
+}  // namespace pgm::python

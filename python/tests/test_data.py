@@ -1,0 +1,115 @@
+"""DataFrame columns in: the states of a column are the values seen, in the order `pgm fit`
+gives the same data read from CSV (numbers by value, other labels alphabetically)."""
+
+import numpy as np
+import pandas as pd
+import pytest
+
+import pgm
+
+
+def states_in_python(column):
+    frame = pd.DataFrame({"c": column, "z": np.zeros(len(column), dtype=np.int64)})
+    return pgm.fit(frame, "c->z").states("c")
+
+
+def states_by_cli(program, tmp_path, column):
+    frame = pd.DataFrame({"c": column, "z": np.zeros(len(column), dtype=np.int64)})
+    frame.to_csv(tmp_path / "data.csv", index=False)
+    program.run("fit", "--data", tmp_path / "data.csv", "--edges", "c->z", "--out", tmp_path / "fit.json")
+    return pgm.read_network(tmp_path / "fit.json").states("c")
+
+
+@pytest.mark.parametrize(
+    "column, states",
+    [
+        ([10, -2, 3, 10], ["-2", "3", "10"]),
+        (["b", "B", "a", "b"], ["B", "a", "b"]),
+        (["10", "9", "1.5", "9"], ["1.5", "9", "10"]),
+        (["Red", "10", "2"], ["10", "2", "Red"]),
+        ([True, False, True], ["False", "True"]),
+        (pd.Categorical(["z", "a", "z"], categories=["z", "m", "a"]), ["a", "z"]),
+        (pd.Categorical([3, 1, 3], categories=[3, 2, 1]), ["1", "3"]),
+        (pd.array([4, 2, 4], dtype="Int64"), ["2", "4"]),
+        (np.array([7, 0, 7], dtype=np.uint8), ["0", "7"]),
+        (np.array([300, 2, 300], dtype=np.int64), ["2", "300"]),
+    ],
+)
+def test_states_are_the_values_seen_in_the_clis_order(program, tmp_path, column, states):
+    assert states_in_python(column) == states
+    assert states_by_cli(program, tmp_path, column) == states
+
+
+def test_a_number_written_two_ways_is_one_state_named_as_first_met():
+    assert states_in_python(np.array(["1.0", "2", "1"], dtype=object)) == ["1.0", "2"]
+
+
+@pytest.mark.parametrize("dtype", [np.int8, np.int16, np.int32, np.int64, np.uint16, np.uint32, np.uint64])
+def test_every_integer_width_gives_the_same_states(dtype):
+    assert states_in_python(np.array([3, 0, 5, 3], dtype=dtype)) == ["0", "3", "5"]
+
+
+def test_integers_far_apart_take_the_sparse_path():
+    column = np.array([10**12, -(10**12), 5, 10**12], dtype=np.int64)
+    assert states_in_python(column) == ["-1000000000000", "5", "1000000000000"]
+    extremes = np.array([np.iinfo(np.int64).max, np.iinfo(np.int64).min, 0], dtype=np.int64)
+    assert states_in_python(extremes) == [str(np.iinfo(np.int64).min), "0", str(np.iinfo(np.int64).max)]
+
+
+def test_codes_follow_the_states():
+    frame = pd.DataFrame({"a": ["y", "x", "y", "y"], "b": [1, 1, 0, 1]})
+    table = pgm.fit(frame, "a->b").cpt("b")
+    assert list(table["a"]) == ["x", "y"]
+    assert list(table["1"]) == [1.0, 2 / 3]
+
+
+@pytest.mark.parametrize("values", [[7, 0, 7, 7], [1, 0, 1, 1], [700, -1, 700, 700]])
+def test_integer_codes_follow_the_states(values):
+    # Codes 0..k-1 are copied as they are; other small values are mapped, large ones looked up.
+    frame = pd.DataFrame({"a": np.array(values, dtype=np.int64), "b": [1, 1, 0, 1]})
+    table = pgm.fit(frame, "a->b").cpt("b")
+    assert list(table["a"]) == [str(values[1]), str(values[0])]
+    assert list(table["1"]) == [1.0, 2 / 3]
+
+
+def test_missing_values_are_an_error_naming_column_and_position():
+    for column in (["a", None, "b"], pd.array([1, None, 2], dtype="Int64"), pd.Categorical(["a", None, "a"])):
+        with pytest.raises(pgm.Error, match=r"column 'c': the value at position 1 is missing"):
+            states_in_python(column)
+
+
+def test_numbers_that_are_not_finite_are_an_error():
+    with pytest.raises(pgm.Error, match=r"position 1, 'inf', is not a finite number"):
+        states_in_python(np.array(["1", "inf"], dtype=object))
+
+
+def test_float_columns_must_be_binned_first():
+    frame = pd.DataFrame({"x": [0.5, 1.5], "y": [0, 1]})
+    with pytest.raises(pgm.Error, match=r"column 'x' holds continuous values; discretize it first"):
+        pgm.fit(frame, "x->y")
+
+
+def test_errors_are_value_errors_with_the_librarys_message():
+    assert issubclass(pgm.Error, ValueError)
+    frame = pd.DataFrame({"a": [0, 1], "b": [1, 0]})
+    with pytest.raises(ValueError, match=r"DataFrame: there is no column 'c' \(columns: a, b\)"):
+        pgm.fit(frame, "a->c")
+
+
+def test_only_data_frames_with_string_column_names():
+    with pytest.raises(TypeError, match="pandas DataFrame"):
+        pgm.fit({"a": [0, 1]}, "a->b")
+    with pytest.raises(TypeError, match="column names must be strings"):
+        pgm.fit(pd.DataFrame({0: [0, 1], "b": [1, 0]}), "b->b2")
+
+
+def test_integer_columns_cross_without_a_copy_per_row():
+    # 10^6 rows of int64 codes: a per-row Python object would show as a large peak here.
+    import tracemalloc
+
+    frame = pd.DataFrame({"a": np.arange(1_000_000, dtype=np.int64) % 5, "b": np.arange(1_000_000) % 2})
+    tracemalloc.start()
+    pgm.fit(frame, "a->b")
+    _, peak = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    assert peak < 1_000_000  # Python allocations only; the C++ side does not count

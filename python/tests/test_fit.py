@@ -1,0 +1,168 @@
+"""pgm.fit: every estimator and prior transfer of `pgm fit`, with tables equal to the program's to
+the last bit on the same data."""
+
+import numpy as np
+import pandas as pd
+import pytest
+from conftest import assert_same_network, stacking_frame
+
+import pgm
+
+ONE_EDGES = "xOff1->onTop1,yOff1->onTop1"
+TWO_EDGES = "xOff1->onTop2,yOff1->onTop2,xOff2->onTop2,yOff2->onTop2,colour->onTop2"
+MAP = "onTop2=onTop1,xOff2~xOff1,yOff2~yOff1"
+
+
+@pytest.fixture
+def tasks(tmp_path, program):
+    """A 1-Stack prior (fitted by the program) and 2-Stack target data, as frames and files."""
+    one = stacking_frame(5000, 1)[["xOff1", "yOff1", "onTop1"]]
+    two = stacking_frame(300, 2)
+    one.to_csv(tmp_path / "one.csv", index=False)
+    two.to_csv(tmp_path / "two.csv", index=False)
+    program.run("fit", "--data", tmp_path / "one.csv", "--edges", ONE_EDGES, "--out", tmp_path / "one.json")
+    return one, two, tmp_path
+
+
+def cli_fit(program, tmp_path, *arguments):
+    program.run("fit", "--data", tmp_path / "two.csv", "--out", tmp_path / "cli.json", *arguments)
+    return pgm.read_network(tmp_path / "cli.json")
+
+
+@pytest.mark.parametrize(
+    "kwargs, arguments",
+    [
+        ({}, []),
+        ({"estimator": "bayes"}, ["--estimator", "bayes"]),
+        ({"estimator": "bayes", "prior": "k2"}, ["--estimator", "bayes", "--prior", "k2"]),
+        ({"estimator": "bayes", "prior": "bdeu", "ess": 7.5}, ["--estimator", "bayes", "--prior", "bdeu", "--ess", "7.5"]),
+        ({"estimator": "bayes", "prior": "dirichlet", "alpha": 0.3}, ["--estimator", "bayes", "--prior", "dirichlet", "--alpha", "0.3"]),
+    ],
+)
+def test_estimators_equal_the_programs_to_the_last_bit(program, tasks, kwargs, arguments):
+    _, two, tmp_path = tasks
+    ours = pgm.fit(two, TWO_EDGES, **kwargs)
+    assert_same_network(ours, cli_fit(program, tmp_path, "--edges", TWO_EDGES, *arguments))
+
+
+@pytest.mark.parametrize(
+    "kwargs, arguments",
+    [
+        ({"strategy": "minimal", "map": MAP, "w_prior": 2}, ["--strategy", "minimal", "--map", MAP, "--w-prior", "2"]),
+        ({"strategy": "direct", "map": MAP}, ["--strategy", "direct", "--map", MAP]),
+        ({"strategy": "cross", "map": MAP, "w_prior": 20.5}, ["--strategy", "cross", "--map", MAP, "--w-prior", "20.5"]),
+        ({"strategy": "blend", "map": MAP, "w_prior": 5}, ["--strategy", "blend", "--map", MAP, "--w-prior", "5"]),
+        ({"map": "auto", "w_prior": "auto"}, ["--map", "auto", "--w-prior", "auto"]),
+        (
+            {"estimator": "bayes", "prior": "k2", "map": MAP, "w_prior": 3, "match": "overlap"},
+            ["--estimator", "bayes", "--prior", "k2", "--map", MAP, "--w-prior", "3", "--match", "overlap"],
+        ),
+    ],
+)
+def test_transferred_priors_equal_the_programs_to_the_last_bit(program, tasks, kwargs, arguments):
+    _, two, tmp_path = tasks
+    prior = pgm.read_network(tmp_path / "one.json")
+    ours = pgm.fit(two, TWO_EDGES, prior_model=prior, **kwargs)
+    theirs = cli_fit(program, tmp_path, "--edges", TWO_EDGES, "--prior-model", tmp_path / "one.json", *arguments)
+    assert_same_network(ours, theirs)
+
+
+def test_a_prior_fitted_in_python_is_the_programs(program, tasks):
+    one, _, tmp_path = tasks
+    assert_same_network(pgm.fit(one, ONE_EDGES), pgm.read_network(tmp_path / "one.json"))
+
+
+def test_notes_say_what_the_transfer_chose(tasks):
+    one, two, _ = tasks
+    prior = pgm.fit(one, ONE_EDGES)
+    fixed = pgm.fit(two, TWO_EDGES, prior_model=prior, map=MAP, w_prior=2)
+    assert fixed.notes == ["'onTop2' gets the minimal prior from 'onTop1' with w = 2"]
+    chosen = pgm.fit(two, TWO_EDGES, prior_model=prior, map="auto", w_prior="auto")
+    assert chosen.notes[0].startswith("map='auto': onTop2=onTop1")
+    assert "maximizes the marginal likelihood of the 300 target rows" in chosen.notes[1]
+    assert pgm.fit(two, TWO_EDGES).notes == []
+
+
+def test_weighted_prior_by_hand():
+    # eq. 8: theta = (w f + M[x,u]) / (w + M[u]); the prior says P(onTop1=1 | centred) = 0.9.
+    one = pd.DataFrame({"xOff1": [1] * 10 + [0] * 10, "onTop1": [1] * 9 + [0] + [1] * 2 + [0] * 8})
+    prior = pgm.fit(one, "xOff1->onTop1")
+    two = pd.DataFrame({"xOff1": [1, 1, 0], "xOff2": [1, 1, 1], "onTop2": [1, 0, 0]})
+    net = pgm.fit(two, "xOff1->onTop2,xOff2->onTop2", prior_model=prior, strategy="direct", map="onTop2=onTop1", w_prior=2)
+    table = net.cpt("onTop2").set_index(["xOff1", "xOff2"])
+    assert table.loc[("1", "1"), "1"] == (2 * 0.9 + 1) / (2 + 2)
+    assert table.loc[("0", "1"), "1"] == (2 * 0.2 + 0) / (2 + 1)
+
+
+def test_edges_as_pairs_or_text_and_intervals_kept(tasks):
+    _, two, _ = tasks
+    pairs = [("xOff1", "onTop2"), ("yOff1", "onTop2"), ("xOff2", "onTop2"), ("yOff2", "onTop2"), ("colour", "onTop2")]
+    assert_same_network(pgm.fit(two, pairs), pgm.fit(two, TWO_EDGES))
+    edges = {"xOff1": [-3, -1.4, -0.4, 0.4, 1.4, 3]}
+    net = pgm.fit(two, TWO_EDGES, intervals=edges)
+    assert net.interval_edges("xOff1") == edges["xOff1"]
+    assert net.interval_edges("yOff1") is None
+
+
+def test_intervals_from_an_edges_file_as_the_program_takes_them(program, tasks):
+    _, two, tmp_path = tasks
+    raw = pd.DataFrame({"x": np.linspace(-3, 3, 300), "y": np.linspace(0, 1, 300)})
+    raw.to_csv(tmp_path / "raw.csv", index=False)
+    program.run("discretize", "--in", tmp_path / "raw.csv", "--columns", "x", "--bins", "5", "--out",
+                tmp_path / "binned.csv", "--edges-out", tmp_path / "edges.json")
+    binned = pd.read_csv(tmp_path / "binned.csv")
+    binned["ok"] = two["onTop1"].to_numpy()
+    binned.to_csv(tmp_path / "binned.csv", index=False)
+    ours = pgm.fit(binned, "x->ok", intervals=tmp_path / "edges.json")
+    program.run("fit", "--data", tmp_path / "binned.csv", "--edges", "x->ok", "--intervals", tmp_path / "edges.json",
+                "--out", tmp_path / "cli.json")
+    theirs = pgm.read_network(tmp_path / "cli.json")
+    assert_same_network(ours, theirs)
+    assert ours.interval_edges("x") == theirs.interval_edges("x")
+
+
+@pytest.mark.parametrize(
+    "kwargs, message",
+    [
+        ({"estimator": "mle", "prior": "k2"}, "prior, alpha and ess apply to the bayes estimator"),
+        ({"estimator": "bogus"}, "unknown estimator 'bogus' (mle or bayes)"),
+        ({"estimator": "bayes", "prior": "k3"}, "unknown prior 'k3' (dirichlet, k2 or bdeu)"),
+        ({"estimator": "bayes", "prior": "k2", "ess": 2}, "ess applies to the bdeu prior"),
+        ({"estimator": "bayes", "prior": "dirichlet", "alpha": -1}, "alpha must be a finite number ≥ 0, got -1"),
+        ({"map": MAP}, "strategy, map, w_prior, success and match apply with prior_model"),
+        ({"empty": "sometimes"}, "empty must be uniform or fail"),
+    ],
+)
+def test_bad_arguments_raise_pgm_error(tasks, kwargs, message):
+    _, two, _ = tasks
+    with pytest.raises(pgm.Error, match=message.replace("(", r"\(").replace(")", r"\)")):
+        pgm.fit(two, TWO_EDGES, **kwargs)
+
+
+@pytest.mark.parametrize(
+    "kwargs, message",
+    [
+        ({}, "prior_model needs map"),
+        ({"map": "onTop2=onTop1,xOff3~xOff1"}, "the map's related variable 'xOff3' is not a variable of the target network"),
+        ({"map": MAP, "strategy": "bogus"}, "bogus"),
+        ({"map": MAP, "w_prior": -1}, "the prior weight w must be a finite number ≥ 0, got -1"),
+        ({"map": MAP, "w_prior": "often"}, "w_prior must be a number >= 0 or 'auto'"),
+    ],
+)
+def test_bad_transfers_raise_pgm_error(tasks, kwargs, message):
+    one, two, _ = tasks
+    with pytest.raises(pgm.Error, match=message):
+        pgm.fit(two, TWO_EDGES, prior_model=pgm.fit(one, ONE_EDGES), **kwargs)
+
+
+def test_a_cycle_is_an_error_naming_it():
+    frame = pd.DataFrame({"a": [0, 1], "b": [1, 0]})
+    with pytest.raises(pgm.Error, match="closes the cycle"):
+        pgm.fit(frame, "a->b,b->a")
+
+
+def test_empty_configurations_fail_when_asked():
+    frame = pd.DataFrame({"a": [0, 0, 1], "b": [0, 1, 0], "c": [1, 0, 1]})
+    pgm.fit(frame, "a->c,b->c")
+    with pytest.raises(pgm.Error, match="no data"):
+        pgm.fit(frame, "a->c,b->c", empty="fail")

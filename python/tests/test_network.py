@@ -1,0 +1,98 @@
+"""pgm.Network: reading and writing BIF and JSON, variables, states, parents and tables."""
+
+import sys
+
+import numpy as np
+import pandas as pd
+import pytest
+from conftest import SOURCE_DIR, assert_same_network
+
+import pgm
+
+SACHS = SOURCE_DIR / "tests" / "data" / "networks" / "sachs.bif"
+
+
+def test_read_a_published_network():
+    net = pgm.read_network(SACHS)
+    assert len(net.variables) == 11
+    assert net.variables[0] == "Akt"
+    assert net.states("Akt") == ["LOW", "AVG", "HIGH"]
+    assert net.parents("Akt") == ["Erk", "PKA"]
+    assert ("Erk", "Akt") in net.edges
+    assert net.free_parameters == 178
+    assert net.success is None
+
+
+def test_a_table_has_one_row_per_configuration_last_parent_fastest():
+    table = pgm.read_network(SACHS).cpt("Akt")
+    assert list(table.columns) == ["Erk", "PKA", "LOW", "AVG", "HIGH"]
+    assert len(table) == 9
+    # sachs.bif lists (Erk, PKA) with Erk fastest; the frame has PKA fastest.
+    assert list(table["Erk"][:4]) == ["LOW", "LOW", "LOW", "AVG"]
+    assert list(table["PKA"][:4]) == ["LOW", "AVG", "HIGH", "LOW"]
+    assert table.loc[1, "LOW"] == 0.62038586  # the file's (LOW, AVG) row
+    assert table.loc[3, "HIGH"] == 0.0001796945  # the file's (AVG, LOW) row
+    assert np.allclose(table[["LOW", "AVG", "HIGH"]].sum(axis=1), 1.0)
+
+
+def test_a_root_table_has_one_row():
+    table = pgm.read_network(SACHS).cpt("PKC")
+    assert list(table.columns) == ["LOW", "AVG", "HIGH"]
+    assert len(table) == 1
+
+
+def test_write_and_read_back_both_formats(tmp_path):
+    net = pgm.read_network(SACHS)
+    for name in ("sachs.json", "sachs.bif"):
+        net.write(tmp_path / name)
+        assert_same_network(pgm.read_network(tmp_path / name), net)
+
+
+def test_intervals_and_the_success_event_of_a_json_model(tmp_path):
+    frame = pd.DataFrame({"x": [0, 1, 1, 0], "ok": [1, 0, 1, 1]})
+    net = pgm.fit(frame, "x->ok", intervals={"x": [-1.0, 0.0, 1.0]})
+    net.write(tmp_path / "m.json")
+    text = (tmp_path / "m.json").read_text()
+    (tmp_path / "m.json").write_text(text.replace('"format"', '"metadata": {"success": "ok=0"}, "format"', 1))
+    back = pgm.read_network(tmp_path / "m.json")
+    assert back.interval_edges("x") == [-1.0, 0.0, 1.0]
+    assert back.success == "ok=0"
+    assert pgm.predict(back, {"x": -0.5}) == 0.0  # P(ok=0 | x in bin 0)
+
+
+def test_reading_errors_name_the_file_and_place(tmp_path):
+    with pytest.raises(pgm.Error, match="missing.bif"):
+        pgm.read_network(tmp_path / "missing.bif")
+    (tmp_path / "bad.bif").write_text("network x {\n}\nvariable a {\n  type discrete [ 3 ] { 0, 1 };\n}\n")
+    with pytest.raises(pgm.Error, match=r"bad\.bif:4:\d+"):
+        pgm.read_network(tmp_path / "bad.bif")
+    with pytest.raises(pgm.Error, match=r"expected a \.bif or \.json file"):
+        pgm.read_network(tmp_path / "net.txt")
+
+
+def test_writing_needs_a_known_extension(tmp_path):
+    with pytest.raises(pgm.Error, match=r"expected a \.bif or \.json file"):
+        pgm.read_network(SACHS).write(tmp_path / "net.txt")
+    assert not (tmp_path / "net.txt").exists()
+
+
+def test_unknown_variables_are_errors():
+    net = pgm.read_network(SACHS)
+    for call in (net.states, net.parents, net.cpt):
+        with pytest.raises(pgm.Error, match="'Nope'"):
+            call("Nope")
+
+
+def test_networks_are_made_by_the_package():
+    with pytest.raises(TypeError, match="pgm.read_network"):
+        pgm.Network(None)
+    assert repr(pgm.read_network(SACHS)) == "<pgm.Network: 11 variables, 17 edges, 178 free parameters>"
+
+
+def test_pgmpy_conversions_say_that_pgmpy_is_missing(monkeypatch):
+    monkeypatch.setitem(sys.modules, "pgmpy", None)
+    monkeypatch.setitem(sys.modules, "pgmpy.models", None)
+    with pytest.raises(ImportError, match="need pgmpy, which is not importable"):
+        pgm.read_network(SACHS).to_pgmpy()
+    with pytest.raises(ImportError, match="need pgmpy"):
+        pgm.from_pgmpy(object())
