@@ -64,6 +64,15 @@ struct stacking_physics {
   double friction = 0.6;
   double restitution = 0.1;
   double cube_mass = 0.1;  ///< kg
+  // The analytic model's own constants ("analytic" in the file; pgm calibrate fits them to
+  // Bullet): a landing cube's impact, which the static rule does not see, as a margin (cm)
+  // by which the load's centre of mass must stay inside the supporting face's edge and as
+  // extra scatter (cm, sd) of where a cube comes to rest. "first": the first cube on the
+  // fixed cubeDown; "later": once a cube lands on another one, which can move under it.
+  double tipping_margin_first = 0.0;
+  double tipping_margin_later = 0.0;
+  double settle_noise_first = 0.0;
+  double settle_noise_later = 0.0;
 };
 
 /// Dropping a sphere into a container whose diameter and height scale together.
@@ -75,13 +84,19 @@ struct dropping_physics {
   double height_at_scale_1 = 4.0;     ///< cm
   double floor_fraction = 0.6;        ///< flat floor's diameter / opening (1: vertical walls)
   double landing_noise = 0.5;         ///< cm, standard deviation of the landing point per axis
-  double bounce_max = 0.6;            ///< analytic: chance of bouncing out of a container of depth 0 …
-  double bounce_depth_scale = 3.0;    ///< … falling as exp(-height / this)
-  double rim_catch = 0.7;             ///< analytic: chance that a sphere landing on the rim of a
-                                      ///< container it fits well into (opening ≥ 2 diameters) falls in
   double friction = 0.5;
   double restitution = 0.5;
   double sphere_mass = 0.1;  ///< kg
+  // The analytic model's own constants ("analytic" in the file; pgm calibrate fits them to
+  // Bullet). The model resolves the sphere's first impact with the container and the flight
+  // after it in closed form (docs/simulators.md): the share of the speed into the surface
+  // that the bounce returns, the share of the speed along the surface that it keeps, extra
+  // scatter (cm, sd) of the landing point, and how far (cm) above the far rim the sphere's
+  // centre must pass to leave the container.
+  double impact_restitution = 0.5;
+  double impact_tangential = 5.0 / 7.0;
+  double landing_scatter = 0.0;
+  double rim_clearance = 0.0;
 };
 
 using physics_parameters = std::variant<stacking_physics, dropping_physics>;
@@ -328,6 +343,22 @@ class task_reader : public pgm::detail::json_reader {
       p.friction = non_negative(value, "friction", path, p.friction);
       p.restitution = non_negative(value, "restitution", path, p.restitution);
       p.cube_mass = positive(value, "cube_mass", path);
+      if (const auto* analytic = optional_member(value, "analytic")) {
+        const auto at = path + "/analytic";
+        if (!analytic->is_object()) fail(at, "expected an object");
+        auto pair = [&](const char* key, double& first, double& later) {
+          if (const auto* v = optional_member(*analytic, key)) {
+            if (!v->is_object()) fail(at + "/" + key, "expected an object with \"first\" and \"later\"");
+            first = non_negative(*v, "first", at + "/" + key, first);
+            later = non_negative(*v, "later", at + "/" + key, later);
+          }
+        };
+        pair("tipping_margin", p.tipping_margin_first, p.tipping_margin_later);
+        pair("settle_noise", p.settle_noise_first, p.settle_noise_later);
+        const double edge = p.cube_size / 2 - p.support_margin;
+        if (!(p.tipping_margin_first < edge)) fail(at + "/tipping_margin/first", "must be below the supporting half-width");
+        if (!(p.tipping_margin_later < edge)) fail(at + "/tipping_margin/later", "must be below the supporting half-width");
+      }
       return p;
     }
     if (model == "dropping") {
@@ -342,15 +373,28 @@ class task_reader : public pgm::detail::json_reader {
       p.floor_fraction = positive(value, "floor_fraction", path);
       if (p.floor_fraction > 1) fail(path + "/floor_fraction", "expected a number in (0, 1]");
       p.landing_noise = positive(value, "landing_noise", path);
-      const auto& bounce = member(value, path, "bounce_out");
-      p.bounce_max = non_negative(bounce, "max", path + "/bounce_out", 0.0);
-      if (p.bounce_max > 1) fail(path + "/bounce_out/max", "expected a probability");
-      p.bounce_depth_scale = positive(bounce, "depth_scale", path + "/bounce_out");
-      p.rim_catch = non_negative(value, "rim_catch", path, p.rim_catch);
-      if (p.rim_catch > 1) fail(path + "/rim_catch", "expected a probability");
+      for (const auto* retired : {"bounce_out", "rim_catch"}) {
+        if (optional_member(value, retired)) {
+          fail(path + "/" + retired, "is no longer used: the analytic model now resolves the sphere's impact with the "
+                                     "container (docs/simulators.md); remove it and fit /physics/analytic with "
+                                     "pgm calibrate");
+        }
+      }
       p.friction = non_negative(value, "friction", path, p.friction);
       p.restitution = non_negative(value, "restitution", path, p.restitution);
       p.sphere_mass = positive(value, "sphere_mass", path);
+      p.impact_restitution = p.restitution;
+      if (const auto* analytic = optional_member(value, "analytic")) {
+        const auto at = path + "/analytic";
+        if (!analytic->is_object()) fail(at, "expected an object");
+        p.impact_restitution = non_negative(*analytic, "restitution", at, p.impact_restitution);
+        p.impact_tangential = non_negative(*analytic, "tangential", at, p.impact_tangential);
+        p.landing_scatter = non_negative(*analytic, "scatter", at, p.landing_scatter);
+        p.rim_clearance = optional_number(*analytic, "rim_clearance", at, p.rim_clearance);
+        if (p.impact_restitution > 1) fail(at + "/restitution", "expected a number in [0, 1]");
+        if (p.impact_tangential > 1) fail(at + "/tangential", "expected a number in [0, 1]");
+        if (!std::isfinite(p.rim_clearance)) fail(at + "/rim_clearance", "expected a number");
+      }
       const auto& s = task.at("scalingFactor").sampling;
       if (!s.continuous() || !(s.min > 0)) fail("/variables", "scalingFactor must be sampled from positive values");
       return p;

@@ -8,26 +8,39 @@
 // first, which leaves the brute-force broadphase's handle list, the pair cache and the
 // dispatcher's contact manifolds (the solver's warm-starting cache) empty and as they were.
 
+#include <BulletCollision/CollisionDispatch/btActivatingCollisionAlgorithm.h>
+#include <BulletCollision/CollisionDispatch/btCollisionCreateFunc.h>
+#include <BulletCollision/CollisionDispatch/btCollisionObjectWrapper.h>
 #include <btBulletDynamicsCommon.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "pgm/core/assert.hpp"
 #include "pgm/sim/bullet.hpp"
+#include "pgm/sim/container.hpp"
 #include "pgm/sim/run.hpp"
 
 namespace pgm::sim {
 // Named (not anonymous) because bullet_simulator::model holds these types.
 namespace bullet_detail {
 
-constexpr double gravity = 981.0;        // cm/s²
-constexpr double time_step = 1.0 / 240;  // s
-constexpr double rest_time = 0.05;       // s every moving body must stay quiet to count as resting
-constexpr double quiet_speed = 0.5;      // cm/s
-constexpr double quiet_spin = 0.05;      // rad/s
+constexpr double gravity = standard_gravity;  // cm/s²
+// The largest fixed steps whose outcomes agree with half the step within sampling noise
+// (docs/simulators.md): stacks need the finer one, as a cube tipping over an edge is
+// resolved by the contact solver step by step; a sphere's first impact is placed exactly.
+constexpr double stacking_time_step = 1.0 / 240;  // s
+constexpr double dropping_time_step = 1.0 / 120;  // s
+constexpr double rest_time = 0.05;                // s every moving body must stay quiet to count as resting
+constexpr double quiet_speed = 0.5;               // cm/s
+constexpr double quiet_spin = 0.05;               // rad/s
 
 btVector3 vec(double x, double y, double z) {
   return {static_cast<btScalar>(x), static_cast<btScalar>(y), static_cast<btScalar>(z)};
@@ -43,8 +56,10 @@ btTransform at(double x, double y, double z) {
 /// One worker's physics world: made once, emptied by clear() before every experiment.
 class world {
  public:
-  world()
-      : configuration_(small_pools()),
+  /// `time_step`: the fixed step, in seconds.
+  explicit world(double time_step)
+      : time_step_(time_step),
+        configuration_(small_pools()),
         dispatcher_(&configuration_),
         // Fewer than ten bodies: the brute-force broadphase is the quickest, and it keeps no
         // tree whose shape could depend on earlier experiments.
@@ -67,14 +82,17 @@ class world {
     PGM_ASSERT(broadphase_.getOverlappingPairCache()->getNumOverlappingPairs() == 0, "pairs left in the cache");
   }
 
-  btRigidBody* add(btCollisionShape* shape, double mass, const btTransform& pose, double friction, double restitution) {
+  /// Adds a body; `rolling_friction` (cm) resists rolling, for a sphere: a cube's tipping is
+  /// left to its shape.
+  btRigidBody* add(btCollisionShape* shape, double mass, const btTransform& pose, double friction, double restitution,
+                   double rolling_friction = 0.0) {
     btVector3 inertia(0, 0, 0);
     if (mass > 0) shape->calculateLocalInertia(static_cast<btScalar>(mass), inertia);
     btRigidBody::btRigidBodyConstructionInfo info(static_cast<btScalar>(mass), nullptr, shape, inertia);
     info.m_startWorldTransform = pose;
     info.m_friction = static_cast<btScalar>(friction);
     info.m_restitution = static_cast<btScalar>(restitution);
-    info.m_rollingFriction = mass > 0 ? btScalar(0.02) : btScalar(0.0);
+    info.m_rollingFriction = static_cast<btScalar>(rolling_friction);
     info.m_angularDamping = mass > 0 ? btScalar(0.2) : btScalar(0.0);
     bodies_.push_back(std::make_unique<btRigidBody>(info));
     auto* body = bodies_.back().get();
@@ -90,13 +108,15 @@ class world {
 
   /// Steps until every moving body has been quiet for rest_time or `decided()` says the
   /// outcome is known, at most `seconds`.
+  btCollisionDispatcher& dispatcher() { return dispatcher_; }
+
   template <class Decided>
   void settle(double seconds, Decided decided) {
-    const int cap = static_cast<int>(seconds / time_step);
-    const int rest_steps = static_cast<int>(std::ceil(rest_time / time_step));
+    const int cap = static_cast<int>(seconds / time_step_);
+    const int rest_steps = static_cast<int>(std::ceil(rest_time / time_step_));
     int quiet = 0;
     for (int step = 0; step < cap && quiet < rest_steps; ++step) {
-      dynamics_.stepSimulation(static_cast<btScalar>(time_step), 0, static_cast<btScalar>(time_step));
+      dynamics_.stepSimulation(static_cast<btScalar>(time_step_), 0, static_cast<btScalar>(time_step_));
       if (decided()) break;
       bool still = true;
       for (const auto* body : moving_) {
@@ -115,6 +135,7 @@ class world {
     return info;
   }
 
+  double time_step_;
   btDefaultCollisionConfiguration configuration_;
   btCollisionDispatcher dispatcher_;
   btSimpleBroadphase broadphase_;
@@ -216,59 +237,104 @@ class stacking_world_simulator {
   struct cube_columns {
     std::size_t x, y, drop, on_top;
   };
-  static constexpr double release_gap = 0.25;  // cm between a released cube and what it lands on
+  static constexpr double release_gap = 0.001;  // cm between a released cube and what it lands on
 
   stacking_physics p_;
   btStaticPlaneShape ground_{btVector3(0, 0, 1), 0};
   btBoxShape cube_;
   std::vector<cube_columns> columns_;
-  world world_;
+  world world_{stacking_time_step};
   std::vector<btRigidBody*> placed_;
 };
 
-/// A container as a compound of boxes: a round floor and a ring of wall panels that follow
-/// the profile from the floor's edge up to the rim.
-class container_shape {
+/// The container (pgm/sim/container.hpp's profile) as a Bullet shape. Contacts with a
+/// sphere are computed by sphere_container_algorithm from the profile, exactly: unlike a
+/// compound of flat panels it has no creases where a sphere touches two faces at once, which
+/// made the outcome of such landings depend on the time step.
+class container_shape final : public btCollisionShape {
  public:
-  container_shape(const dropping_physics& p, double scale) {
-    radius_ = scale * p.diameter_at_scale_1 / 2;
-    height_ = scale * p.height_at_scale_1;
-    const double floor_radius = p.floor_fraction * radius_;
-    const double floor_thickness = std::min(1.0, height_ / 3);
-    const double wall = 0.8;
-    parts_.push_back(
-        std::make_unique<btCylinderShapeZ>(vec(floor_radius + wall, floor_radius + wall, floor_thickness / 2)));
-    compound_.addChildShape(at(0, 0, floor_thickness / 2), parts_.back().get());
-    const int panels = 24;
-    const double rise = height_ - floor_thickness;
-    const double run = radius_ - floor_radius;
-    const double slant = std::hypot(run, rise);
-    const double tilt = std::atan2(run, rise);  // from vertical, top leaning outwards
-    const double mid_radius = (floor_radius + radius_) / 2;
-    const double half_width = 1.15 * std::numbers::pi * (radius_ + wall) / panels;
-    for (int k = 0; k < panels; ++k) {
-      const double angle = 2 * std::numbers::pi * k / panels;
-      parts_.push_back(std::make_unique<btBoxShape>(vec(wall / 2, half_width, slant / 2)));
-      btQuaternion around(btVector3(0, 0, 1), static_cast<btScalar>(angle));
-      btQuaternion lean(btVector3(0, 1, 0), static_cast<btScalar>(tilt));
-      // The inner face lies on the profile: move the panel's centre out along its normal.
-      const double r = mid_radius + (wall / 2) * std::cos(tilt);
-      const double z = floor_thickness + rise / 2 - (wall / 2) * std::sin(tilt);
-      btTransform pose(around * lean, vec(r * std::cos(angle), r * std::sin(angle), z));
-      compound_.addChildShape(pose, parts_.back().get());
-    }
-  }
-  container_shape(const container_shape&) = delete;
-  container_shape& operator=(const container_shape&) = delete;
+  container_shape() { m_shapeType = CUSTOM_CONCAVE_SHAPE_TYPE; }
 
-  btCompoundShape* shape() { return &compound_; }
-  [[nodiscard]] double radius() const { return radius_; }
-  [[nodiscard]] double height() const { return height_; }
+  void reshape(const dropping_physics& p, double scale) { profile_.emplace(p, scale); }
+  [[nodiscard]] const container_profile& profile() const { return *profile_; }
+
+  void getAabb(const btTransform& t, btVector3& lo, btVector3& hi) const override {
+    const double extent = profile_->extent();
+    lo = t.getOrigin() + vec(-extent, -extent, 0);
+    hi = t.getOrigin() + vec(extent, extent, profile_->top());
+  }
+  void setLocalScaling(const btVector3&) override {}
+  [[nodiscard]] const btVector3& getLocalScaling() const override { return unit_; }
+  void calculateLocalInertia(btScalar, btVector3& inertia) const override { inertia.setZero(); }
+  [[nodiscard]] const char* getName() const override { return "container"; }
+  void setMargin(btScalar) override {}
+  [[nodiscard]] btScalar getMargin() const override { return 0; }
 
  private:
-  std::vector<std::unique_ptr<btCollisionShape>> parts_;
-  btCompoundShape compound_;
-  double radius_ = 0, height_ = 0;
+  std::optional<container_profile> profile_;
+  btVector3 unit_{1, 1, 1};
+};
+
+/// Sphere against container_shape (the container is static and not rotated).
+class sphere_container_algorithm final : public btActivatingCollisionAlgorithm {
+ public:
+  sphere_container_algorithm(const btCollisionAlgorithmConstructionInfo& info, const btCollisionObjectWrapper* a,
+                             const btCollisionObjectWrapper* b, bool swapped)
+      : btActivatingCollisionAlgorithm(info, a, b), swapped_(swapped) {
+    const auto* sphere = swapped ? b : a;
+    const auto* container = swapped ? a : b;
+    manifold_ = m_dispatcher->getNewManifold(sphere->getCollisionObject(), container->getCollisionObject());
+  }
+  ~sphere_container_algorithm() override { m_dispatcher->releaseManifold(manifold_); }
+  sphere_container_algorithm(const sphere_container_algorithm&) = delete;
+  sphere_container_algorithm& operator=(const sphere_container_algorithm&) = delete;
+
+  void processCollision(const btCollisionObjectWrapper* a, const btCollisionObjectWrapper* b, const btDispatcherInfo&,
+                        btManifoldResult* result) override {
+    const auto* sphere_wrap = swapped_ ? b : a;
+    const auto* container_wrap = swapped_ ? a : b;
+    const auto& shape = static_cast<const container_shape*>(container_wrap->getCollisionShape())->profile();
+    const double r = static_cast<const btSphereShape*>(sphere_wrap->getCollisionShape())->getRadius();
+    const btVector3 base = container_wrap->getWorldTransform().getOrigin();
+    const btVector3 c = sphere_wrap->getWorldTransform().getOrigin() - base;
+    const double rho = std::hypot(c.x(), c.y());
+    // The meridian plane's horizontal direction; any on the axis itself.
+    const double cos_phi = rho > 1e-9 ? c.x() / rho : 1.0;
+    const double sin_phi = rho > 1e-9 ? c.y() / rho : 0.0;
+    const double half = shape.wall() / 2;
+    const double breaking = manifold_->getContactBreakingThreshold();
+    result->setPersistentManifold(manifold_);
+    std::array<container_profile::nearest_point, 3> found{};
+    const int n = shape.nearest(rho, c.z(), r + half + breaking, found);
+    for (int k = 0; k < n; ++k) {
+      const auto& f = found[static_cast<std::size_t>(k)];
+      const btVector3 normal = vec(f.normal_rho * cos_phi, f.normal_rho * sin_phi, f.normal_z);
+      const btVector3 on_surface = base + vec((f.rho + half * f.normal_rho) * cos_phi,
+                                              (f.rho + half * f.normal_rho) * sin_phi, f.z + half * f.normal_z);
+      result->addContactPoint(normal, on_surface, static_cast<btScalar>(f.distance - r - half));
+    }
+    if (manifold_->getNumContacts()) result->refreshContactPoints();
+  }
+
+  btScalar calculateTimeOfImpact(btCollisionObject*, btCollisionObject*, const btDispatcherInfo&,
+                                 btManifoldResult*) override {
+    return 1;
+  }
+  void getAllContactManifolds(btManifoldArray& manifolds) override { manifolds.push_back(manifold_); }
+
+  struct create final : btCollisionAlgorithmCreateFunc {
+    explicit create(bool swapped) { m_swapped = swapped; }
+    btCollisionAlgorithm* CreateCollisionAlgorithm(btCollisionAlgorithmConstructionInfo& info,
+                                                   const btCollisionObjectWrapper* a,
+                                                   const btCollisionObjectWrapper* b) override {
+      void* memory = info.m_dispatcher1->allocateCollisionAlgorithm(sizeof(sphere_container_algorithm));
+      return new (memory) sphere_container_algorithm(info, a, b, m_swapped);
+    }
+  };
+
+ private:
+  btPersistentManifold* manifold_ = nullptr;
+  bool swapped_;
 };
 
 class dropping_world_simulator {
@@ -279,26 +345,34 @@ class dropping_world_simulator {
         x_(task.index("xOff")),
         y_(task.index("yOff")),
         scale_(task.index("scalingFactor")),
-        inside_(task.index("inside")) {}
+        inside_(task.index("inside")) {
+    world_.dispatcher().registerCollisionCreateFunc(SPHERE_SHAPE_PROXYTYPE, CUSTOM_CONCAVE_SHAPE_TYPE, &sphere_first_);
+    world_.dispatcher().registerCollisionCreateFunc(CUSTOM_CONCAVE_SHAPE_TYPE, SPHERE_SHAPE_PROXYTYPE,
+                                                    &container_first_);
+  }
 
   void run(std::span<double> values, random_stream& noise) {
     const double r = p_.sphere_diameter / 2;
     const double x = values[x_] + p_.landing_noise * noise.normal();
     const double y = values[y_] + p_.landing_noise * noise.normal();
-    world_.clear();  // before the container it holds is replaced
-    container_ = std::make_unique<container_shape>(p_, values[scale_]);
-    const auto& container = *container_;
+    world_.clear();  // before the container's shape changes
+    container_.reshape(p_, values[scale_]);
     world_.add(&ground_, 0, at(0, 0, 0), p_.friction, 1.0);
-    world_.add(container_->shape(), 0, at(0, 0, 0), p_.friction, 1.0);
-    // Start just above the rim with the speed of a fall from drop_height.
-    const double start = std::min(container.height() + r + 1.0, p_.drop_height + r);
-    sphere_body_ = world_.add(&sphere_, p_.sphere_mass, at(x, y, start), p_.friction, p_.restitution);
+    world_.add(&container_, 0, at(0, 0, 0), p_.friction, 1.0);
+    // The sphere falls straight down until it first touches the container or the table:
+    // start it there, with the speed of that fall, so that the first impact is resolved
+    // where it happens whatever the time step.
+    const auto& profile = container_.profile();
+    const double rim = profile.height();
+    const auto touch = profile.first_touch(std::hypot(x, y));
+    const double start = std::min(touch.hit ? touch.z : r, p_.drop_height + r);
+    sphere_body_ = world_.add(&sphere_, p_.sphere_mass, at(x, y, start), p_.friction, p_.restitution, 0.02);
     fallen_through(sphere_body_, p_.drop_height + r - start);
     auto* sphere = sphere_body_;
-    const double out = container.radius() + r + 1.0;
-    const double rim = container.height();
+    const double opening = profile.radius();
+    const double out = profile.extent() + r + 1.0;
     // Decided once the sphere lies on the table beyond the rim, or is within the opening
-    // without the energy (moving and spinning) to lift its centre over the rim's edge.
+    // without the energy (moving and spinning) to lift its centre over the rim.
     world_.settle(4.0, [&] {
       const auto o = sphere->getWorldTransform().getOrigin();
       const double rho = std::hypot(o.x(), o.y());
@@ -306,10 +380,10 @@ class dropping_world_simulator {
       const double v2 = sphere->getLinearVelocity().length2();
       const double w2 = sphere->getAngularVelocity().length2();
       const double reach = (v2 + 0.4 * r * r * w2) / (2 * gravity);
-      return rho < container.radius() && o.z() + reach < rim + r;
+      return rho < opening && o.z() + reach < rim + r;
     });
     const auto o = sphere->getWorldTransform().getOrigin();
-    values[inside_] = std::hypot(o.x(), o.y()) < container.radius() && o.z() < container.height() + r ? 1.0 : 0.0;
+    values[inside_] = std::hypot(o.x(), o.y()) < opening && o.z() < rim + r ? 1.0 : 0.0;
   }
 
   [[nodiscard]] std::vector<std::array<double, 7>> poses() const {
@@ -320,9 +394,10 @@ class dropping_world_simulator {
   dropping_physics p_;
   btStaticPlaneShape ground_{btVector3(0, 0, 1), 0};
   btSphereShape sphere_;
+  container_shape container_;
+  sphere_container_algorithm::create sphere_first_{false}, container_first_{true};
   std::size_t x_, y_, scale_, inside_;
-  world world_;  // declared after the container so that it is emptied before the shape goes
-  std::unique_ptr<container_shape> container_;
+  world world_{dropping_time_step};  // last: emptied and gone before the shapes and collision functions it uses
   btRigidBody* sphere_body_ = nullptr;
 };
 
