@@ -108,6 +108,8 @@ TEST(task_test, errors_name_the_file_and_the_key) {
   EXPECT_THAT(error_of(with(good, "\"cube_size\": 5.0", "\"cube_size\": \"big\"")), HasSubstr("/physics/cube_size: expected a number"));
   EXPECT_THAT(error_of(with(good, "\"tipping_margin\": {", "\"tipping_margin\": {\"later\": 2.5,")),
               HasSubstr("/physics/analytic/tipping_margin/later: must be below the supporting half-width"));
+  EXPECT_THAT(error_of(with(good, "\"cube_mass\": 0.1", "\"cube_mass\": 0.1, \"time_step\": 0")),
+              HasSubstr("/physics/time_step: expected a step in (0, 0.05] seconds"));
   EXPECT_THAT(error_of(with(good, "\"analytic\": {", "\"analytic\": 3, \"unused\": {")),
               HasSubstr("/physics/analytic: expected an object"));
   const auto glass = pgm::detail::read_file(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "drop-glass.json");

@@ -64,6 +64,8 @@ struct stacking_physics {
   double friction = 0.6;
   double restitution = 0.1;
   double cube_mass = 0.1;  ///< kg
+  /// Bullet's fixed step (s): the largest whose outcomes agree with finer ones (docs/simulators.md).
+  double time_step = 1.0 / 240;
   // The analytic model's own constants ("analytic" in the file; pgm calibrate fits them to
   // Bullet): a landing cube's impact, which the static rule does not see, as a margin (cm)
   // by which the load's centre of mass must stay inside the supporting face's edge and as
@@ -87,6 +89,8 @@ struct dropping_physics {
   double friction = 0.5;
   double restitution = 0.5;
   double sphere_mass = 0.1;  ///< kg
+  /// Bullet's fixed step (s): the largest whose outcomes agree with finer ones (docs/simulators.md).
+  double time_step = 1.0 / 240;
   // The analytic model's own constants ("analytic" in the file; pgm calibrate fits them to
   // Bullet). The model resolves the sphere's first impact with the container and the flight
   // after it in closed form (docs/simulators.md): the share of the speed into the surface
@@ -217,6 +221,12 @@ class task_reader : public pgm::detail::json_reader {
     return value;
   }
 
+  double time_step(const nlohmann::json& object, const std::string& path, double fallback) const {
+    const auto value = optional_number(object, "time_step", path, fallback);
+    if (!(value > 0 && value <= 0.05)) fail(path + "/time_step", "expected a step in (0, 0.05] seconds");
+    return value;
+  }
+
   task_variable read_task_variable(const nlohmann::json& value, const std::string& path) const {
     task_variable v;
     if (!value.is_object()) fail(path, "expected an object");
@@ -343,6 +353,7 @@ class task_reader : public pgm::detail::json_reader {
       p.friction = non_negative(value, "friction", path, p.friction);
       p.restitution = non_negative(value, "restitution", path, p.restitution);
       p.cube_mass = positive(value, "cube_mass", path);
+      p.time_step = time_step(value, path, p.time_step);
       if (const auto* analytic = optional_member(value, "analytic")) {
         const auto at = path + "/analytic";
         if (!analytic->is_object()) fail(at, "expected an object");
@@ -383,6 +394,7 @@ class task_reader : public pgm::detail::json_reader {
       p.friction = non_negative(value, "friction", path, p.friction);
       p.restitution = non_negative(value, "restitution", path, p.restitution);
       p.sphere_mass = positive(value, "sphere_mass", path);
+      p.time_step = time_step(value, path, p.time_step);
       p.impact_restitution = p.restitution;
       if (const auto* analytic = optional_member(value, "analytic")) {
         const auto at = path + "/analytic";

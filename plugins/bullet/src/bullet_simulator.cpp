@@ -33,14 +33,9 @@ namespace pgm::sim {
 namespace bullet_detail {
 
 constexpr double gravity = standard_gravity;  // cm/s²
-// The largest fixed steps whose outcomes agree with half the step within sampling noise
-// (docs/simulators.md): stacks need the finer one, as a cube tipping over an edge is
-// resolved by the contact solver step by step; a sphere's first impact is placed exactly.
-constexpr double stacking_time_step = 1.0 / 240;  // s
-constexpr double dropping_time_step = 1.0 / 120;  // s
-constexpr double rest_time = 0.05;                // s every moving body must stay quiet to count as resting
-constexpr double quiet_speed = 0.5;               // cm/s
-constexpr double quiet_spin = 0.05;               // rad/s
+constexpr double rest_time = 0.05;            // s every moving body must stay quiet to count as resting
+constexpr double quiet_speed = 0.5;           // cm/s
+constexpr double quiet_spin = 0.05;           // rad/s
 
 btVector3 vec(double x, double y, double z) {
   return {static_cast<btScalar>(x), static_cast<btScalar>(y), static_cast<btScalar>(z)};
@@ -243,7 +238,7 @@ class stacking_world_simulator {
   btStaticPlaneShape ground_{btVector3(0, 0, 1), 0};
   btBoxShape cube_;
   std::vector<cube_columns> columns_;
-  world world_{stacking_time_step};
+  world world_{p_.time_step};
   std::vector<btRigidBody*> placed_;
 };
 
@@ -397,7 +392,7 @@ class dropping_world_simulator {
   container_shape container_;
   sphere_container_algorithm::create sphere_first_{false}, container_first_{true};
   std::size_t x_, y_, scale_, inside_;
-  world world_{dropping_time_step};  // last: emptied and gone before the shapes and collision functions it uses
+  world world_{p_.time_step};  // last: emptied and gone before the shapes and collision functions it uses
   btRigidBody* sphere_body_ = nullptr;
 };
 
