@@ -149,6 +149,17 @@ void fallen_through(btRigidBody* body, double height) {
   body->setLinearVelocity(vec(0, 0, -std::sqrt(2 * gravity * std::max(0.0, height))));
 }
 
+/// Position and rotation (quaternion x, y, z, w) of each body.
+std::vector<std::array<double, 7>> poses_of(const std::vector<btRigidBody*>& bodies) {
+  std::vector<std::array<double, 7>> result;
+  for (const auto* b : bodies) {
+    const auto& t = b->getWorldTransform();
+    const auto q = t.getRotation();
+    result.push_back({t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z(), q.x(), q.y(), q.z(), q.w()});
+  }
+  return result;
+}
+
 class stacking_world_simulator {
  public:
   explicit stacking_world_simulator(const task_definition& task)
@@ -170,7 +181,7 @@ class stacking_world_simulator {
     world_.add(&cube_, 0, at(0, 0, size / 2), p_.friction, 1.0);
     double below_x = 0, below_y = 0, below_top = size;
     bool standing = true;
-    std::vector<btRigidBody*>& placed = placed_;
+    auto& placed = placed_;  // the cubes released so far, bottom first
     placed.clear();
     for (std::size_t i = 0; i < columns_.size(); ++i) {
       const auto& c = columns_[i];
@@ -217,16 +228,6 @@ class stacking_world_simulator {
   }
 
   [[nodiscard]] std::vector<std::array<double, 7>> poses() const { return poses_of(placed_); }
-
-  static std::vector<std::array<double, 7>> poses_of(const std::vector<btRigidBody*>& bodies) {
-    std::vector<std::array<double, 7>> result;
-    for (const auto* b : bodies) {
-      const auto& t = b->getWorldTransform();
-      const auto q = t.getRotation();
-      result.push_back({t.getOrigin().x(), t.getOrigin().y(), t.getOrigin().z(), q.x(), q.y(), q.z(), q.w()});
-    }
-    return result;
-  }
 
  private:
   struct cube_columns {
@@ -381,9 +382,7 @@ class dropping_world_simulator {
     values[inside_] = std::hypot(o.x(), o.y()) < opening && o.z() < rim + r ? 1.0 : 0.0;
   }
 
-  [[nodiscard]] std::vector<std::array<double, 7>> poses() const {
-    return stacking_world_simulator::poses_of({sphere_body_});
-  }
+  [[nodiscard]] std::vector<std::array<double, 7>> poses() const { return poses_of({sphere_body_}); }
 
  private:
   dropping_physics p_;
