@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   pgm::cli::add_correspond_command(app);
   pgm::cli::add_learn_structure_command(app);
   pgm::cli::add_experiment_command(app);
+  pgm::cli::add_report_command(app);
   pgm::cli::add_simulate_command(app);
   pgm::cli::add_calibrate_command(app);
   pgm::cli::add_predict_command(app);

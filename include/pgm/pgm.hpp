@@ -1,7 +1,8 @@
 #pragma once
 /// \file
 /// Everything pgm offers in one include. Include the module headers directly for faster
-/// builds; docs/api.md lists which header gives what.
+/// builds; docs/api.md lists which header gives what. The optional adapters
+/// (pgm/adapters/eigen.hpp) are not included: they need their library on the include path.
 
 #include "pgm/core/assert.hpp"
 #include "pgm/core/bayesian_network.hpp"
@@ -47,11 +48,23 @@
 #include "pgm/transfer/replacement_plan.hpp"
 #include "pgm/transfer/state_map.hpp"
 #include "pgm/transfer/transfer_problem.hpp"
+#include "pgm/eval/cached_source.hpp"
 #include "pgm/eval/experiment.hpp"
 #include "pgm/eval/family_data.hpp"
+#include "pgm/eval/headline.hpp"
 #include "pgm/eval/metrics.hpp"
+#include "pgm/eval/plot.hpp"
+#include "pgm/eval/report_template.hpp"
+#include "pgm/eval/report_writer.hpp"
+#include "pgm/eval/result_tables.hpp"
+#include "pgm/eval/run_scenarios.hpp"
 #include "pgm/eval/scenario.hpp"
+#include "pgm/eval/scenario_catalog.hpp"
+#include "pgm/eval/simulated_source.hpp"
 #include "pgm/sim/analytic.hpp"
 #include "pgm/sim/analytic_probability.hpp"
+#include "pgm/sim/registry.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task.hpp"
+#include "pgm/sim/task_file.hpp"
+#include "pgm/sim/task_lookup.hpp"

@@ -58,6 +58,7 @@ void add_transfer_command(CLI::App& app);
 void add_correspond_command(CLI::App& app);
 void add_learn_structure_command(CLI::App& app);
 void add_experiment_command(CLI::App& app);
+void add_report_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
 void add_calibrate_command(CLI::App& app);
 void add_predict_command(CLI::App& app);

@@ -18,6 +18,7 @@
 #include "pgm/detail/text.hpp"
 #include "pgm/sim/agreement.hpp"
 #include "pgm/sim/task.hpp"
+#include "pgm/sim/task_lookup.hpp"
 
 namespace pgm::cli {
 namespace {

@@ -9,8 +9,9 @@
 #include "cli/progress.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/data/csv.hpp"
+#include "pgm/detail/text.hpp"
 #include "pgm/sim/simulator.hpp"
-#include "pgm/sim/task.hpp"
+#include "pgm/sim/task_lookup.hpp"
 
 namespace pgm::cli {
 namespace {
@@ -84,7 +85,9 @@ void add_simulate_command(CLI::App& app) {
   auto* cmd = app.add_subcommand("simulate", "Run experiments of a task in a simulator and write the raw data as CSV");
   cmd->add_option("--task", args->task, "Task name, e.g. 1-stack, 2-stack, drop-plate, drop-bowl, drop-glass")
       ->required();
-  cmd->add_option("--backend", args->backend, "Simulator: analytic (closed-form) or bullet (rigid bodies)")
+  // The back-ends this build has registered (analytic always; bullet and users' when linked).
+  cmd->add_option("--backend", args->backend,
+                  "Simulator back-end: " + detail::join(sim::backends()) + " (analytic: closed-form; bullet: rigid bodies)")
       ->capture_default_str();
   cmd->add_option("--variant", args->variant,
                   "sim, or reality: the stacking tasks' stand-in for the real robot (not real data)")

@@ -36,7 +36,7 @@ constexpr const char* stacking =
     "0,0,Red,1\n0,1,Blue,1\n1,1,Red,0\n1,0,Green,1\n0,0,Red,1\n1,1,Blue,0\n2,0,Red,0\n";
 
 TEST_F(cli_test, every_command_has_help) {
-  for (const std::string command : {"", "fit ", "discretize ", "show ", "transfer ", "correspond ", "experiment ", "simulate ", "predict ", "prevent ", "learn-structure "}) {
+  for (const std::string command : {"", "fit ", "discretize ", "show ", "transfer ", "correspond ", "experiment ", "report ", "simulate ", "predict ", "prevent ", "learn-structure "}) {
     const auto r = run(command + "--help");
     EXPECT_EQ(r.code, 0) << command;
     EXPECT_THAT(r.out, HasSubstr("Usage")) << command;
@@ -372,6 +372,39 @@ TEST_F(cli_test, experiment_output_folder_is_checked_first) {
   expect_failure("experiment --scenario 2-stack-reality --reps 1 --out " + path("missing/results").string(),
                  "the folder '" + path("missing").string() + "' does not exist", path("missing"));
   expect_failure("experiment --scenario bogus --out " + path("r").string(), "unknown scenario 'bogus'", path("r"));
+}
+
+TEST_F(cli_test, report_writes_and_checks_a_document_from_summaries) {
+  const std::string header = "scenario,target,strategy,w,rows,metric,mean,sd,repetitions\n";
+  const auto summary = file("summary.csv", header + "s,t,mle,0,0,failure_prevention,0.5,0.1,20\n");
+  const auto other = file("other.csv", header + "s,t,mle,0,0,failure_prevention,0.25,0.1,20\n");
+  const auto page = file("page.md", "# Results\nMLE prevents {{pct:1 s/t/mle/0/0/failure_prevention}} %, "
+                                    "elsewhere {{pct:0 b:s/t/mle/0/0/failure_prevention}} %.\n");
+  const auto sources = " --template " + page.string() + " --summary " + summary.string() + " --summary b=" + other.string();
+  const auto printed = run("report" + sources);
+  EXPECT_EQ(printed.code, 0) << printed.err;
+  EXPECT_EQ(printed.out, "# Results\nMLE prevents 50.0 %, elsewhere 25 %.\n");
+  const auto out = path("RESULTS.md").string();
+  ASSERT_EQ(run("report" + sources + " --out " + out).code, 0);
+  EXPECT_EQ(slurp(out), printed.out);
+  const auto checked = run("report" + sources + " --out " + out + " --check");
+  EXPECT_EQ(checked.code, 0) << checked.err;
+  EXPECT_THAT(checked.out, HasSubstr("matches"));
+  // A number edited by hand (or a summary that changed) is found.
+  file("RESULTS.md", "# Results\nMLE prevents 51.0 %, elsewhere 25 %.\n");
+  expect_failure("report" + sources + " --out " + out + " --check",
+                 "is out of date with its summaries: line 2 reads 'MLE prevents 51.0 %");
+  EXPECT_EQ(run("report" + sources + " --check").code, 2) << "--check needs --out";
+}
+
+TEST_F(cli_test, report_errors_name_the_template_place_and_write_nothing) {
+  const auto summary = file("summary.csv", "scenario,target,strategy,w,rows,metric,mean,sd,repetitions\n"
+                                           "s,t,mle,0,0,failure_prevention,0.5,0.1,20\n");
+  const auto page = file("page.md", "ok\n  {{pct:1 s/t/direct/0/0/failure_prevention}}\n");
+  expect_failure("report --template " + page.string() + " --summary " + summary.string() + " --out " +
+                     path("out.md").string(),
+                 page.string() + ":2:3: {{pct:1 s/t/direct/0/0/failure_prevention}}: no summary row matches", path("out.md"));
+  expect_failure("report --template " + page.string() + " --summary " + path("none.csv").string(), "none.csv");
 }
 
 TEST_F(cli_test, a_number_too_large_for_a_double_in_json_is_a_parse_error) {

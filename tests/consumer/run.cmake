@@ -1,12 +1,7 @@
 # Builds and runs tests/consumer against pgm, installed (MODE=find_package) or fetched
 # (MODE=fetch_content). Invoked by ctest with PGM_SOURCE, PGM_BINARY, WORK.
 file(REMOVE_RECURSE ${WORK})
-function(run)
-  execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT code EQUAL 0)
-    message(FATAL_ERROR "failed: ${ARGN}\n${out}\n${err}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/../support/run_checked.cmake)
 if(MODE STREQUAL "find_package")
   run(${CMAKE_COMMAND} --install ${PGM_BINARY} --prefix ${WORK}/prefix)
   run(${CMAKE_COMMAND} -S ${PGM_SOURCE}/tests/consumer -B ${WORK}/build -DCMAKE_PREFIX_PATH=${WORK}/prefix)

@@ -31,12 +31,6 @@ TEST(cpt_test, values_are_configuration_major_last_parent_fastest) {
   EXPECT_THAT(t.column(config_index(5)), ElementsAre(0.0, 1.0));
   EXPECT_EQ(t.parent_codes(config_index(3)), (std::vector<std::size_t>{1, 1}));
   EXPECT_DOUBLE_EQ(t(state_index(1), config_index(2)), 0.7);
-  // The Eigen view has one column per configuration.
-  const auto m = t.matrix();
-  EXPECT_EQ(m.rows(), 2);
-  EXPECT_EQ(m.cols(), 6);
-  EXPECT_DOUBLE_EQ(m(1, 3), 0.75);
-  EXPECT_TRUE(((m.colwise().sum().array() - 1.0).abs() < 1e-12).all());
 }
 
 TEST(cpt_test, rejects_tables_that_are_not_distributions) {

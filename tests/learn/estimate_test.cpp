@@ -138,5 +138,79 @@ TEST(estimate_test, weighted_prior_identities_on_random_networks) {
   }
 }
 
+// A user's parameter prior: the ParameterPrior concept accepts and rejects the right types, and
+// a prior of one's own plugs into estimate() and fit() like the built-in ones.
+
+// Pseudo-count `weight` on the child's last state and 1 elsewhere, whatever the parents.
+struct favour_last_state {
+  double weight = 3.0;
+  [[nodiscard]] static std::string_view name() { return "favour-last"; }
+  [[nodiscard]] std::vector<double> pseudo_counts(const variable& child, const std::vector<variable>& parents) const {
+    std::size_t configurations = 1;
+    for (const auto& p : parents) configurations *= p.cardinality();
+    std::vector<double> alpha(configurations * child.cardinality(), 1.0);
+    for (std::size_t u = 0; u < configurations; ++u) alpha[(u + 1) * child.cardinality() - 1] = weight;
+    return alpha;
+  }
+};
+
+// Gives a fixed list, right or wrong for the family.
+struct fixed_counts {
+  std::vector<double> alpha;
+  [[nodiscard]] static std::string_view name() { return "fixed"; }
+  [[nodiscard]] std::vector<double> pseudo_counts(const variable&, const std::vector<variable>&) const { return alpha; }
+};
+
+struct no_name {
+  std::vector<double> pseudo_counts(const variable&, const std::vector<variable>&) const;
+};
+struct mutating_call {
+  static std::string_view name();
+  std::vector<double> pseudo_counts(const variable&, const std::vector<variable>&);  // not const
+};
+struct wrong_result {
+  static std::string_view name();
+  std::vector<float> pseudo_counts(const variable&, const std::vector<variable>&) const;
+};
+static_assert(ParameterPrior<favour_last_state>);
+static_assert(!ParameterPrior<no_name>);
+static_assert(!ParameterPrior<mutating_call>);
+static_assert(!ParameterPrior<wrong_result>);
+static_assert(!ParameterPrior<k2_prior>);  // built-ins are alternatives of parameter_prior, not models
+static_assert(std::is_convertible_v<favour_last_state, parameter_prior>);
+
+TEST(parameter_prior_test, a_users_prior_estimates_as_its_pseudo_counts_do) {
+  const auto mine = values(estimate(small_counts(), favour_last_state{}));
+  EXPECT_EQ(mine, values(estimate(small_counts(), pseudo_counts_prior{{1, 3, 1, 3, 1, 3}})));
+  // (1 + 1) / (4 + 3), (3 + 2) / (4 + 3), …; no data: the prior, 1/4 and 3/4.
+  EXPECT_DOUBLE_EQ(mine[0], 2.0 / 7);
+  EXPECT_DOUBLE_EQ(mine[3], 4.0 / 8);
+  EXPECT_DOUBLE_EQ(mine[5], 3.0 / 4);
+}
+
+TEST(parameter_prior_test, a_users_prior_fits_a_network_globally_and_per_node) {
+  const variable a("a", {"no", "yes"});
+  const variable b("b", {"no", "yes"});
+  dataset data;
+  data.add(discrete_column(a, std::vector<unsigned>{0, 1, 1, 1}));
+  data.add(discrete_column(b, std::vector<unsigned>{0, 0, 1, 1}));
+  const network_structure structure({a, b}, {{"a", "b"}});
+  const auto everywhere = fit(structure, data, {.prior = favour_last_state{}});
+  EXPECT_DOUBLE_EQ(everywhere.table("a").probability("yes", {}), (3.0 + 3) / (4 + 4));
+  EXPECT_DOUBLE_EQ(everywhere.table("b").probability("yes", {"yes"}), (2.0 + 3) / (3 + 4));
+  fit_options options;
+  options.node_priors.emplace("b", favour_last_state{10});
+  const auto one_node = fit(structure, data, options);
+  EXPECT_DOUBLE_EQ(one_node.table("a").probability("yes", {}), 3.0 / 4);  // MLE
+  EXPECT_DOUBLE_EQ(one_node.table("b").probability("yes", {"no"}), (0.0 + 10) / (1 + 11));
+}
+
+TEST(parameter_prior_test, errors_name_the_prior_and_the_node) {
+  EXPECT_THAT([] { (void)estimate(small_counts(), fixed_counts{{1, 2}}); },
+              ThrowsMessage<model_error>(HasSubstr("the prior 'fixed': the pseudo-counts of 'c' need 6 values, got 2")));
+  EXPECT_THAT([] { (void)estimate(small_counts(), fixed_counts{{1, 1, 1, -2, 1, 1}}); },
+              ThrowsMessage<model_error>(HasSubstr("the prior 'fixed': a pseudo-count must be a finite number ≥ 0, got -2")));
+}
+
 }  // namespace
 }  // namespace pgm

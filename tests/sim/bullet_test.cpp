@@ -1,6 +1,7 @@
 // The Bullet back-end: the same shape of physics as the analytic model, determinism across
 // thread counts, and per-configuration success rates close to the analytic ground truth.
-// Sizes stay small so that the suite also runs quickly under the sanitizers.
+// Sizes stay small so that the suite also runs quickly under the sanitizers. Built only when
+// the pgm_bullet plugin is (its objects register "bullet").
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -12,22 +13,17 @@
 
 #include "sim/sim_support.hpp"
 
-#if defined(PGM_WITH_BULLET)
 #include "pgm/sim/agreement.hpp"
 #include "pgm/sim/bullet.hpp"
-#endif
 
 namespace pgm::sim {
 namespace {
 
-using ::testing::HasSubstr;
 using testing::pinned;
 using testing::rate;
 using testing::shipped;
 
-#if defined(PGM_WITH_BULLET)
-
-// More rows when PGM_BULLET_TEST_SCALE is set, to measure agreement more finely.
+// PGM_BULLET_TEST_SCALE=k runs k times the rows, to measure agreement more finely.
 std::size_t scaled(std::size_t rows) {
   if (const char* factor = std::getenv("PGM_BULLET_TEST_SCALE")) return rows * std::strtoul(factor, nullptr, 10);
   return rows;
@@ -191,18 +187,6 @@ TEST(bullet_test, three_cubes_fall_as_the_analytic_model_says) {
     EXPECT_LT(rate(leaning, backend, 40, 7, "onTop3"), 0.1) << backend;
   }
 }
-
-#else
-
-TEST(bullet_test, reports_that_it_was_not_built) {
-  simulate_options o;
-  o.backend = "bullet";
-  o.rows = 1;
-  EXPECT_THAT([&] { (void)simulate(shipped("1-stack"), o); },
-              ::testing::ThrowsMessage<data_error>(HasSubstr("the bullet back-end was not built")));
-}
-
-#endif
 
 }  // namespace
 }  // namespace pgm::sim

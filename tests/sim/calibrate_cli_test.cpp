@@ -9,7 +9,7 @@
 #include <fstream>
 #include <string>
 
-#include "pgm/sim/task.hpp"
+#include "pgm/sim/task_file.hpp"
 #include "support/program_test.hpp"
 
 namespace pgm {

@@ -13,6 +13,8 @@
 #include "pgm/sim/analytic_probability.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task.hpp"
+#include "pgm/sim/task_file.hpp"
+#include "pgm/sim/task_lookup.hpp"
 
 namespace pgm::sim::testing {
 

@@ -25,6 +25,7 @@ TEST_F(simulate_cli_test, help) {
   const auto r = run("simulate --help");
   EXPECT_EQ(r.code, 0);
   EXPECT_THAT(r.out, HasSubstr("--backend"));
+  EXPECT_THAT(r.out, HasSubstr("Simulator back-end: analytic"));  // the registered ones, by name
   EXPECT_THAT(r.out, HasSubstr("--variant"));
 }
 

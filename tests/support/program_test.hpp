@@ -1,6 +1,6 @@
 #pragma once
 // A fixture for tests that run the `pgm` program as a user does: each test gets its own empty
-// folder, runs commands with their output captured, and checks failures by exit code, message
+// folder (folder_test), runs commands with their output captured, and checks failures by exit code, message
 // and the absence of any half-written output. PGM_PROGRAM is the program's path.
 
 #include <gmock/gmock.h>
@@ -10,8 +10,9 @@
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
+
+#include "support/folder_test.hpp"
 
 namespace pgm::testing {
 
@@ -21,29 +22,8 @@ struct program_result {
   std::string err;
 };
 
-class program_test : public ::testing::Test {
+class program_test : public folder_test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::filesystem::temp_directory_path() / ("pgm_" + std::string(info->test_suite_name()) + "_" + info->name());
-    std::filesystem::remove_all(dir_);
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override { std::filesystem::remove_all(dir_); }
-
-  /// A file of this test's folder with `content`.
-  std::filesystem::path file(const std::string& name, const std::string& content) const {
-    const auto at = dir_ / name;
-    std::ofstream(at) << content;
-    return at;
-  }
-  std::filesystem::path path(const std::string& name) const { return dir_ / name; }
-
-  static std::string slurp(const std::filesystem::path& p) {
-    std::ifstream in(p);
-    return {std::istreambuf_iterator<char>(in), {}};
-  }
-
   /// Runs `pgm <arguments>` through the shell (quote what the shell would split).
   program_result run(const std::string& arguments) const {
     const auto out = dir_ / "stdout.txt";
@@ -63,8 +43,6 @@ class program_test : public ::testing::Test {
       EXPECT_FALSE(std::filesystem::exists(output)) << output;
     }
   }
-
-  std::filesystem::path dir_;
 };
 
 }  // namespace pgm::testing

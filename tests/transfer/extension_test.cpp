@@ -1,4 +1,4 @@
-// A user's strategy, added in its own translation unit (plugins/transfer/blend.cpp, linked into
+// A user's strategy, added in its own translation unit (docs/examples/extending/blend.cpp, linked into
 // this test), is found by name; the concept accepts and rejects the right types.
 
 #include <gmock/gmock.h>

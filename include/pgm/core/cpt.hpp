@@ -16,8 +16,6 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Core>
-
 #include "pgm/core/error.hpp"
 #include "pgm/core/mixed_radix.hpp"
 #include "pgm/core/strong_index.hpp"
@@ -107,12 +105,6 @@ class cpt {
     return {values_.data() + u.value() * child_cardinality(), child_cardinality()};
   }
   [[nodiscard]] std::span<const T> values() const noexcept { return values_; }
-
-  /// A J × |Val(Pa)| view: column u is the distribution given u.
-  [[nodiscard]] Eigen::Map<const Eigen::Matrix<T, Eigen::Dynamic, Eigen::Dynamic>> matrix() const {
-    return {values_.data(), static_cast<Eigen::Index>(child_cardinality()),
-            static_cast<Eigen::Index>(configurations())};
-  }
 
   friend bool operator==(const cpt&, const cpt&) = default;
 

@@ -9,24 +9,22 @@
 /// Mean-Difference and by failure prevention, beside the oracle that prevents with θ* itself.
 ///
 /// Counts are additive, so a repetition counts each row once: the parts of D by histogram, and
-/// D_GroundTruth as all rows minus D. Every repetition is seeded by its coordinates, so the
-/// results are the same for any number of threads.
+/// D_GroundTruth as all rows minus D. Every repetition is seeded by its coordinates and
+/// writes its own slot of the results (pgm/detail/parallel_for.hpp spreads them over
+/// threads), so the results are the same for any number of threads.
 
-#include <atomic>
 #include <cmath>
 #include <cstdint>
-#include <exception>
 #include <functional>
 #include <map>
-#include <mutex>
 #include <numeric>
 #include <random>
 #include <set>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "pgm/decide/prevent.hpp"
+#include "pgm/detail/parallel_for.hpp"
 #include "pgm/detail/splitmix.hpp"
 #include "pgm/eval/family_data.hpp"
 #include "pgm/eval/metrics.hpp"
@@ -172,85 +170,64 @@ struct prepared_target {
   // One task per (target, repetition); results land in their own slot, so order is fixed.
   const std::size_t total = targets.size() * repetitions;
   std::vector<std::vector<experiment_point>> results(total);
-  std::atomic<std::size_t> next{0}, done{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex, progress_mutex;
-  auto work = [&] {
-    while (true) {
-      const std::size_t job = next.fetch_add(1);
-      if (job >= total) return;
-      try {
-        const auto& target = targets[job / repetitions];
-        const std::size_t rep = job % repetitions;
-        auto& out = results[job];
-        std::mt19937_64 random(detail::mix_seed(detail::mix_seed(base_seed, detail::seed_of(s.name + "/" + target.task)), rep));
-        const auto& family = target.family;
-        // D: a uniform random subset of the rows (partial Fisher–Yates), in random order.
-        std::vector<std::uint32_t> order(family.rows());
-        std::iota(order.begin(), order.end(), 0U);
-        for (std::size_t i = 0; i < target.train_rows; ++i) {
-          std::uniform_int_distribution<std::size_t> pick(i, order.size() - 1);
-          std::swap(order[i], order[pick(random)]);
-        }
-        auto all = family.empty_counts();
-        family.add_counts(order, all);
-        auto truth_counts = all;
-        {
-          auto train = family.empty_counts();
-          family.add_counts(std::span(order).first(target.train_rows), train);
-          for (std::size_t c = 0; c < truth_counts.counts().size(); ++c) truth_counts.counts()[c] -= train.counts()[c];
-        }
-        const auto truth = estimate_mle(truth_counts);
-        std::vector<double> produced(truth.configurations());
-        for (std::size_t u = 0; u < produced.size(); ++u) {
-          produced[u] = static_cast<double>(truth_counts.total(config_index(static_cast<config_index::rep>(u))));
-        }
-        const std::span<const bool> controllable(target.controllable.get(), family.parents.size());
-        auto emit = [&](const std::string& strategy, const std::string& weight, std::size_t rows, const std::string& metric, double value) {
-          out.push_back({s.name, target.task, strategy, weight, rows, rep, metric, value});
-        };
-        const double oracle =
-            failure_prevention_rate(truth, truth, target.success_state, controllable, produced, options.prevention);
-        auto counts = family.empty_counts();
-        std::size_t counted = 0;
-        for (std::size_t k = 0; k <= s.subsets; ++k) {
-          const std::size_t end = k * target.train_rows / s.subsets;
-          family.add_counts(std::span(order).subspan(counted, end - counted), counts);
-          counted = end;
-          emit("oracle", "0", end, "failure_prevention", oracle);
-          for (const auto& line : target.lines) {
-            double w = line.weight;
-            if (line.automatic_weight) {
-              w = choose_prior_weight(counts, *line.prior).weight;
-              emit(line.strategy, line.weight_label, end, "chosen_w", w);
-            }
-            const auto estimate_k = line.prior ? estimate(counts, weighted_prior{*line.prior, w}) : estimate_mle(counts);
-            const auto difference = success_parameter_difference(estimate_k, truth, target.success_state);
-            emit(line.strategy, line.weight_label, end, "max_difference", difference.max);
-            emit(line.strategy, line.weight_label, end, "mean_difference", difference.mean);
-            emit(line.strategy, line.weight_label, end, "failure_prevention",
-                 failure_prevention_rate(estimate_k, truth, target.success_state, controllable, produced, options.prevention));
-          }
-        }
-      } catch (...) {
-        const std::lock_guard lock(failure_mutex);
-        if (!failure) failure = std::current_exception();
-        next.store(total);
+  detail::parallel_options parallel{.threads = options.threads};
+  if (options.progress) parallel.progress = [&](std::size_t done) { options.progress(done, total); };
+  detail::parallel_for(total, parallel, [&](detail::item_range jobs) {
+    for (std::size_t job = jobs.begin; job < jobs.end; ++job) {
+      const auto& target = targets[job / repetitions];
+      const std::size_t rep = job % repetitions;
+      auto& out = results[job];
+      std::mt19937_64 random(detail::mix_seed(detail::mix_seed(base_seed, detail::seed_of(s.name + "/" + target.task)), rep));
+      const auto& family = target.family;
+      // D: a uniform random subset of the rows (partial Fisher–Yates), in random order.
+      std::vector<std::uint32_t> order(family.rows());
+      std::iota(order.begin(), order.end(), 0U);
+      for (std::size_t i = 0; i < target.train_rows; ++i) {
+        std::uniform_int_distribution<std::size_t> pick(i, order.size() - 1);
+        std::swap(order[i], order[pick(random)]);
       }
-      const auto finished = done.fetch_add(1) + 1;
-      if (options.progress) {
-        const std::lock_guard lock(progress_mutex);
-        options.progress(finished, total);
+      auto all = family.empty_counts();
+      family.add_counts(order, all);
+      auto truth_counts = all;
+      {
+        auto train = family.empty_counts();
+        family.add_counts(std::span(order).first(target.train_rows), train);
+        for (std::size_t c = 0; c < truth_counts.counts().size(); ++c) truth_counts.counts()[c] -= train.counts()[c];
+      }
+      const auto truth = estimate_mle(truth_counts);
+      std::vector<double> produced(truth.configurations());
+      for (std::size_t u = 0; u < produced.size(); ++u) {
+        produced[u] = static_cast<double>(truth_counts.total(config_index(static_cast<config_index::rep>(u))));
+      }
+      const std::span<const bool> controllable(target.controllable.get(), family.parents.size());
+      auto emit = [&](const std::string& strategy, const std::string& weight, std::size_t rows, const std::string& metric, double value) {
+        out.push_back({s.name, target.task, strategy, weight, rows, rep, metric, value});
+      };
+      const double oracle =
+          failure_prevention_rate(truth, truth, target.success_state, controllable, produced, options.prevention);
+      auto counts = family.empty_counts();
+      std::size_t counted = 0;
+      for (std::size_t k = 0; k <= s.subsets; ++k) {
+        const std::size_t end = k * target.train_rows / s.subsets;
+        family.add_counts(std::span(order).subspan(counted, end - counted), counts);
+        counted = end;
+        emit("oracle", "0", end, "failure_prevention", oracle);
+        for (const auto& line : target.lines) {
+          double w = line.weight;
+          if (line.automatic_weight) {
+            w = choose_prior_weight(counts, *line.prior).weight;
+            emit(line.strategy, line.weight_label, end, "chosen_w", w);
+          }
+          const auto estimate_k = line.prior ? estimate(counts, weighted_prior{*line.prior, w}) : estimate_mle(counts);
+          const auto difference = success_parameter_difference(estimate_k, truth, target.success_state);
+          emit(line.strategy, line.weight_label, end, "max_difference", difference.max);
+          emit(line.strategy, line.weight_label, end, "mean_difference", difference.mean);
+          emit(line.strategy, line.weight_label, end, "failure_prevention",
+               failure_prevention_rate(estimate_k, truth, target.success_state, controllable, produced, options.prevention));
+        }
       }
     }
-  };
-  const unsigned hardware = std::max(1U, std::thread::hardware_concurrency());
-  const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(options.threads ? options.threads : hardware, total));
-  std::vector<std::thread> pool;
-  for (unsigned t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
-  if (failure) std::rethrow_exception(failure);
+  });
   std::vector<experiment_point> points;
   for (auto& r : results) points.insert(points.end(), std::make_move_iterator(r.begin()), std::make_move_iterator(r.end()));
   return points;

@@ -4,7 +4,8 @@
 /// are binned into quantile intervals fitted on that data (the paper's discretization), a parent
 /// with no more distinct values than bins keeps its values as states (the reality grid), and a
 /// parent that never varies is left out with a note, since it cannot explain anything. Every row
-/// becomes one cell index u·J + x, so that counts of any subset of rows are a histogram.
+/// becomes one cell index u·J + x, computed by the counting kernel of
+/// pgm/learn/sufficient_statistics.hpp, so that counts of any subset of rows are a histogram.
 
 #include <algorithm>
 #include <cstdint>
@@ -25,8 +26,8 @@ namespace pgm {
 struct family_data {
   variable child;
   std::vector<variable> parents;
-  std::vector<std::uint32_t> cell;                 ///< per row: u·J + x
-  std::vector<std::vector<std::uint32_t>> parent_codes;  ///< per parent, per row
+  std::vector<std::uint32_t> cell;              ///< per row: u·J + x
+  std::vector<discrete_column> parent_columns;  ///< per parent: its binned codes
   std::vector<std::string> notes;
 
   [[nodiscard]] std::size_t rows() const noexcept { return cell.size(); }
@@ -47,10 +48,8 @@ struct family_data {
   /// The MLE network of the family over all rows: parents as roots with their marginals.
   [[nodiscard]] bayesian_network fit_all() const {
     std::vector<cpt<double>> tables;
-    for (std::size_t p = 0; p < parents.size(); ++p) {
-      count_table counts(parents[p], {});
-      for (auto code : parent_codes[p]) ++counts.counts()[code];
-      tables.push_back(estimate_mle(counts));
+    for (const auto& column : parent_columns) {
+      tables.push_back(estimate_mle(count_family(column, {}, {.threads = 1})));
     }
     auto counts = empty_counts();
     for (auto c : cell) ++counts.counts()[c];
@@ -65,7 +64,6 @@ struct family_data {
                                              const std::map<std::string, semantic_tags, std::less<>>& tags = {}) {
   family_data family{data.discrete(node).var(), {}, {}, {}, {}};
   const auto rows = data.rows();
-  std::vector<std::uint32_t> configuration(rows, 0);
   for (const auto& name : parent_names) {
     const auto tag = tags.find(name);
     const semantic_tags t = tag == tags.end() ? semantic_tags{} : tag->second;
@@ -98,14 +96,15 @@ struct family_data {
       v = column.var().with_tags(t);
       for (std::size_t r = 0; r < rows; ++r) codes[r] = column.code(r);
     }
-    for (std::size_t r = 0; r < rows; ++r) configuration[r] = configuration[r] * static_cast<std::uint32_t>(v.cardinality()) + codes[r];
-    family.parents.push_back(std::move(v));
-    family.parent_codes.push_back(std::move(codes));
+    family.parents.push_back(v);
+    family.parent_columns.emplace_back(std::move(v), codes);
   }
-  const auto& child = data.discrete(node);
-  const auto j = static_cast<std::uint32_t>(family.child.cardinality());
+  // The cells by the counting kernel, in the layout of the family's count table.
+  std::vector<const discrete_column*> parents;
+  for (const auto& column : family.parent_columns) parents.push_back(&column);
+  const auto columns = detail::columns_of(family.empty_counts(), data.discrete(node), parents);
   family.cell.resize(rows);
-  for (std::size_t r = 0; r < rows; ++r) family.cell[r] = configuration[r] * j + child.code(r);
+  detail::row_cells(columns.columns, columns.strides, 0, rows, family.cell.data());
   return family;
 }
 

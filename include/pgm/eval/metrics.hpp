@@ -3,8 +3,8 @@
 /// The paper's parameter metrics (Sec. IV-C) over the parameters it counts: the success
 /// state's θ_{success|u} for every parent configuration u of the success node (625 for
 /// 2-Stack's onTop2). Max-Difference is the largest |θ − θ*|, Mean-Difference their average, so
-/// Mean ≤ Max always (../DESIGN: the formula read literally with both states of a binary child
-/// would double the mean; the text counts 625 parameters, and we follow the text).
+/// Mean ≤ Max always (docs/decisions.md: the formula read literally with both states of a binary
+/// child would double the mean; the text counts 625 parameters, and we follow the text).
 
 #include <algorithm>
 #include <cmath>

@@ -5,12 +5,18 @@
 /// and correspondences, the strategies and weights, and the protocol's repetitions and subsets.
 /// Files live in `tasks/scenarios/<name>.json`; tasks/README.md documents the format.
 
+#include <cmath>
+#include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "pgm/detail/file.hpp"
-#include "pgm/io/json_model.hpp"
+#include "pgm/detail/json_reader.hpp"
 
 namespace pgm {
 
@@ -35,6 +41,9 @@ struct scenario {
   std::size_t subsets = 20;
   std::size_t repetitions = 20;
   double epsilon = 0.8;
+  /// Where `--scenario all` runs it (pgm::scenario_catalog): ascending; scenarios without one
+  /// come after those with one. Ties and missing orders go by file name.
+  std::optional<std::size_t> order;
   std::filesystem::path source;
 };
 
@@ -78,6 +87,7 @@ class scenario_reader : public json_reader {
     if (const auto* v = optional_member(doc, "subsets")) s.subsets = count(*v, "/subsets");
     if (const auto* v = optional_member(doc, "repetitions")) s.repetitions = count(*v, "/repetitions");
     if (const auto* v = optional_member(doc, "epsilon")) s.epsilon = number(*v, "/epsilon");
+    if (const auto* v = optional_member(doc, "order")) s.order = count(*v, "/order");
     if (s.bins < 2) fail("/bins", "needs at least 2 bins");
     if (s.subsets == 0 || s.repetitions == 0) fail("/subsets", "subsets and repetitions must be positive");
     if (!(s.epsilon > 0 && s.epsilon < 1)) fail("/epsilon", "must lie strictly between 0 and 1");

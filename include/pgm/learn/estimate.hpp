@@ -64,6 +64,25 @@ inline cpt<double> table_of(const count_table& counts, std::vector<double> value
   return cpt<double>(counts.child(), counts.parents(), std::move(values));
 }
 
+/// Eq. 6 with explicit pseudo-counts α[x, u]; `who` prefixes error messages (names a user's prior).
+inline cpt<double> estimate_from_pseudo_counts(const count_table& counts, const std::vector<double>& alpha,
+                                               const std::string& who, const estimate_options& options) {
+  if (alpha.size() != counts.counts().size()) {
+    throw model_error(who + "the pseudo-counts of '" + counts.child().name() + "' need " +
+                      std::to_string(counts.counts().size()) + " values, got " + std::to_string(alpha.size()));
+  }
+  std::vector<double> column_sums(counts.configurations(), 0.0);
+  const auto cells = counts.child_cardinality();
+  const auto what = who + "a pseudo-count";
+  for (std::size_t i = 0; i < alpha.size(); ++i) {
+    check_pseudo_count(alpha[i], what.c_str());
+    column_sums[i / cells] += alpha[i];
+  }
+  return table_of(counts, dirichlet_posterior_mean(
+                              counts, [&](std::size_t cell) { return alpha[cell]; },
+                              [&](std::size_t u) { return column_sums[u]; }, options));
+}
+
 inline void check_shape(const count_table& counts, const cpt<double>& prior) {
   if (prior.child_cardinality() != counts.child_cardinality() ||
       prior.parent_radix() != counts.parent_radix()) {
@@ -109,20 +128,10 @@ inline void check_shape(const count_table& counts, const cpt<double>& prior) {
                                               counts, [alpha](std::size_t) { return alpha; },
                                               [alpha, j](std::size_t) { return alpha * j; }, options));
         } else if constexpr (std::is_same_v<prior_type, pseudo_counts_prior>) {
-          if (p.alpha.size() != counts.counts().size()) {
-            throw model_error("the pseudo-counts of '" + counts.child().name() + "' need " +
-                              std::to_string(counts.counts().size()) + " values, got " +
-                              std::to_string(p.alpha.size()));
-          }
-          std::vector<double> column_sums(counts.configurations(), 0.0);
-          const auto cells = static_cast<std::size_t>(j);
-          for (std::size_t i = 0; i < p.alpha.size(); ++i) {
-            detail::check_pseudo_count(p.alpha[i], "a pseudo-count");
-            column_sums[i / cells] += p.alpha[i];
-          }
-          return detail::table_of(counts, detail::dirichlet_posterior_mean(
-                                              counts, [&](std::size_t cell) { return p.alpha[cell]; },
-                                              [&](std::size_t u) { return column_sums[u]; }, options));
+          return detail::estimate_from_pseudo_counts(counts, p.alpha, "", options);
+        } else if constexpr (std::is_same_v<prior_type, any_parameter_prior>) {
+          return detail::estimate_from_pseudo_counts(counts, p.pseudo_counts(counts.child(), counts.parents()),
+                                                     "the prior '" + std::string(p.name()) + "': ", options);
         } else {
           static_assert(std::is_same_v<prior_type, weighted_prior>);
           detail::check_shape(counts, p.prior);

@@ -20,7 +20,6 @@
 #include <span>
 #include <string>
 #include <string_view>
-#include <thread>
 #include <vector>
 
 #include "pgm/core/error.hpp"
@@ -131,8 +130,9 @@ namespace detail {
 
 /// Counts the table (x | given..., y) into `counts` (resized and zeroed) over all rows.
 /// The layout is the one test_independence reads: x fastest, then y, then the strata of
-/// `given` (its last column fastest). With `threads` > 1 the rows are split into contiguous
-/// ranges with a private buffer each, summed in range order, so the counts are the same.
+/// `given` (its last column fastest). With `threads` > 1 (0: every hardware thread) the rows
+/// are counted on up to that many threads, each into a private table, summed: the counts are
+/// the same.
 /// Throws model_error if the table has 2^32 cells or more.
 inline void count_ci_table(const discrete_column& x, const discrete_column& y,
                            std::span<const discrete_column* const> given,
@@ -159,25 +159,8 @@ inline void count_ci_table(const discrete_column& x, const discrete_column& y,
   add(y);
   for (std::size_t k = given.size(); k-- > 0;) add(*given[k]);
   counts.assign(stride, 0);
-  const std::size_t rows = x.size();
   // Below ~64k rows per thread, starting a thread costs more than it saves.
-  threads = static_cast<unsigned>(std::min<std::size_t>(threads, std::max<std::size_t>(1, rows >> 16)));
-  if (threads <= 1) {
-    count_rows(columns, strides, 0, rows, counts.data());
-    return;
-  }
-  std::vector<std::vector<std::uint64_t>> partial(threads, std::vector<std::uint64_t>(stride));
-  {
-    std::vector<std::jthread> workers;
-    for (unsigned t = 0; t < threads; ++t) {
-      workers.emplace_back([&, t] {
-        count_rows(columns, strides, rows * t / threads, rows * (t + 1) / threads, partial[t].data());
-      });
-    }
-  }
-  for (const auto& part : partial) {
-    for (std::size_t i = 0; i < stride; ++i) counts[i] += part[i];
-  }
+  count_rows_parallel(columns, strides, 0, x.size(), counts, threads, std::size_t{1} << 16);
 }
 
 }  // namespace detail

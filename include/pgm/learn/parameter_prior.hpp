@@ -3,14 +3,23 @@
 /// Parameter priors for Bayesian estimation (eq. 6): each is a Dirichlet prior given by its
 /// pseudo-counts α[x, u]. The paper's weighted prior (eq. 7/8) sets α[x, u] = w·f(θ'_{x|u'})
 /// from a prior table f that a transfer strategy produced in the target node's shape.
+///
+/// A prior of the user's own is any type that models `ParameterPrior` — a `name()` and the
+/// pseudo-counts of a family from its variables — and goes wherever a `parameter_prior` does
+/// (`fit_options::prior`, `fit_options::node_priors`, `estimate`), with nothing to derive from.
 
 #include <cmath>
+#include <concepts>
+#include <functional>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <variant>
 #include <vector>
 
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/variable.hpp"
 
 namespace pgm {
 
@@ -52,8 +61,52 @@ struct weighted_prior {
   friend bool operator==(const weighted_prior&, const weighted_prior&) = default;
 };
 
-using parameter_prior =
-    std::variant<no_prior, dirichlet_prior, k2_prior, bdeu_prior, pseudo_counts_prior, weighted_prior>;
+namespace detail {
+
+/// A prior names itself, for error messages.
+template <class P>
+concept NamedPrior = requires(const P& p) {
+  { p.name() } -> std::convertible_to<std::string_view>;
+};
+
+/// A prior gives the pseudo-counts α[x, u] of a family from its variables alone (a prior does
+/// not look at the data), laid out like the family's cpt: configuration major, parents
+/// numbered by `mixed_radix` with the last parent fastest.
+template <class P>
+concept GivesPseudoCounts = requires(const P& p, const variable& child, const std::vector<variable>& parents) {
+  { p.pseudo_counts(child, parents) } -> std::same_as<std::vector<double>>;
+};
+
+}  // namespace detail
+
+template <class P>
+concept ParameterPrior = std::copy_constructible<P> && detail::NamedPrior<P> && detail::GivesPseudoCounts<P>;
+
+/// A user's prior, type-erased; it models ParameterPrior itself.
+class any_parameter_prior {
+ public:
+  template <ParameterPrior P>
+    requires(!std::same_as<P, any_parameter_prior>)
+  any_parameter_prior(P prior)  // NOLINT(google-explicit-constructor): `options.prior = mine{}`
+      : name_(prior.name()),
+        pseudo_counts_([p = std::move(prior)](const variable& child, const std::vector<variable>& parents) {
+          return p.pseudo_counts(child, parents);
+        }) {}
+
+  [[nodiscard]] std::string_view name() const noexcept { return name_; }
+  [[nodiscard]] std::vector<double> pseudo_counts(const variable& child, const std::vector<variable>& parents) const {
+    return pseudo_counts_(child, parents);
+  }
+
+ private:
+  std::string name_;
+  std::function<std::vector<double>(const variable&, const std::vector<variable>&)> pseudo_counts_;
+};
+
+static_assert(ParameterPrior<any_parameter_prior>);
+
+using parameter_prior = std::variant<no_prior, dirichlet_prior, k2_prior, bdeu_prior, pseudo_counts_prior,
+                                     weighted_prior, any_parameter_prior>;
 
 namespace detail {
 

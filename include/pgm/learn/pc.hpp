@@ -10,21 +10,21 @@
 /// removals take effect at the end of the level. Each edge x - y (x before y) is one task:
 /// subsets of adj(x) \ {y} in lexicographic order, then those of adj(y) \ {x} not already
 /// tried; the first independence removes the edge. A task depends only on the frozen sets and
-/// the data, so tasks run in parallel and the result is the same for any number of threads.
+/// the data, so a level's tasks run in parallel (pgm/detail/parallel_for.hpp), each outcome in
+/// its task's slot, and the result is the same for any number of threads. A level with fewer
+/// tasks than threads lends the idle threads to the counting within each test.
 
 #include <algorithm>
-#include <atomic>
 #include <cstddef>
 #include <cstdint>
-#include <exception>
 #include <span>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
 #include "pgm/core/error.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/detail/parallel_for.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/learn/background_knowledge.hpp"
 #include "pgm/learn/cpdag.hpp"
@@ -87,7 +87,6 @@ struct edge_outcome {
   std::vector<std::size_t> given;
   ci_result test;
   std::size_t tests = 0;
-  std::exception_ptr failure;
 };
 
 /// Advances `pick` (strictly increasing indices below n) to the next k-subset in
@@ -116,16 +115,12 @@ class skeleton_worker {
   edge_outcome run(const edge_task& task, std::size_t level,
                    const std::vector<std::vector<std::size_t>>& around) {
     edge_outcome outcome;
-    try {
-      const auto from_x = others(around[task.x], task.y);
-      const auto from_y = others(around[task.y], task.x);
-      if (search(task, level, from_x, nullptr, outcome)) return outcome;
-      std::fill(tried_.begin(), tried_.end(), 0);
-      for (auto v : from_x) tried_[v] = 1;
-      search(task, level, from_y, &tried_, outcome);
-    } catch (...) {
-      outcome.failure = std::current_exception();
-    }
+    const auto from_x = others(around[task.x], task.y);
+    const auto from_y = others(around[task.y], task.x);
+    if (search(task, level, from_x, nullptr, outcome)) return outcome;
+    std::fill(tried_.begin(), tried_.end(), 0);
+    for (auto v : from_x) tried_[v] = 1;
+    search(task, level, from_y, &tried_, outcome);
     return outcome;
   }
 
@@ -174,10 +169,6 @@ class skeleton_worker {
   std::vector<const discrete_column*> given_;
   std::vector<std::uint64_t> counts_;
 };
-
-inline unsigned resolve_threads(unsigned threads) {
-  return threads ? threads : std::max(1u, std::thread::hardware_concurrency());
-}
 
 inline void check_pc_options(const pc_options& options) {
   if (!(options.alpha > 0.0 && options.alpha < 1.0)) {
@@ -234,26 +225,17 @@ inline void check_pc_options(const pc_options& options) {
     if (tasks.empty()) break;
 
     std::vector<detail::edge_outcome> outcomes(tasks.size());
-    std::atomic<std::size_t> next{0};
     // Parallel over tasks; when there are fewer tasks than threads, over rows within each test.
     const auto used = static_cast<unsigned>(std::min<std::size_t>(threads, tasks.size()));
     const unsigned count_threads = std::max(1u, threads / std::max(1u, used));
-    auto work = [&] {
-      detail::skeleton_worker worker(columns, options, count_threads);
-      for (std::size_t t = next++; t < tasks.size(); t = next++) {
-        outcomes[t] = worker.run(tasks[t], level, around);
-      }
-    };
-    if (used <= 1) {
-      work();
-    } else {
-      std::vector<std::jthread> workers;
-      for (unsigned t = 0; t < used; ++t) workers.emplace_back(work);
-    }
+    static_cast<void>(detail::parallel_for(
+        tasks.size(), {.threads = used}, [&] { return detail::skeleton_worker(columns, options, count_threads); },
+        [&](detail::skeleton_worker& worker, detail::item_range chunk) {
+          for (std::size_t t = chunk.begin; t < chunk.end; ++t) outcomes[t] = worker.run(tasks[t], level, around);
+        }));
 
     for (std::size_t t = 0; t < tasks.size(); ++t) {
       auto& outcome = outcomes[t];
-      if (outcome.failure) std::rethrow_exception(outcome.failure);
       result.tests += outcome.tests;
       if (!outcome.removed) continue;
       const auto x = detail::node(tasks[t].x);

@@ -3,7 +3,9 @@
 /// Sufficient statistics: the counts M[x, u] of a node X and its parents U in a data set, in
 /// one pass over the columns. This is the hot loop everything that learns from data calls
 /// (MLE, Bayesian estimation, independence tests, experiments). Count tables are values and
-/// add up (`+=`), so counts of data shards or subsets can be merged exactly.
+/// add up (`+=`), so counts of data shards or subsets can be merged exactly; that is also how
+/// counting runs on several threads (pgm/detail/parallel_for.hpp): each counts chunks of rows
+/// into a private table, and the tables are summed.
 
 #include <algorithm>
 #include <cstddef>
@@ -12,7 +14,6 @@
 #include <span>
 #include <string>
 #include <string_view>
-#include <thread>
 #include <utility>
 #include <variant>
 #include <vector>
@@ -22,6 +23,7 @@
 #include "pgm/core/strong_index.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/detail/parallel_for.hpp"
 
 namespace pgm {
 
@@ -105,6 +107,8 @@ struct row_range {
 namespace detail {
 
 inline constexpr std::size_t count_block_rows = 2048;
+/// The largest chunk of rows a counting thread takes at a time; smaller chunks balance better.
+inline constexpr std::size_t count_chunk_rows = std::size_t{1} << 16;
 
 /// index[i] = the flat cell of row `first + i`, built one column at a time so that each
 /// pass is a simple loop over contiguous codes that the compiler vectorizes.
@@ -117,21 +121,86 @@ void add_cells(const Code* codes, std::uint32_t stride, std::uint32_t* index, st
   for (std::size_t i = 0; i < n; ++i) index[i] += static_cast<std::uint32_t>(codes[i]) * stride;
 }
 
-/// Adds the counts of rows [begin, end) into `counts`. `columns[0]` is the child (stride 1),
-/// the others are parents with flat strides `strides[k]`.
-inline void count_rows(std::span<const code_vector* const> columns,
-                       std::span<const std::uint32_t> strides, std::size_t begin, std::size_t end,
-                       std::uint64_t* counts) {
+/// index[i] = the flat cell of row `first + i` for i < n (n at most count_block_rows, so that
+/// `index` stays in the first-level cache over all the passes). `columns[0]` is the child
+/// (stride 1), the others are parents with flat strides `strides[k]`.
+inline void block_cells(std::span<const code_vector* const> columns, std::span<const std::uint32_t> strides,
+                        std::size_t first, std::size_t n, std::uint32_t* index) {
+  std::visit([&](const auto& codes) { set_cells(codes.data() + first, index, n); }, *columns[0]);
+  for (std::size_t k = 1; k < columns.size(); ++k) {
+    std::visit([&](const auto& codes) { add_cells(codes.data() + first, strides[k], index, n); }, *columns[k]);
+  }
+}
+
+/// cells[r - begin] = the flat cell of row r, for the rows [begin, end).
+inline void row_cells(std::span<const code_vector* const> columns, std::span<const std::uint32_t> strides,
+                      std::size_t begin, std::size_t end, std::uint32_t* cells) {
+  for (std::size_t first = begin; first < end; first += count_block_rows) {
+    block_cells(columns, strides, first, std::min(count_block_rows, end - first), cells + (first - begin));
+  }
+}
+
+/// Adds the counts of rows [begin, end) into `counts`.
+inline void count_rows(std::span<const code_vector* const> columns, std::span<const std::uint32_t> strides,
+                       std::size_t begin, std::size_t end, std::uint64_t* counts) {
   std::uint32_t index[count_block_rows];
   for (std::size_t first = begin; first < end; first += count_block_rows) {
     const std::size_t n = std::min(count_block_rows, end - first);
-    std::visit([&](const auto& codes) { set_cells(codes.data() + first, index, n); }, *columns[0]);
-    for (std::size_t k = 1; k < columns.size(); ++k) {
-      std::visit([&](const auto& codes) { add_cells(codes.data() + first, strides[k], index, n); },
-                 *columns[k]);
-    }
+    block_cells(columns, strides, first, n, index);
     for (std::size_t i = 0; i < n; ++i) ++counts[index[i]];
   }
+}
+
+/// Adds the counts of rows [begin, end) into `counts` on up to `threads` threads (0: every one),
+/// each with at least `min_rows_per_thread` rows: every thread counts its chunks into a private
+/// table and the tables are summed, which gives the same counts for any split.
+inline void count_rows_parallel(std::span<const code_vector* const> columns, std::span<const std::uint32_t> strides,
+                                std::size_t begin, std::size_t end, std::span<std::uint64_t> counts, unsigned threads,
+                                std::size_t min_rows_per_thread) {
+  const std::size_t rows = end > begin ? end - begin : 0;
+  parallel_options options{.threads = threads, .min_items_per_thread = min_rows_per_thread};
+  // About four chunks per thread, so that a thread slowed by others on the machine is helped out.
+  const std::size_t per_thread = rows / std::max<std::size_t>(1, worker_count(rows, options));
+  options.chunk = std::clamp<std::size_t>(per_thread / 4, count_block_rows, count_chunk_rows);
+  if (worker_count(rows, options) <= 1) {
+    count_rows(columns, strides, begin, end, counts.data());
+    return;
+  }
+  const auto partial = parallel_for(
+      rows, options, [&] { return std::vector<std::uint64_t>(counts.size()); },
+      [&](std::vector<std::uint64_t>& mine, item_range chunk) {
+        count_rows(columns, strides, begin + chunk.begin, begin + chunk.end, mine.data());
+      });
+  for (const auto& part : partial) {
+    for (std::size_t i = 0; i < counts.size(); ++i) counts[i] += part[i];
+  }
+}
+
+/// The kernel's view of the family in `table`: the child's codes (stride 1), then each parent's
+/// codes with its flat stride in the table. Throws model_error if the table has 2^32 cells or
+/// more, data_error if a parent has another number of rows than the child.
+struct family_columns {
+  std::vector<const code_vector*> columns;
+  std::vector<std::uint32_t> strides;
+};
+
+[[nodiscard]] inline family_columns columns_of(const count_table& table, const discrete_column& child,
+                                               std::span<const discrete_column* const> parents) {
+  if (table.counts().size() > std::numeric_limits<std::uint32_t>::max()) {
+    throw model_error("the table of '" + child.name() + "' has " + std::to_string(table.counts().size()) +
+                      " cells, more than pgm can count (2^32)");
+  }
+  family_columns family{{&child.codes()}, {1}};
+  const auto j = child.var().cardinality();
+  for (std::size_t k = 0; k < parents.size(); ++k) {
+    if (parents[k]->size() != child.size()) {
+      throw data_error("column '" + parents[k]->name() + "' has " + std::to_string(parents[k]->size()) + " rows, '" +
+                       child.name() + "' " + std::to_string(child.size()));
+    }
+    family.columns.push_back(&parents[k]->codes());
+    family.strides.push_back(static_cast<std::uint32_t>(j * table.parent_radix().stride(k)));
+  }
+  return family;
 }
 
 }  // namespace detail
@@ -144,51 +213,11 @@ inline void count_rows(std::span<const code_vector* const> columns,
   std::vector<variable> parent_variables;
   for (const auto* p : parents) parent_variables.push_back(p->var());
   count_table table(child.var(), std::move(parent_variables));
-  if (table.counts().size() > std::numeric_limits<std::uint32_t>::max()) {
-    throw model_error("the table of '" + child.name() + "' has " +
-                      std::to_string(table.counts().size()) +
-                      " cells, more than pgm can count (2^32)");
-  }
+  const auto family = detail::columns_of(table, child, parents);
   const std::size_t end = std::min(rows.end, child.size());
   const std::size_t begin = std::min(rows.begin, end);
-
-  std::vector<const code_vector*> columns{&child.codes()};
-  std::vector<std::uint32_t> strides{1};
-  const auto j = child.var().cardinality();
-  for (std::size_t k = 0; k < parents.size(); ++k) {
-    if (parents[k]->size() != child.size()) {
-      throw data_error("column '" + parents[k]->name() + "' has " +
-                       std::to_string(parents[k]->size()) + " rows, '" + child.name() + "' " +
-                       std::to_string(child.size()));
-    }
-    columns.push_back(&parents[k]->codes());
-    strides.push_back(static_cast<std::uint32_t>(j * table.parent_radix().stride(k)));
-  }
-
-  const std::size_t n = end - begin;
-  unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  threads = static_cast<unsigned>(std::min<std::size_t>(
-      threads, std::max<std::size_t>(1, n / std::max<std::size_t>(1, options.min_rows_per_thread))));
-  if (threads <= 1) {
-    detail::count_rows(columns, strides, begin, end, table.counts().data());
-    return table;
-  }
-  // A private table per thread over a contiguous row range, summed in thread order.
-  std::vector<std::vector<std::uint64_t>> partial(threads,
-                                                  std::vector<std::uint64_t>(table.counts().size()));
-  {
-    std::vector<std::jthread> workers;
-    for (unsigned t = 0; t < threads; ++t) {
-      const std::size_t lo = begin + n * t / threads;
-      const std::size_t hi = begin + n * (t + 1) / threads;
-      workers.emplace_back(
-          [&, lo, hi, t] { detail::count_rows(columns, strides, lo, hi, partial[t].data()); });
-    }
-  }
-  auto counts = table.counts();
-  for (const auto& part : partial) {
-    for (std::size_t i = 0; i < counts.size(); ++i) counts[i] += part[i];
-  }
+  detail::count_rows_parallel(family.columns, family.strides, begin, end, table.counts(), options.threads,
+                              options.min_rows_per_thread);
   return table;
 }
 

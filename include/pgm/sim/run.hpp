@@ -2,19 +2,18 @@
 /// \file
 /// `run_experiments`: the driver every back-end shares. It samples each experiment's inputs
 /// from the task's distributions, lets a Simulator compute the outcomes, and assembles the
-/// columns. Experiment i always uses the streams keyed by (seed, i), and rows are handed out
-/// in chunks from a shared counter, so the result is byte-identical for any thread count.
+/// columns. Experiment i always uses the streams keyed by (seed, i) and writes row i, and rows
+/// are spread over threads in chunks (pgm/detail/parallel_for.hpp), so the result is
+/// byte-identical for any thread count.
 
 #include <algorithm>
-#include <atomic>
 #include <cstdint>
-#include <exception>
-#include <mutex>
-#include <thread>
+#include <memory>
 #include <vector>
 
 #include "pgm/core/error.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/detail/parallel_for.hpp"
 #include "pgm/sim/simulator_concept.hpp"
 
 namespace pgm::sim {
@@ -35,49 +34,28 @@ template <Simulator S>
                                       std::size_t chunk = 4096) {
   const std::size_t rows = options.rows;
   const std::size_t width = task.variables.size();
-  chunk = std::max<std::size_t>(1, chunk);
   std::vector<std::vector<double>> columns(width, std::vector<double>(rows));
 
-  const std::size_t chunks = (rows + chunk - 1) / chunk;
-  unsigned threads = options.threads ? options.threads : std::max(1u, std::thread::hardware_concurrency());
-  threads = static_cast<unsigned>(std::max<std::size_t>(1, std::min<std::size_t>(threads, chunks)));
-
-  std::atomic<std::size_t> next_chunk{0};
-  std::atomic<std::size_t> done{0};
-  std::exception_ptr failure;
-  std::mutex failure_mutex;
-  // Each worker owns one simulator (which may hold a physics world) and writes only its rows.
-  auto work = [&](bool report) {
-    try {
-      S simulator(task);
-      std::vector<double> values(width);
-      for (;;) {
-        const auto c = next_chunk.fetch_add(1);
-        if (c >= chunks) break;
-        const std::size_t begin = c * chunk;
-        const std::size_t end = std::min(rows, begin + chunk);
-        for (std::size_t row = begin; row < end; ++row) {
-          sample_inputs(task, options.seed, row, values);
-          random_stream noise(options.seed, row, stream_purpose::noise);
-          simulator.run(std::span<double>(values), noise);
-          for (std::size_t k = 0; k < width; ++k) columns[k][row] = values[k];
-        }
-        const auto finished = done.fetch_add(end - begin) + (end - begin);
-        if (report && options.progress) options.progress(finished);
-      }
-    } catch (...) {
-      const std::lock_guard lock(failure_mutex);
-      if (!failure) failure = std::current_exception();
-      next_chunk.store(chunks);  // stop the others early
-    }
+  // Each thread owns one simulator (which may hold a physics world) and writes only its rows.
+  struct worker {
+    std::unique_ptr<S> simulator;  // a simulator need not be movable
+    std::vector<double> values;
   };
-  {
-    std::vector<std::jthread> helpers;
-    for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work, false);
-    work(true);  // the calling thread works too, and is the only one that reports progress
-  }
-  if (failure) std::rethrow_exception(failure);
-  if (options.progress) options.progress(rows);
+  pgm::detail::parallel_options parallel{.threads = options.threads, .chunk = chunk};
+  parallel.progress = options.progress;
+  static_cast<void>(pgm::detail::parallel_for(
+      rows, parallel,
+      [&] {
+        return worker{std::make_unique<S>(task), std::vector<double>(width)};
+      },
+      [&](worker& w, pgm::detail::item_range items) {
+        for (std::size_t row = items.begin; row < items.end; ++row) {
+          sample_inputs(task, options.seed, row, w.values);
+          random_stream noise(options.seed, row, stream_purpose::noise);
+          w.simulator->run(std::span<double>(w.values), noise);
+          for (std::size_t k = 0; k < width; ++k) columns[k][row] = w.values[k];
+        }
+      }));
 
   dataset result(task.name + " (" + std::string(S::name) + ", seed " + std::to_string(options.seed) + ")");
   for (std::size_t k = 0; k < width; ++k) {

@@ -53,8 +53,9 @@ struct simulate_options {
   std::uint64_t seed = 0;
   /// Worker threads; 0 uses every hardware thread.
   unsigned threads = 0;
-  /// Called now and then on the calling thread with the number of experiments finished so
-  /// far, and once at the end with `rows`. May be empty.
+  /// Called now and then with the number of experiments finished so far: one call at a time
+  /// (from whichever worker thread finished a chunk), increasing, the last with `rows`. May be
+  /// empty.
   std::function<void(std::size_t done)> progress;
 };
 

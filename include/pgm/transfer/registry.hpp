@@ -10,14 +10,13 @@
 /// objects the linker would drop).
 
 #include <functional>
-#include <map>
-#include <mutex>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/detail/named_registry.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/transfer/prior_transfer.hpp"
 #include "pgm/transfer/replacement.hpp"
@@ -58,39 +57,20 @@ class transfer_registry {
 
   /// Adds a strategy under its name; a second strategy of the same name is an error.
   void add(any_prior_transfer strategy) {
-    const std::lock_guard lock(mutex_);
     std::string name(strategy.name());
-    if (name.empty()) throw model_error("a transfer strategy needs a non-empty name");
-    if (!strategies_.emplace(name, std::move(strategy)).second) {
-      throw model_error("a transfer strategy named '" + name + "' is registered already");
-    }
+    strategies_.add(std::move(name), std::move(strategy));
   }
 
   /// The strategy of that name, or a model_error listing the known ones.
   [[nodiscard]] any_prior_transfer at(std::string_view name) const {
-    const std::lock_guard lock(mutex_);
-    const auto it = strategies_.find(name);
-    if (it == strategies_.end()) {
-      std::vector<std::string> known;
-      for (const auto& [n, s] : strategies_) known.push_back(n);
-      throw model_error("unknown transfer strategy '" + std::string(name) + "'; known: " + detail::join(known));
-    }
-    return it->second;
+    if (auto strategy = strategies_.find(name)) return *std::move(strategy);
+    throw model_error("unknown transfer strategy '" + std::string(name) + "'; known: " + detail::join(names()));
   }
 
-  [[nodiscard]] std::vector<std::string> names() const {
-    const std::lock_guard lock(mutex_);
-    std::vector<std::string> known;
-    for (const auto& [n, s] : strategies_) known.push_back(n);
-    return known;
-  }
-
-  transfer_registry() = default;
-  transfer_registry(transfer_registry&& other) noexcept : strategies_(std::move(other.strategies_)) {}
+  [[nodiscard]] std::vector<std::string> names() const { return strategies_.names(); }
 
  private:
-  mutable std::mutex mutex_;
-  std::map<std::string, any_prior_transfer, std::less<>> strategies_;
+  detail::named_registry<any_prior_transfer> strategies_{"transfer strategy"};
 };
 
 /// Registers a strategy when the program starts: `static const register_transfer<S> r;`.

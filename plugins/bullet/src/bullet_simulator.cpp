@@ -26,6 +26,7 @@
 #include "pgm/core/assert.hpp"
 #include "pgm/sim/bullet.hpp"
 #include "pgm/sim/container.hpp"
+#include "pgm/sim/registry.hpp"
 #include "pgm/sim/run.hpp"
 
 namespace pgm::sim {
@@ -432,5 +433,10 @@ static_assert(Simulator<bullet_simulator>);
 dataset simulate_bullet(const task_definition& task, const simulate_options& options) {
   return run_experiments<bullet_simulator>(task, options, 8);
 }
+
+namespace {
+// Offers "bullet" to simulate() and `pgm simulate --backend bullet` when this object is linked.
+const register_backend registered("bullet", &simulate_bullet);
+}  // namespace
 
 }  // namespace pgm::sim

@@ -1,9 +1,9 @@
 #pragma once
 /// \file
-/// The Bullet back-end (library pgm_bullet): rigid-body simulation of the task, experiments
+/// The Bullet back-end (plugin pgm_bullet): rigid-body simulation of the task, experiments
 /// spread over threads, one physics world per thread that is emptied and reset before each
-/// experiment. Linking pgm_bullet defines PGM_WITH_BULLET, which makes pgm::sim::simulate()
-/// offer "bullet".
+/// experiment. Linking the pgm_bullet object library registers it as "bullet" for
+/// pgm::sim::simulate(); this header is only for calling it directly.
 
 #include <array>
 #include <memory>

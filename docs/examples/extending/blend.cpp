@@ -1,7 +1,7 @@
-// An example of a user's own transfer strategy, written outside the library's headers:
-// "blend" averages the Direct- and the Cross-Replacement prior of every configuration, for a
-// prior that neither trusts only the first cube nor only the second. docs/custom-strategy.md
-// walks through it.
+// A user's own transfer strategy, written outside the library's headers: "blend" averages the
+// Direct- and the Cross-Replacement prior of every configuration, for a prior that neither
+// trusts only the first cube nor only the second. docs/extending.md walks through it; the pgm
+// program is built with it, so `pgm fit --strategy blend` finds it.
 
 #include <pgm/transfer/registry.hpp>
 #include <pgm/transfer/replacement.hpp>
@@ -29,7 +29,8 @@ struct blend_replacement {
       counts.push_back(static_cast<std::uint32_t>(direct.sources(c).size() + cross.sources(c).size()));
     }
     return {pgm::cpt<double>(shape.child(), shape.parents(), std::move(values)), direct.prior_parents(),
-            std::move(terms), std::move(counts), std::vector<pgm::replacement>(shape.configurations(), pgm::replacement::other)};
+            std::move(terms), std::move(counts),
+            std::vector<pgm::replacement>(shape.configurations(), pgm::replacement::other)};
   }
 };
 

@@ -1,0 +1,58 @@
+#pragma once
+/// \file
+/// The main job in one call: run each scenario's protocol (pgm::run_experiment) on a task
+/// source and write the results into a folder (pgm::report_writer): points.csv, summary.csv,
+/// one plot per target task, and the headline numbers. `pgm experiment` is this call with
+/// pgm::select_scenarios and pgm::cached(pgm::simulated_source(…)).
+
+#include <cstddef>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "pgm/core/error.hpp"
+#include "pgm/eval/experiment.hpp"
+#include "pgm/eval/report_writer.hpp"
+#include "pgm/eval/scenario.hpp"
+
+namespace pgm {
+
+struct run_scenarios_options {
+  /// The protocol's options (seed, repetitions, threads, extra lines, prevention); its
+  /// `progress` and `note` are replaced by the ones below.
+  experiment_options experiment;
+  /// Render the plots with gnuplot when it is installed.
+  bool render_plots = true;
+  /// Repetitions finished of the scenario running.
+  std::function<void(const scenario&, std::size_t done, std::size_t total)> progress;
+  /// Notes of the protocol ("<scenario>: …") and of the writer.
+  std::function<void(const std::string&)> note;
+  /// Each target's headline line, once its scenario is done.
+  std::function<void(const std::string&)> headline;
+};
+
+/// Runs the scenarios in order into `folder`. The folder is checked before any work and made
+/// once the first scenario is done; an error in a scenario is prefixed with its file.
+inline report_files run_scenarios(const std::vector<scenario>& scenarios, const task_source& source,
+                                  const std::filesystem::path& folder, const run_scenarios_options& options = {}) {
+  report_writer writer(folder, {options.render_plots, options.note, options.headline});
+  auto experiment = options.experiment;
+  experiment.note = options.note;
+  for (const auto& s : scenarios) {
+    experiment.progress = nullptr;
+    if (options.progress) {
+      experiment.progress = [&](std::size_t done, std::size_t total) { options.progress(s, done, total); };
+    }
+    std::vector<experiment_point> points;
+    try {
+      points = run_experiment(s, source, experiment);
+    } catch (const error& e) {
+      throw error(s.source.string() + ": " + e.what());
+    }
+    writer.add(s, points);
+  }
+  return writer.finish();
+}
+
+}  // namespace pgm

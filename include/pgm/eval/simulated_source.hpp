@@ -1,0 +1,78 @@
+#pragma once
+/// \file
+/// The link between simulation and evaluation: a task source whose data come from
+/// pgm::sim::simulate on the task files of some folders, and whose facts (known parents,
+/// semantic tags, controllable variables) come from those files. It simulates on every call;
+/// wrap it in pgm::cached (eval/cached_source.hpp) to share data between scenarios.
+
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pgm/core/error.hpp"
+#include "pgm/eval/experiment.hpp"
+#include "pgm/sim/simulator.hpp"
+#include "pgm/sim/task.hpp"
+#include "pgm/sim/task_lookup.hpp"
+
+namespace pgm {
+
+/// What the protocol needs of `node` in `task`: its parents in the task's known structure, the
+/// tags of every variable and which variables the robot controls.
+[[nodiscard]] inline task_facts facts_of(const sim::task_definition& task, const std::string& node) {
+  if (!task.contains(node)) throw data_error("task '" + task.name + "' has no variable '" + node + "'");
+  task_facts facts;
+  for (const auto& edge : task.structure) {
+    if (edge.to == node) facts.parents.push_back(edge.from);
+  }
+  for (const auto& v : task.variables) {
+    facts.tags.emplace(v.name, v.tags);
+    if (v.controllable) facts.controllable.insert(v.name);
+  }
+  return facts;
+}
+
+struct simulated_source_options {
+  /// Where task files are looked up by name (pgm::sim::default_task_directories()).
+  std::vector<std::filesystem::path> task_folders;
+  std::string backend = "analytic";
+  unsigned threads = 0;  ///< 0: every core
+};
+
+/// A source simulating each task named by a scenario. Task files are read once; copies of
+/// the result share them, and it is safe to call from several threads.
+[[nodiscard]] inline task_source simulated_source(simulated_source_options options) {
+  struct state {
+    simulated_source_options options;
+    std::mutex mutex;
+    std::map<std::string, sim::task_definition, std::less<>> tasks;
+
+    const sim::task_definition& task(const std::string& name) {
+      const std::lock_guard lock(mutex);
+      auto it = tasks.find(name);
+      if (it == tasks.end()) it = tasks.emplace(name, sim::load_task(name, options.task_folders)).first;
+      return it->second;  // a std::map node: stays put while others are added
+    }
+  };
+  auto shared = std::make_shared<state>();
+  shared->options = std::move(options);
+  task_source result;
+  result.data = [shared](const std::string& task, std::size_t rows, std::uint64_t seed) {
+    sim::simulate_options run;
+    run.backend = shared->options.backend;
+    run.rows = rows;
+    run.seed = seed;
+    run.threads = shared->options.threads;
+    return sim::simulate(shared->task(task), run);
+  };
+  result.facts = [shared](const std::string& task, const std::string& node) {
+    return facts_of(shared->task(task), node);
+  };
+  return result;
+}
+
+}  // namespace pgm
