@@ -47,6 +47,9 @@ struct task_facts {
 struct task_source {
   std::function<dataset(const std::string& task, std::size_t rows, std::uint64_t seed)> data;
   std::function<task_facts(const std::string& task, const std::string& node)> facts;
+  /// What the task's data are made from (e.g. the task file's checksum), so that data kept
+  /// between runs are not used once it changed; may be empty.
+  std::function<std::string(const std::string& task)> origin;
 };
 
 struct experiment_options {
