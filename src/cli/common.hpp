@@ -70,6 +70,7 @@ void add_learn_structure_command(CLI::App& app);
 void add_experiment_command(CLI::App& app);
 void add_report_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
+void add_calibrate_command(CLI::App& app);
 void add_predict_command(CLI::App& app);
 void add_prevent_command(CLI::App& app);
 

@@ -9,6 +9,7 @@
 #include "cli/progress.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/eval/cached_source.hpp"
+#include "pgm/eval/disk_cache.hpp"
 #include "pgm/eval/run_scenarios.hpp"
 #include "pgm/eval/scenario_catalog.hpp"
 #include "pgm/eval/simulated_source.hpp"
@@ -27,6 +28,7 @@ struct experiment_arguments {
   bool no_automatic = false;
   std::string tasks_dir;
   std::string out = "results";
+  std::string data_cache;
 };
 
 void run_experiment_command(const experiment_arguments& args) {
@@ -50,8 +52,16 @@ void run_experiment_command(const experiment_arguments& args) {
   };
   options.note = [](const std::string& text) { note(text); };
   options.headline = [](const std::string& line) { std::cout << line << '\n'; };
-  const auto files =
-      run_scenarios(scenarios, cached(simulated_source({task_folders, args.backend, args.threads})), args.out, options);
+  // The simulation phase: one bar per data set, with the time left.
+  std::optional<progress_bar> simulating;
+  auto source = simulated_source({task_folders, args.backend, args.threads,
+                                  [&simulating](const std::string& task, std::size_t done, std::size_t total) {
+                                    if (!simulating) simulating.emplace("simulating " + task);
+                                    simulating->update(done, total);
+                                    if (done == total) simulating.reset();
+                                  }});
+  if (!args.data_cache.empty()) source = disk_cached(std::move(source), {args.data_cache, args.backend, options.note});
+  const auto files = run_scenarios(scenarios, cached(std::move(source)), args.out, options);
   std::cout << files.points << " points -> " << files.points_csv.string() << ", summary.csv"
             << (files.plots_rendered ? " and plots" : "") << '\n';
 }
@@ -81,6 +91,9 @@ void add_experiment_command(CLI::App& app) {
   cmd->add_option("--tasks-dir", args->tasks_dir,
                   "Folder with the task files and scenarios/ (default: the installed tasks)");
   cmd->add_option("--out", args->out, "Folder for points.csv, summary.csv and the plots")->capture_default_str();
+  cmd->add_option("--data-cache", args->data_cache,
+                  "Folder keeping each task's simulated data between runs (one file per task, back-end, seed and "
+                  "rows); without it nothing but the results is written");
   cmd->callback([args] { run_experiment_command(*args); });
 }
 

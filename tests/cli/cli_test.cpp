@@ -12,6 +12,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -372,6 +373,48 @@ TEST_F(cli_test, experiment_output_folder_is_checked_first) {
   expect_failure("experiment --scenario 2-stack-reality --reps 1 --out " + path("missing/results").string(),
                  "the folder '" + path("missing").string() + "' does not exist", path("missing"));
   expect_failure("experiment --scenario bogus --out " + path("r").string(), "unknown scenario 'bogus'", path("r"));
+}
+
+// --data-cache keeps each task's data between runs; a later run reads them and gets the same
+// results. Without it, nothing but the results folder is written.
+TEST_F(cli_test, experiment_data_cache_is_written_once_and_read_by_a_later_run) {
+  const std::string base = "experiment --scenario 2-stack-reality --reps 1 --threads 1 --no-auto --out ";
+  auto entries = [this] {
+    std::set<std::string> names;
+    for (const auto& e : fs::directory_iterator(path(""))) names.insert(e.path().filename().string());
+    names.erase("stdout.txt");
+    names.erase("stderr.txt");
+    return names;
+  };
+  const auto plain = run(base + path("plain").string());
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_EQ(entries(), std::set<std::string>{"plain"});
+
+  const auto cache = path("cache").string();
+  const auto first = run(base + path("first").string() + " --data-cache " + cache);
+  ASSERT_EQ(first.code, 0) << first.err;
+  EXPECT_THAT(first.err, HasSubstr("wrote"));
+  std::set<std::string> files;
+  for (const auto& e : fs::directory_iterator(cache)) files.insert(e.path().filename().string());
+  // The prior's data (135 rows of 1-stack-reality) and the target's (45 + 180 of 2-stack-reality).
+  using ::testing::AllOf;
+  using ::testing::EndsWith;
+  using ::testing::StartsWith;
+  EXPECT_THAT(files, ::testing::ElementsAre(
+                         AllOf(StartsWith("1-stack-reality.analytic.seed-"), EndsWith(".rows-135.pgmdata")),
+                         AllOf(StartsWith("2-stack-reality.analytic.seed-"), EndsWith(".rows-225.pgmdata"))));
+  const auto second = run(base + path("second").string() + " --data-cache " + cache);
+  ASSERT_EQ(second.code, 0) << second.err;
+  EXPECT_THAT(second.err, HasSubstr("read"));
+  EXPECT_THAT(second.err, ::testing::Not(HasSubstr("wrote")));
+  EXPECT_EQ(slurp(path("second/summary.csv")), slurp(path("first/summary.csv")));
+  EXPECT_EQ(slurp(path("first/summary.csv")), slurp(path("plain/summary.csv")));
+
+  // A cache file cut short is an error naming it, not data.
+  const auto file_path = fs::path(cache) / *files.begin();
+  const auto bytes = slurp(file_path);
+  std::ofstream(file_path, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  expect_failure(base + path("third").string() + " --data-cache " + cache, file_path.string() + ": truncated");
 }
 
 TEST_F(cli_test, report_writes_and_checks_a_document_from_summaries) {

@@ -71,6 +71,35 @@ TEST(experiment_test, the_same_seed_gives_the_same_points_for_any_thread_count) 
   EXPECT_TRUE(differs) << "another seed draws other splits";
 }
 
+// Failure prevention moves configurations predicted below the scenario's ε: another ε moves
+// others, so the prevention numbers change and nothing else does.
+TEST(experiment_test, prevention_uses_the_scenarios_epsilon) {
+  const auto usual = parse_scenario(tiny_scenario, "tiny.json");
+  ASSERT_EQ(usual.epsilon, 0.8);
+  std::string text = tiny_scenario;
+  text.insert(text.rfind('}'), R"(, "epsilon": 0.3)");
+  const auto low = parse_scenario(text, "tiny.json");
+  ASSERT_EQ(low.epsilon, 0.3);
+  const auto a = run_experiment(usual, deterministic_tasks(), {.seed = 7, .threads = 1});
+  const auto b = run_experiment(low, deterministic_tasks(), {.seed = 7, .threads = 1});
+  ASSERT_EQ(a.size(), b.size());
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    ASSERT_EQ(a[i].metric, b[i].metric);
+    if (a[i].metric == "failure_prevention") {
+      changed += a[i].value != b[i].value;
+    } else {
+      EXPECT_EQ(a[i].value, b[i].value) << a[i].metric;
+    }
+  }
+  EXPECT_GT(changed, 0U);
+  // The scenario's ε wins over the options' default.
+  experiment_options other{.seed = 7, .threads = 1};
+  other.prevention.epsilon = 0.3;
+  const auto c = run_experiment(usual, deterministic_tasks(), other);
+  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].value, c[i].value) << i;
+}
+
 TEST(experiment_test, aggregation_gives_mean_and_sample_deviation) {
   std::vector<experiment_point> points;
   for (double v : {1.0, 2.0, 3.0}) points.push_back({"s", "t", "mle", "0", 0, 0, "m", v});

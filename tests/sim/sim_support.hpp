@@ -3,6 +3,10 @@
 // values, and success rates per configuration.
 
 #include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "pgm/detail/file.hpp"
 #include <string>
 #include <vector>
 
@@ -16,6 +20,28 @@ namespace pgm::sim::testing {
 
 inline task_definition shipped(const std::string& name) {
   return load_task(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / (name + ".json"));
+}
+
+/// 2-Stack with a third cube (xOff3, yOff3, dropOff3, colorUp3, onTop3) released on the
+/// second one, the same way, and onTop3 as success.
+inline task_definition three_stack() {
+  auto doc = nlohmann::json::parse(pgm::detail::read_file(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "2-stack.json"));
+  doc["name"] = "3-stack";
+  auto& variables = doc["variables"];
+  const auto count = variables.size();
+  for (std::size_t i = 0; i < count; ++i) {
+    auto v = variables[i];
+    const std::string name = v["name"];
+    if (name.back() != '2') continue;
+    v["name"] = name.substr(0, name.size() - 1) + "3";
+    v["role"] = "cubeUp3";
+    variables.push_back(v);
+  }
+  doc["success"] = "onTop3";
+  for (const auto* parent : {"xOff1", "yOff1", "xOff2", "yOff2", "xOff3", "yOff3"}) {
+    doc["structure"].push_back(std::string(parent) + " -> onTop3");
+  }
+  return parse_task(doc.dump(), "3-stack.json");
 }
 
 /// The task with each named variable fixed to a value.

@@ -62,6 +62,20 @@ TEST(task_test, finds_tasks_by_name_and_lists_the_known_ones) {
   }
 }
 
+TEST(task_test, reads_the_analytic_model_constants) {
+  const auto two = std::get<stacking_physics>(shipped("2-stack").physics);
+  EXPECT_GT(two.tipping_margin_later, two.tipping_margin_first);
+  EXPECT_GT(two.settle_noise_first, 0);
+  // The reality stand-ins keep their own constants: no analytic section, so none of these.
+  const auto reality = std::get<stacking_physics>(shipped("2-stack-reality").physics);
+  EXPECT_EQ(reality.tipping_margin_first, 0);
+  EXPECT_EQ(reality.settle_noise_later, 0);
+  EXPECT_EQ(reality.support_margin, 0.25);
+  const auto glass = std::get<dropping_physics>(shipped("drop-glass").physics);
+  EXPECT_GT(glass.impact_restitution, 0);
+  EXPECT_LE(glass.impact_tangential, 1);
+}
+
 std::string error_of(const std::string& text) {
   try {
     (void)parse_task(text, "bad.json");
@@ -92,6 +106,18 @@ TEST(task_test, errors_name_the_file_and_the_key) {
   EXPECT_THAT(error_of(with(good, "\"name\": \"dropOff1\"", "\"name\": \"height1\"")),
               HasSubstr("/physics/model: the model \"stacking\" needs the continuous variable 'dropOff1'"));
   EXPECT_THAT(error_of(with(good, "\"cube_size\": 5.0", "\"cube_size\": \"big\"")), HasSubstr("/physics/cube_size: expected a number"));
+  EXPECT_THAT(error_of(with(good, "\"tipping_margin\": {", "\"tipping_margin\": {\"later\": 2.5,")),
+              HasSubstr("/physics/analytic/tipping_margin/later: must be below the supporting half-width"));
+  EXPECT_THAT(error_of(with(good, "\"cube_mass\": 0.1", "\"cube_mass\": 0.1, \"time_step\": 0")),
+              HasSubstr("/physics/time_step: expected a step in (0, 0.05] seconds"));
+  EXPECT_THAT(error_of(with(good, "\"analytic\": {", "\"analytic\": 3, \"unused\": {")),
+              HasSubstr("/physics/analytic: expected an object"));
+  const auto glass = pgm::detail::read_file(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "drop-glass.json");
+  EXPECT_THAT(error_of(with(glass, "\"landing_noise\": 0.5,", "\"landing_noise\": 0.5, \"rim_catch\": 0.7,")),
+              HasSubstr("bad.json: /physics/rim_catch: is no longer used"));
+  // (The later of two equal keys counts.)
+  EXPECT_THAT(error_of(with(glass, "\"tangential\":", "\"restitution\": 1.5, \"tangential\":")),
+              HasSubstr("/physics/analytic/restitution: expected a number in [0, 1]"));
   try {
     (void)load_task(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "missing.json");
     FAIL();

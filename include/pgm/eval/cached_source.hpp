@@ -41,6 +41,9 @@ namespace pgm {
     return shared->data.emplace(std::move(key), std::move(made)).first->second;
   };
   result.facts = [shared](const std::string& task, const std::string& node) { return shared->inner.facts(task, node); };
+  if (shared->inner.origin) {
+    result.origin = [shared](const std::string& task) { return shared->inner.origin(task); };
+  }
   return result;
 }
 

@@ -47,6 +47,9 @@ struct task_facts {
 struct task_source {
   std::function<dataset(const std::string& task, std::size_t rows, std::uint64_t seed)> data;
   std::function<task_facts(const std::string& task, const std::string& node)> facts;
+  /// What the task's data are made from (e.g. the task file's checksum), so that data kept
+  /// between runs are not used once it changed; may be empty.
+  std::function<std::string(const std::string& task)> origin;
 };
 
 struct experiment_options {
@@ -54,6 +57,7 @@ struct experiment_options {
   std::size_t repetitions = 0;  ///< 0: the scenario's
   unsigned threads = 0;         ///< 0: every core
   bool automatic_lines = true;  ///< add w = auto and the proposed map
+  /// Failure prevention's options; its threshold ε is each scenario's `epsilon`.
   prevention_options prevention;
   std::function<void(std::size_t done, std::size_t total)> progress;
   std::function<void(const std::string&)> note;
@@ -108,6 +112,8 @@ struct prepared_target {
     if (options.note) options.note(s.name + ": " + text);
   };
   const std::size_t repetitions = options.repetitions ? options.repetitions : s.repetitions;
+  auto prevention = options.prevention;
+  prevention.epsilon = s.epsilon;
   const auto base_seed = detail::mix_seed(options.seed, 0);
 
   // The prior: fitted once, by MLE, on D′.
@@ -204,7 +210,7 @@ struct prepared_target {
         out.push_back({s.name, target.task, strategy, weight, rows, rep, metric, value});
       };
       const double oracle =
-          failure_prevention_rate(truth, truth, target.success_state, controllable, produced, options.prevention);
+          failure_prevention_rate(truth, truth, target.success_state, controllable, produced, prevention);
       auto counts = family.empty_counts();
       std::size_t counted = 0;
       for (std::size_t k = 0; k <= s.subsets; ++k) {
@@ -223,7 +229,7 @@ struct prepared_target {
           emit(line.strategy, line.weight_label, end, "max_difference", difference.max);
           emit(line.strategy, line.weight_label, end, "mean_difference", difference.mean);
           emit(line.strategy, line.weight_label, end, "failure_prevention",
-               failure_prevention_rate(estimate_k, truth, target.success_state, controllable, produced, options.prevention));
+               failure_prevention_rate(estimate_k, truth, target.success_state, controllable, produced, prevention));
         }
       }
     }

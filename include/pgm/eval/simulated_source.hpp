@@ -6,6 +6,7 @@
 /// wrap it in pgm::cached (eval/cached_source.hpp) to share data between scenarios.
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -14,6 +15,8 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/detail/checksum.hpp"
+#include "pgm/detail/file.hpp"
 #include "pgm/eval/experiment.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task.hpp"
@@ -41,6 +44,8 @@ struct simulated_source_options {
   std::vector<std::filesystem::path> task_folders;
   std::string backend = "analytic";
   unsigned threads = 0;  ///< 0: every core
+  /// Experiments of `task` finished so far, out of `total`, while its data are simulated.
+  std::function<void(const std::string& task, std::size_t done, std::size_t total)> progress;
 };
 
 /// A source simulating each task named by a scenario. Task files are read once; copies of
@@ -50,12 +55,25 @@ struct simulated_source_options {
     simulated_source_options options;
     std::mutex mutex;
     std::map<std::string, sim::task_definition, std::less<>> tasks;
+    std::map<std::string, std::string, std::less<>> origins;
 
     const sim::task_definition& task(const std::string& name) {
       const std::lock_guard lock(mutex);
       auto it = tasks.find(name);
-      if (it == tasks.end()) it = tasks.emplace(name, sim::load_task(name, options.task_folders)).first;
+      if (it == tasks.end()) {
+        // The file is read once for both, so the checksum is of the text the task came from.
+        const auto file = sim::find_task(name, options.task_folders);
+        const auto text = pgm::detail::read_file(file);
+        it = tasks.emplace(name, sim::parse_task(text, file.string())).first;
+        origins.emplace(name, options.backend + " on " + file.filename().string() + " (crc32 " +
+                                  pgm::detail::crc32_hex(text) + ")");
+      }
       return it->second;  // a std::map node: stays put while others are added
+    }
+    std::string origin(const std::string& name) {
+      (void)task(name);
+      const std::lock_guard lock(mutex);
+      return origins.at(name);
     }
   };
   auto shared = std::make_shared<state>();
@@ -67,11 +85,15 @@ struct simulated_source_options {
     run.rows = rows;
     run.seed = seed;
     run.threads = shared->options.threads;
+    if (shared->options.progress) {
+      run.progress = [&](std::size_t done) { shared->options.progress(task, done, rows); };
+    }
     return sim::simulate(shared->task(task), run);
   };
   result.facts = [shared](const std::string& task, const std::string& node) {
     return facts_of(shared->task(task), node);
   };
+  result.origin = [shared](const std::string& task) { return shared->origin(task); };
   return result;
 }
 

@@ -2,19 +2,22 @@
 /// \file
 /// Noise-free ground truth from the analytic model: the probability of success given that
 /// some variables lie in intervals ("boxes", e.g. one discretized parent configuration),
-/// integrating over the sampling distributions restricted to the box and over the release
+/// integrating over the sampling distributions restricted to the box and over the model's
 /// noise. Deterministic numerical integration, no sampling:
 ///
 /// - release heights and container scales: Gauss–Legendre in probability space (the
-///   variable's CDF), 8 nodes for release heights, 24 for scales;
+///   variable's CDF), 8 nodes for release heights (one when the release noise does not
+///   depend on the height), 24 for scales;
 /// - landing positions: the density of "sampled offset + Gaussian noise" in closed form
 ///   (a truncated normal, a uniform or a grid convolved with a normal), on a grid of 256
-///   (stacking) or 1024 (dropping) intervals, integrated by the trapezoidal rule; a sphere's
-///   circular opening is integrated in polar form so the integrand stays smooth.
+///   (stacking) or 1024 (dropping) intervals, integrated by the trapezoidal rule;
+/// - stacks: nested sums over the cubes' offsets, the last cube's in closed form;
+/// - dropping: the intervals of landing distance from the axis where the sphere stays (a
+///   scan refined by bisection), each over the landing density in polar form.
 ///
-/// Against a 16× finer integration the result differs by less than 1e-4 on the 2-Stack
-/// and SphereDropping boxes of Table I (tests/sim/analytic_test.cpp checks 1e-3), and all 625
-/// onTop2 boxes of 2-Stack take about 0.45 s on one core.
+/// Against finer integration the result differs by less than 1e-3 on Table I's boxes (2e-3
+/// for three cubes; tests/sim/analytic_test.cpp), and all 625 onTop2 boxes of 2-Stack take
+/// about 0.1 s on one core (bench_sim ground_truth_625).
 
 #include <algorithm>
 #include <cmath>
@@ -26,6 +29,8 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/sim/analytic.hpp"
+#include "pgm/sim/container.hpp"
 #include "pgm/sim/distribution.hpp"
 #include "pgm/sim/task.hpp"
 
@@ -41,6 +46,8 @@ struct integration_options {
   std::size_t stacking_grid = 256;
   std::size_t dropping_grid = 1024;
   std::size_t angle_nodes = 128;
+  /// Steps of the scan for where a dropped sphere's outcome changes with its landing distance.
+  std::size_t radial_steps = 2048;
 };
 
 namespace detail {
@@ -134,8 +141,12 @@ inline double noisy_density(const restricted& r, double sd, double t) {
 class noisy_axis {
  public:
   noisy_axis(const restricted& r, double sd, double lo, double hi, std::size_t intervals)
-      : lo_(lo), step_((hi - lo) / static_cast<double>(intervals)), density_(intervals + 1), cumulative_(intervals + 1) {
-    for (std::size_t k = 0; k <= intervals; ++k) density_[k] = noisy_density(r, sd, lo + step_ * static_cast<double>(k));
+      : lo_(lo),
+        step_((hi - lo) / static_cast<double>(intervals)),
+        density_(intervals + 1),
+        cumulative_(intervals + 1) {
+    for (std::size_t k = 0; k <= intervals; ++k)
+      density_[k] = noisy_density(r, sd, lo + step_ * static_cast<double>(k));
     for (std::size_t k = 1; k <= intervals; ++k) {
       cumulative_[k] = cumulative_[k - 1] + step_ * (density_[k - 1] + density_[k]) / 2;
     }
@@ -165,7 +176,8 @@ inline restricted restricted_variable(const task_definition& task, const variabl
   const auto& d = task.at(name).sampling;
   const auto it = box.find(name);
   const double inf = std::numeric_limits<double>::infinity();
-  auto r = it == box.end() ? restrict_to(d, -inf, inf, nodes) : restrict_to(d, it->second.first, it->second.second, nodes);
+  auto r =
+      it == box.end() ? restrict_to(d, -inf, inf, nodes) : restrict_to(d, it->second.first, it->second.second, nodes);
   if (r.mass <= 0) {
     throw data_error("task '" + task.name + "': the interval given for '" + name +
                      "' has probability 0 under its distribution");
@@ -173,57 +185,119 @@ inline restricted restricted_variable(const task_definition& task, const variabl
   return r;
 }
 
-inline double stacking_probability(const task_definition& task, const stacking_physics& p, std::size_t cube,
+/// One axis of a stack: ∫ Π density_i(t_i) · 1[every stage stands] dt over the cubes'
+/// landing offsets t_i (from the cube below), by nested trapezoidal sums over t_0 … t_{n-2}
+/// and the closed-form cumulative of the last one. Stage m (cubes 0..m placed) stands when,
+/// for every k ≤ m, the centre of mass of cubes k..m lies within `half[m]` of cube k-1.
+class stack_axis_integral {
+ public:
+  stack_axis_integral(std::vector<const noisy_axis*> axes, std::vector<double> half)
+      : axes_(std::move(axes)), half_(std::move(half)), at_(axes_.size()) {}
+
+  [[nodiscard]] double operator()() { return level(0); }
+
+ private:
+  // at_[j]: where cube j sits relative to cubeDown.
+  double level(std::size_t i) {
+    const auto& axis = *axes_[i];
+    if (i + 1 == axes_.size()) {
+      const auto [lo, hi] = standing_offsets(at_, i, half_[i]);
+      return hi > lo ? axis.cumulative(hi) - axis.cumulative(lo) : 0.0;
+    }
+    double total = 0;
+    const auto n = axis.intervals();
+    for (std::size_t k = 0; k <= n; ++k) {
+      const double density = axis.density(k);
+      if (density <= 0) continue;
+      at_[i] = (i == 0 ? 0.0 : at_[i - 1]) + axis.at(k);
+      if (!stage_stands(at_, i, half_[i])) continue;
+      total += (k == 0 || k == n ? 0.5 : 1.0) * density * level(i + 1);
+    }
+    return total * axis.step();
+  }
+
+  std::vector<const noisy_axis*> axes_;
+  std::vector<double> half_;
+  std::vector<double> at_;
+};
+
+inline double stacking_probability(const task_definition& task, const stacking_physics& p, std::size_t cubes,
                                    const variable_box& box, const integration_options& o) {
   const double h = p.cube_size / 2 - p.support_margin;
+  // Half-width of the supporting faces at each stage (cubes 0..m placed).
+  std::vector<double> half(cubes, h - p.tipping_margin_later);
+  half[0] = h - p.tipping_margin_first;
+  // Release heights matter only through the release noise.
+  const std::size_t height_nodes = p.noise_per_cm == 0 ? 1 : o.height_nodes;
   struct axis_inputs {
     restricted x, y, drop;
   };
-  std::vector<axis_inputs> cubes;
-  for (std::size_t i = 1; i <= cube; ++i) {
+  std::vector<axis_inputs> inputs;
+  for (std::size_t i = 1; i <= cubes; ++i) {
     const auto n = std::to_string(i);
-    cubes.push_back({restricted_variable(task, box, "xOff" + n, 16), restricted_variable(task, box, "yOff" + n, 16),
-                     restricted_variable(task, box, "dropOff" + n, o.height_nodes)});
+    inputs.push_back({restricted_variable(task, box, "xOff" + n, 16), restricted_variable(task, box, "yOff" + n, 16),
+                      restricted_variable(task, box, "dropOff" + n, height_nodes)});
   }
-  // Per cube and release-height node: the density of the landing offset on [-h, h].
-  std::vector<std::vector<std::pair<noisy_axis, noisy_axis>>> axes(cube);
-  for (std::size_t i = 0; i < cube; ++i) {
-    for (double height : cubes[i].drop.values) {
-      const double sd = p.noise_base + p.noise_per_cm * height;
-      axes[i].emplace_back(noisy_axis(cubes[i].x, sd, -h, h, o.stacking_grid),
-                           noisy_axis(cubes[i].y, sd, -h, h, o.stacking_grid));
+  // Per cube and release-height node: the density of where the cube settles on [-half, half].
+  std::vector<std::vector<std::pair<noisy_axis, noisy_axis>>> axes(cubes);
+  for (std::size_t i = 0; i < cubes; ++i) {
+    const double settle = i == 0 ? p.settle_noise_first : p.settle_noise_later;
+    const double edge = half[i];  // the cube's own contact bounds its offset at its stage
+    for (double height : inputs[i].drop.values) {
+      const double sd = std::hypot(p.noise_base + p.noise_per_cm * height, settle);
+      axes[i].emplace_back(noisy_axis(inputs[i].x, sd, -edge, edge, o.stacking_grid),
+                           noisy_axis(inputs[i].y, sd, -edge, edge, o.stacking_grid));
     }
   }
-  if (cube == 1) {
-    double total = 0;
-    for (std::size_t j = 0; j < axes[0].size(); ++j) {
-      const auto& [ax, ay] = axes[0][j];
-      total += cubes[0].drop.weights[j] * ax.cumulative(h) * ay.cumulative(h);
-    }
-    return total;
-  }
-  // Two cubes: |t1| < h, |t2| < h and |t1 + t2/2| < h on each axis; the axes are independent
-  // given both release heights.
-  auto pair = [h](const noisy_axis& first, const noisy_axis& second) {
-    double sum = 0;
-    const auto n = first.intervals();
-    for (std::size_t k = 0; k <= n; ++k) {
-      const double t = first.at(k);
-      const double hi = std::min(h, 2 * h - 2 * t);
-      const double lo = std::max(-h, -2 * h - 2 * t);
-      const double inner = hi > lo ? second.cumulative(hi) - second.cumulative(lo) : 0.0;
-      sum += (k == 0 || k == n ? 0.5 : 1.0) * first.density(k) * inner;
-    }
-    return sum * first.step();
-  };
+  // Sum over every combination of release-height nodes; the axes are independent given them.
   double total = 0;
-  for (std::size_t j1 = 0; j1 < axes[0].size(); ++j1) {
-    for (std::size_t j2 = 0; j2 < axes[1].size(); ++j2) {
-      const double w = cubes[0].drop.weights[j1] * cubes[1].drop.weights[j2];
-      total += w * pair(axes[0][j1].first, axes[1][j2].first) * pair(axes[0][j1].second, axes[1][j2].second);
+  std::vector<std::size_t> node(cubes, 0);
+  for (;;) {
+    double weight = 1;
+    std::vector<const noisy_axis*> xs, ys;
+    for (std::size_t i = 0; i < cubes; ++i) {
+      weight *= inputs[i].drop.weights[node[i]];
+      xs.push_back(&axes[i][node[i]].first);
+      ys.push_back(&axes[i][node[i]].second);
     }
+    total += weight * stack_axis_integral(xs, half)() * stack_axis_integral(ys, half)();
+    std::size_t i = 0;
+    while (i < cubes && ++node[i] == inputs[i].drop.values.size()) node[i++] = 0;
+    if (i == cubes) break;
   }
   return total;
+}
+
+/// The intervals of distance from the axis where a landing sphere stays in container `c`:
+/// a scan in `steps` steps, each change of outcome refined by bisection.
+inline std::vector<std::pair<double, double>> staying_intervals(const container_profile& c, const dropping_physics& p,
+                                                                std::size_t steps) {
+  std::vector<std::pair<double, double>> intervals;
+  const double end = c.rim_rho() + c.reach();  // beyond, the sphere misses the container
+  auto stays = [&](double rho) { return sphere_stays(c, p, rho); };
+  auto edge = [&](double lo, double hi) {  // stays(lo) != stays(hi)
+    const bool at_lo = stays(lo);
+    for (int i = 0; i < 60 && hi - lo > 1e-10; ++i) {
+      const double mid = (lo + hi) / 2;
+      (stays(mid) == at_lo ? lo : hi) = mid;
+    }
+    return (lo + hi) / 2;
+  };
+  double previous = 0;
+  bool inside = stays(0);
+  double start = 0;
+  for (std::size_t k = 1; k <= steps; ++k) {
+    const double rho = end * static_cast<double>(k) / static_cast<double>(steps);
+    if (const bool now = stays(rho); now != inside) {
+      const double at = edge(previous, rho);
+      if (inside) intervals.emplace_back(start, at);
+      start = at;
+      inside = now;
+    }
+    previous = rho;
+  }
+  if (inside) intervals.emplace_back(start, end);
+  return intervals;
 }
 
 inline double dropping_probability(const task_definition& task, const dropping_physics& p, const variable_box& box,
@@ -231,33 +305,33 @@ inline double dropping_probability(const task_definition& task, const dropping_p
   const auto x = restricted_variable(task, box, "xOff", 16);
   const auto y = restricted_variable(task, box, "yOff", 16);
   const auto s = restricted_variable(task, box, "scalingFactor", o.scale_nodes);
+  std::vector<container_profile> containers;
   double largest = 0;
-  for (double scale : s.values) largest = std::max(largest, scale * p.diameter_at_scale_1 / 2);
-  const noisy_axis ax(x, p.landing_noise, -largest, largest, o.dropping_grid);
-  const noisy_axis ay(y, p.landing_noise, -largest, largest, o.dropping_grid);
+  for (double scale : s.values) {
+    containers.emplace_back(p, scale);
+    largest = std::max(largest, containers.back().rim_rho() + containers.back().reach());
+  }
+  const double sd = std::hypot(p.landing_noise, p.landing_scatter);
+  const noisy_axis ax(x, sd, -largest, largest, o.dropping_grid);
+  const noisy_axis ay(y, sd, -largest, largest, o.dropping_grid);
   const auto [angles, angle_weights] = gauss_legendre(o.angle_nodes);
+  // P(landing within `within` of the axis); t = within·sin θ, so the half-chord is within·cos θ.
+  auto disc = [&](double within) {
+    if (within <= 0) return 0.0;
+    double sum = 0;
+    for (std::size_t a = 0; a < angles.size(); ++a) {
+      const double theta = angles[a] * std::numbers::pi / 2;
+      const double t = within * std::sin(theta);
+      const double chord = within * std::cos(theta);
+      sum += angle_weights[a] * ax.density_at(t) * (ay.cumulative(chord) - ay.cumulative(-chord)) * chord;
+    }
+    return sum * std::numbers::pi / 2;
+  };
   double total = 0;
   for (std::size_t j = 0; j < s.values.size(); ++j) {
-    const double radius = s.values[j] * p.diameter_at_scale_1 / 2;
-    const double height = s.values[j] * p.height_at_scale_1;
-    const double r = p.sphere_diameter / 2;
-    // P(landing within `within` of the axis); t = within·sin θ, so the half-chord is within·cos θ.
-    auto disc = [&](double within) {
-      if (within <= 0) return 0.0;
-      double sum = 0;
-      for (std::size_t a = 0; a < angles.size(); ++a) {
-        const double theta = angles[a] * std::numbers::pi / 2;
-        const double t = within * std::sin(theta);
-        const double chord = within * std::cos(theta);
-        sum += angle_weights[a] * ax.density_at(t) * (ay.cumulative(chord) - ay.cumulative(-chord)) * chord;
-      }
-      return sum * std::numbers::pi / 2;
-    };
-    const double core = disc(radius - r);
-    const double rim_catch = p.rim_catch * std::clamp((radius - r) / r, 0.0, 1.0);
-    const double caught = core + rim_catch * (disc(radius) - core);
-    const double stays = 1 - p.bounce_max * std::exp(-height / p.bounce_depth_scale);
-    total += s.weights[j] * caught * stays;
+    double stays = 0;
+    for (const auto& [from, to] : staying_intervals(containers[j], p, o.radial_steps)) stays += disc(to) - disc(from);
+    total += s.weights[j] * stays;
   }
   return total;
 }

@@ -58,6 +58,17 @@ struct stacking_physics {
   double friction = 0.6;
   double restitution = 0.1;
   double cube_mass = 0.1;  ///< kg
+  /// Bullet's fixed step (s): the largest whose outcomes agree with finer ones (docs/simulators.md).
+  double time_step = 1.0 / 240;
+  // The analytic model's own constants ("analytic" in the file; pgm calibrate fits them to
+  // Bullet): a landing cube's impact, which the static rule does not see, as a margin (cm)
+  // by which the load's centre of mass must stay inside the supporting face's edge and as
+  // extra scatter (cm, sd) of where a cube comes to rest. "first": the first cube on the
+  // fixed cubeDown; "later": once a cube lands on another one, which can move under it.
+  double tipping_margin_first = 0.0;
+  double tipping_margin_later = 0.0;
+  double settle_noise_first = 0.0;
+  double settle_noise_later = 0.0;
 };
 
 /// Dropping a sphere into a container whose diameter and height scale together.
@@ -69,13 +80,21 @@ struct dropping_physics {
   double height_at_scale_1 = 4.0;     ///< cm
   double floor_fraction = 0.6;        ///< flat floor's diameter / opening (1: vertical walls)
   double landing_noise = 0.5;         ///< cm, standard deviation of the landing point per axis
-  double bounce_max = 0.6;            ///< analytic: chance of bouncing out of a container of depth 0 …
-  double bounce_depth_scale = 3.0;    ///< … falling as exp(-height / this)
-  double rim_catch = 0.7;             ///< analytic: chance that a sphere landing on the rim of a
-                                      ///< container it fits well into (opening ≥ 2 diameters) falls in
   double friction = 0.5;
   double restitution = 0.5;
   double sphere_mass = 0.1;  ///< kg
+  /// Bullet's fixed step (s): the largest whose outcomes agree with finer ones (docs/simulators.md).
+  double time_step = 1.0 / 240;
+  // The analytic model's own constants ("analytic" in the file; pgm calibrate fits them to
+  // Bullet). The model resolves the sphere's first impact with the container and the flight
+  // after it in closed form (docs/simulators.md): the share of the speed into the surface
+  // that the bounce returns, the share of the speed along the surface that it keeps, extra
+  // scatter (cm, sd) of the landing point, and how far (cm) above the far rim the sphere's
+  // centre must pass to leave the container.
+  double impact_restitution = 0.5;
+  double impact_tangential = 5.0 / 7.0;
+  double landing_scatter = 0.0;
+  double rim_clearance = 0.0;
 };
 
 using physics_parameters = std::variant<stacking_physics, dropping_physics>;

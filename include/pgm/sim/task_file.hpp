@@ -98,6 +98,12 @@ class task_reader : public pgm::detail::json_reader {
     return value;
   }
 
+  double time_step(const nlohmann::json& object, const std::string& path, double fallback) const {
+    const auto value = optional_number(object, "time_step", path, fallback);
+    if (!(value > 0 && value <= 0.05)) fail(path + "/time_step", "expected a step in (0, 0.05] seconds");
+    return value;
+  }
+
   task_variable read_task_variable(const nlohmann::json& value, const std::string& path) const {
     task_variable v;
     if (!value.is_object()) fail(path, "expected an object");
@@ -223,6 +229,27 @@ class task_reader : public pgm::detail::json_reader {
       p.friction = non_negative(value, "friction", path, p.friction);
       p.restitution = non_negative(value, "restitution", path, p.restitution);
       p.cube_mass = positive(value, "cube_mass", path);
+      p.time_step = time_step(value, path, p.time_step);
+      if (const auto* analytic = optional_member(value, "analytic")) {
+        const auto at = path + "/analytic";
+        if (!analytic->is_object()) fail(at, "expected an object");
+        auto pair = [&](const char* key, double& first, double& later) {
+          if (const auto* v = optional_member(*analytic, key)) {
+            if (!v->is_object()) fail(at + "/" + key, "expected an object with \"first\" and \"later\"");
+            first = non_negative(*v, "first", at + "/" + key, first);
+            later = non_negative(*v, "later", at + "/" + key, later);
+          }
+        };
+        pair("tipping_margin", p.tipping_margin_first, p.tipping_margin_later);
+        pair("settle_noise", p.settle_noise_first, p.settle_noise_later);
+        const double edge = p.cube_size / 2 - p.support_margin;
+        if (!(p.tipping_margin_first < edge)) {
+          fail(at + "/tipping_margin/first", "must be below the supporting half-width");
+        }
+        if (!(p.tipping_margin_later < edge)) {
+          fail(at + "/tipping_margin/later", "must be below the supporting half-width");
+        }
+      }
       return p;
     }
     if (model == "dropping") {
@@ -237,15 +264,30 @@ class task_reader : public pgm::detail::json_reader {
       p.floor_fraction = positive(value, "floor_fraction", path);
       if (p.floor_fraction > 1) fail(path + "/floor_fraction", "expected a number in (0, 1]");
       p.landing_noise = positive(value, "landing_noise", path);
-      const auto& bounce = member(value, path, "bounce_out");
-      p.bounce_max = non_negative(bounce, "max", path + "/bounce_out", 0.0);
-      if (p.bounce_max > 1) fail(path + "/bounce_out/max", "expected a probability");
-      p.bounce_depth_scale = positive(bounce, "depth_scale", path + "/bounce_out");
-      p.rim_catch = non_negative(value, "rim_catch", path, p.rim_catch);
-      if (p.rim_catch > 1) fail(path + "/rim_catch", "expected a probability");
+      for (const auto* retired : {"bounce_out", "rim_catch"}) {
+        if (optional_member(value, retired)) {
+          fail(path + "/" + retired,
+               "is no longer used: the analytic model now resolves the sphere's impact with the "
+               "container (docs/simulators.md); remove it and fit /physics/analytic with "
+               "pgm calibrate");
+        }
+      }
       p.friction = non_negative(value, "friction", path, p.friction);
       p.restitution = non_negative(value, "restitution", path, p.restitution);
       p.sphere_mass = positive(value, "sphere_mass", path);
+      p.time_step = time_step(value, path, p.time_step);
+      p.impact_restitution = p.restitution;
+      if (const auto* analytic = optional_member(value, "analytic")) {
+        const auto at = path + "/analytic";
+        if (!analytic->is_object()) fail(at, "expected an object");
+        p.impact_restitution = non_negative(*analytic, "restitution", at, p.impact_restitution);
+        p.impact_tangential = non_negative(*analytic, "tangential", at, p.impact_tangential);
+        p.landing_scatter = non_negative(*analytic, "scatter", at, p.landing_scatter);
+        p.rim_clearance = optional_number(*analytic, "rim_clearance", at, p.rim_clearance);
+        if (p.impact_restitution > 1) fail(at + "/restitution", "expected a number in [0, 1]");
+        if (p.impact_tangential > 1) fail(at + "/tangential", "expected a number in [0, 1]");
+        if (!std::isfinite(p.rim_clearance)) fail(at + "/rim_clearance", "expected a number");
+      }
       const auto& s = task.at("scalingFactor").sampling;
       if (!s.continuous() || !(s.min > 0)) fail("/variables", "scalingFactor must be sampled from positive values");
       return p;

@@ -1,0 +1,183 @@
+#pragma once
+/// \file
+/// `agreement`: how closely the analytic model follows a reference back-end (Bullet by
+/// default), cell by cell. The cells split each grid variable's range into thirds: the two
+/// offsets of the first and the last cube along x for a stack of several cubes (the axis on
+/// which the pair's centre of mass couples them; y behaves the same), xOff1 × yOff1 for one
+/// cube, and xOff × yOff × scalingFactor for dropping (27 cells). Both back-ends simulate with
+/// the same seed; the table gives each cell's success rates, the mean |difference| over the
+/// cells and what sampling noise alone would give, so that the two can be compared.
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "pgm/core/error.hpp"
+#include "pgm/data/dataset.hpp"
+#include "pgm/sim/simulator.hpp"
+#include "pgm/sim/task.hpp"
+
+namespace pgm::sim {
+
+struct agreement_options {
+  std::string reference = "bullet";
+  std::size_t reference_rows = 20'000;
+  std::size_t analytic_rows = 200'000;
+  std::uint64_t seed = 1;
+  unsigned threads = 0;
+  /// Progress of the reference's simulation (see simulate_options::progress).
+  std::function<void(std::size_t done)> progress;
+};
+
+/// A grid variable and the range split into thirds.
+struct agreement_axis {
+  std::string variable;
+  double lo = 0, hi = 0;
+  [[nodiscard]] double edge(std::size_t k) const { return lo + (hi - lo) * static_cast<double>(k) / 3; }
+};
+
+struct agreement_cell {
+  std::vector<std::size_t> third;  ///< per axis, 0 … 2
+  std::size_t reference_rows = 0, analytic_rows = 0;
+  double reference_rate = 0, analytic_rate = 0;
+};
+
+struct agreement_table {
+  std::string task, reference, outcome;
+  std::vector<agreement_axis> axes;
+  std::vector<agreement_cell> cells;
+  std::size_t reference_rows = 0, analytic_rows = 0;
+  double reference_rate = 0, analytic_rate = 0;
+  /// Mean over the cells (with rows in both) of |reference rate - analytic rate|.
+  double mean_abs_difference = 0;
+  /// The expected mean |difference| if both back-ends had each cell's pooled rate: what
+  /// sampling noise alone gives at these sizes.
+  double noise_mean_abs_difference = 0;
+  /// Standard error of the overall difference.
+  double overall_standard_error = 0;
+  double reference_seconds = 0, analytic_seconds = 0;
+};
+
+namespace detail {
+
+inline agreement_axis grid_axis(const task_definition& task, const std::string& name) {
+  const auto& d = task.at(name).sampling;
+  agreement_axis axis{name, d.min, d.max};
+  if (d.continuous()) {
+    // An untruncated tail: the central 99%.
+    const double total = d.raw_cdf(d.max) - d.raw_cdf(d.min);
+    if (!std::isfinite(axis.lo)) axis.lo = d.raw_quantile(d.raw_cdf(d.min) + 0.005 * total);
+    if (!std::isfinite(axis.hi)) axis.hi = d.raw_quantile(d.raw_cdf(d.max) - 0.005 * total);
+  } else if (!d.values.empty()) {
+    axis.lo = *std::min_element(d.values.begin(), d.values.end());
+    axis.hi = *std::max_element(d.values.begin(), d.values.end());
+  }
+  if (!(axis.hi > axis.lo)) {
+    throw data_error("task '" + task.name + "': '" + name + "' does not vary, so it cannot span an agreement grid");
+  }
+  return axis;
+}
+
+}  // namespace detail
+
+/// The grid variables of a task (see the file comment).
+[[nodiscard]] inline std::vector<agreement_axis> agreement_axes(const task_definition& task) {
+  if (const auto* s = std::get_if<stacking_physics>(&task.physics)) {
+    if (s->cubes == 1) return {detail::grid_axis(task, "xOff1"), detail::grid_axis(task, "yOff1")};
+    return {detail::grid_axis(task, "xOff1"), detail::grid_axis(task, "xOff" + std::to_string(s->cubes))};
+  }
+  return {detail::grid_axis(task, "xOff"), detail::grid_axis(task, "yOff"), detail::grid_axis(task, "scalingFactor")};
+}
+
+/// Simulates `task` on options.reference and on the analytic back-end and compares the
+/// success rates per cell.
+[[nodiscard]] inline agreement_table agreement(const task_definition& task, const agreement_options& options) {
+  if (options.reference_rows == 0 || options.analytic_rows == 0) {
+    throw data_error("an agreement table needs rows from both back-ends (rows must be positive)");
+  }
+  agreement_table table;
+  table.task = task.name;
+  table.reference = options.reference;
+  table.outcome = task.success;
+  table.axes = agreement_axes(task);
+  const std::size_t dims = table.axes.size();
+  std::size_t count = 1;
+  for (std::size_t i = 0; i < dims; ++i) count *= 3;
+  table.cells.resize(count);
+  for (std::size_t c = 0; c < count; ++c) {
+    auto rest = c;
+    table.cells[c].third.resize(dims);
+    for (std::size_t i = dims; i-- > 0;) {
+      table.cells[c].third[i] = rest % 3;
+      rest /= 3;
+    }
+  }
+  // Success counts per cell of one data set.
+  auto tally = [&](const dataset& data, bool reference) {
+    const auto& success = data.discrete(task.success);
+    std::vector<std::span<const double>> columns;
+    for (const auto& axis : table.axes) columns.push_back(data.continuous(axis.variable).values());
+    std::vector<double> hits(count, 0.0), rows(count, 0.0);
+    for (std::size_t row = 0; row < data.rows(); ++row) {
+      std::size_t c = 0;
+      for (std::size_t i = 0; i < dims; ++i) {
+        const auto& axis = table.axes[i];
+        const double position = (columns[i][row] - axis.lo) / (axis.hi - axis.lo) * 3;
+        c = c * 3 + static_cast<std::size_t>(std::clamp(position, 0.0, 2.0));
+      }
+      rows[c] += 1;
+      hits[c] += success.code(row);
+    }
+    double total = 0;
+    for (std::size_t c = 0; c < count; ++c) {
+      auto& cell = table.cells[c];
+      total += hits[c];
+      (reference ? cell.reference_rows : cell.analytic_rows) = static_cast<std::size_t>(rows[c]);
+      (reference ? cell.reference_rate : cell.analytic_rate) = rows[c] > 0 ? hits[c] / rows[c] : 0.0;
+    }
+    (reference ? table.reference_rate : table.analytic_rate) = total / static_cast<double>(data.rows());
+  };
+  auto run = [&](const std::string& backend, std::size_t rows, bool reference) {
+    simulate_options o;
+    o.backend = backend;
+    o.rows = rows;
+    o.seed = options.seed;
+    o.threads = options.threads;
+    if (reference) o.progress = options.progress;
+    const auto start = std::chrono::steady_clock::now();
+    const auto data = simulate(task, o);
+    (reference ? table.reference_seconds : table.analytic_seconds) =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    tally(data, reference);
+  };
+  run(options.reference, options.reference_rows, true);
+  run("analytic", options.analytic_rows, false);
+  table.reference_rows = options.reference_rows;
+  table.analytic_rows = options.analytic_rows;
+
+  double differences = 0, noise = 0, used = 0;
+  for (const auto& cell : table.cells) {
+    if (cell.reference_rows == 0 || cell.analytic_rows == 0) continue;
+    const double n1 = static_cast<double>(cell.reference_rows), n2 = static_cast<double>(cell.analytic_rows);
+    const double pooled = (cell.reference_rate * n1 + cell.analytic_rate * n2) / (n1 + n2);
+    differences += std::abs(cell.reference_rate - cell.analytic_rate);
+    noise += std::sqrt(pooled * (1 - pooled) * (1 / n1 + 1 / n2)) * std::sqrt(2 / std::numbers::pi);
+    used += 1;
+  }
+  table.mean_abs_difference = used > 0 ? differences / used : 0.0;
+  table.noise_mean_abs_difference = used > 0 ? noise / used : 0.0;
+  const double p = table.reference_rate;
+  const double q = table.analytic_rate;
+  table.overall_standard_error = std::sqrt(p * (1 - p) / static_cast<double>(table.reference_rows) +
+                                           q * (1 - q) / static_cast<double>(table.analytic_rows));
+  return table;
+}
+
+}  // namespace pgm::sim
