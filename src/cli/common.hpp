@@ -61,6 +61,7 @@ void add_experiment_command(CLI::App& app);
 void add_report_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
 void add_predict_command(CLI::App& app);
+void add_query_command(CLI::App& app);
 void add_prevent_command(CLI::App& app);
 
 }  // namespace pgm::cli
