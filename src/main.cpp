@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   pgm::cli::add_simulate_command(app);
   pgm::cli::add_calibrate_command(app);
   pgm::cli::add_predict_command(app);
+  pgm::cli::add_query_command(app);
   pgm::cli::add_prevent_command(app);
   try {
     app.parse(argc, argv);

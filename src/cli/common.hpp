@@ -72,6 +72,7 @@ void add_report_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
 void add_calibrate_command(CLI::App& app);
 void add_predict_command(CLI::App& app);
+void add_query_command(CLI::App& app);
 void add_prevent_command(CLI::App& app);
 
 }  // namespace pgm::cli

@@ -20,6 +20,8 @@ struct learn_structure_arguments {
   std::string data;
   std::string test = "chi2";
   double alpha = 0.01;
+  std::string correction = "none";
+  double min_rows_per_cell = 0.0;
   std::size_t max_conditioning = 3;
   std::string tiers;
   std::string forbid;
@@ -40,6 +42,8 @@ void run_learn_structure(const learn_structure_arguments& args) {
   pc_options options;
   options.test = parse_ci_test(args.test);
   options.alpha = args.alpha;
+  options.correction = parse_continuity_correction(args.correction);
+  options.min_rows_per_cell = args.min_rows_per_cell;
   options.max_conditioning = args.max_conditioning;
   options.threads = args.threads;
   if (!args.tiers.empty()) options.knowledge.tiers = parse_tiers(args.tiers);
@@ -52,9 +56,14 @@ void run_learn_structure(const learn_structure_arguments& args) {
   const auto& graph = result.graph;
 
   std::ostringstream out;
-  out << "PC-stable on " << data.rows() << " rows, " << data.size() << " variables: " << result.tests
-      << " tests (" << to_string(options.test) << ", alpha " << detail::format_short(options.alpha)
-      << ", conditioning sets up to " << options.max_conditioning << ")\n";
+  out << "PC-stable on " << data.rows() << " rows, " << data.size() << " variables: " << result.tests << " tests ("
+      << to_string(options.test) << ", alpha " << detail::format_short(options.alpha) << ", conditioning sets up to "
+      << options.max_conditioning;
+  if (options.correction != continuity_correction::none) out << ", " << to_string(options.correction) << " correction";
+  if (options.min_rows_per_cell > 0) {
+    out << ", independent below " << detail::format_short(options.min_rows_per_cell) << " rows per cell";
+  }
+  out << ")\n";
   const auto directed = graph.directed_edges();
   const auto undirected = graph.undirected_edges();
   out << "directed edges (" << directed.size() << "):\n";
@@ -69,10 +78,14 @@ void run_learn_structure(const learn_structure_arguments& args) {
         out << "forbidden both ways by background knowledge\n";
         continue;
       }
-      out << "independent given " << format_set(graph, s.given) << " (" << to_string(options.test)
-          << " = " << detail::format_short(s.test.statistic, 5) << ", df = "
-          << detail::format_short(s.test.df) << ", p = " << detail::format_short(s.test.p_value, 4)
-          << ")\n";
+      if (s.test.too_few_rows) {
+        out << "independent given " << format_set(graph, s.given) << " (too few rows: " << s.test.rows << " < "
+            << detail::format_short(options.min_rows_per_cell) << " per cell)\n";
+        continue;
+      }
+      out << "independent given " << format_set(graph, s.given) << " (" << to_string(options.test) << " = "
+          << detail::format_short(s.test.statistic, 5) << ", df = " << detail::format_short(s.test.df)
+          << ", p = " << detail::format_short(s.test.p_value, 4) << ")\n";
     }
   }
   for (const auto& conflict : result.conflicts) note("orientation conflict: " + conflict);
@@ -87,6 +100,8 @@ void run_learn_structure(const learn_structure_arguments& args) {
   document["learned"] = {{"algorithm", "pc-stable"},
                          {"test", to_string(options.test)},
                          {"alpha", options.alpha},
+                         {"correction", to_string(options.correction)},
+                         {"min_rows_per_cell", options.min_rows_per_cell},
                          {"max_conditioning", options.max_conditioning},
                          {"rows", data.rows()},
                          {"undirected_in_cpdag", nlohmann::json::array()}};
@@ -97,13 +112,13 @@ void run_learn_structure(const learn_structure_arguments& args) {
   if (undirected.empty()) {
     std::cout << "every edge is oriented; the DAG is the CPDAG";
   } else {
-    std::cout << "extended the CPDAG to a DAG: " << undirected.size()
-              << " undirected edge(s) oriented" << (relaxed ? "" : " without adding a v-structure");
+    std::cout << "extended the CPDAG to a DAG: " << undirected.size() << " undirected edge(s) oriented"
+              << (relaxed ? "" : " without adding a v-structure");
   }
   std::cout << " -> " << args.out << '\n';
   if (relaxed > 0) {
-    note("the CPDAG has no extension without a new v-structure (orientation conflicts); " +
-         std::to_string(relaxed) + " node(s) were given new v-structures to make it a DAG");
+    note("the CPDAG has no extension without a new v-structure (orientation conflicts); " + std::to_string(relaxed) +
+         " node(s) were given new v-structures to make it a DAG");
   }
 }
 
@@ -111,16 +126,25 @@ void run_learn_structure(const learn_structure_arguments& args) {
 
 void add_learn_structure_command(CLI::App& app) {
   auto args = std::make_shared<learn_structure_arguments>();
-  auto* cmd = app.add_subcommand("learn-structure",
-                                 "Learn a causal structure from discrete data with PC-stable");
+  auto* cmd = app.add_subcommand("learn-structure", "Learn a causal structure from discrete data with PC-stable");
   cmd->add_option("--data", args->data,
                   std::string("CSV file of discrete data, one column per variable") + data_file_help)
       ->required();
   cmd->add_option("--test", args->test, "Independence test: chi2 (Pearson) or g2 (likelihood ratio)")
       ->check(CLI::IsMember({"chi2", "g2"}))
       ->capture_default_str();
-  cmd->add_option("--alpha", args->alpha, "Significance level, strictly between 0 and 1: an edge goes when a test has p > alpha")
+  cmd->add_option("--alpha", args->alpha,
+                  "Significance level, strictly between 0 and 1: an edge goes when a test has p > alpha")
       ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--correction", args->correction,
+                  "Continuity correction of 2x2 strata: none, or yates as pgmpy applies it")
+      ->check(CLI::IsMember({"none", "yates"}))
+      ->capture_default_str();
+  cmd->add_option("--min-rows-per-cell", args->min_rows_per_cell,
+                  "Declare independence, untested, when a test has fewer rows than K per cell of its table "
+                  "(5: bnlearn's rule; 0: always test)")
+      ->check(non_negative_number())
       ->capture_default_str();
   cmd->add_option("--max-cond", args->max_conditioning, "Largest conditioning set tried")
       ->check(whole_number(0, 64))

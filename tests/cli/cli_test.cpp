@@ -272,7 +272,7 @@ TEST_F(cli_test, learn_structure_help) {
   const auto r = run("learn-structure --help");
   EXPECT_EQ(r.code, 0);
   for (const char* option : {"--data", "--test", "--alpha", "--max-cond", "--tiers", "--forbid", "--require", "--threads",
-                             "--explain", "--out"}) {
+                             "--explain", "--out", "--correction", "--min-rows-per-cell"}) {
     EXPECT_THAT(r.out, HasSubstr(option));
   }
 }
@@ -298,6 +298,28 @@ TEST_F(cli_test, learn_structure_finds_the_parents_and_explains) {
   const auto f = run("fit --data " + data.string() + " --model " + path("m.json").string() + " --out " + path("f.bif").string());
   ASSERT_EQ(f.code, 0) << f.err;
   EXPECT_THAT(f.out, HasSubstr("fitted 4 tables"));
+}
+
+TEST_F(cli_test, learn_structure_peer_options) {
+  const auto data = file("d.csv", learnable_stacking());
+  // 3000 rows; the smallest table (colour, onTop1) has 6 cells: 600 rows per cell drops every edge.
+  const auto sparse = run("learn-structure --data " + data.string() + " --min-rows-per-cell 600 --explain --out " +
+                          path("s.json").string());
+  ASSERT_EQ(sparse.code, 0) << sparse.err;
+  EXPECT_THAT(sparse.out, HasSubstr("independent below 600 rows per cell"));
+  EXPECT_THAT(sparse.out, HasSubstr("directed edges (0)"));
+  EXPECT_THAT(sparse.out, HasSubstr("no xOff1 - onTop1: independent given {} (too few rows: 3000 < 600 per cell)"));
+  EXPECT_EQ(read_model_json(path("s.json")).structure.edges().size(), 0u);
+  const auto yates = run("learn-structure --data " + data.string() + " --correction yates --out " + path("y.json").string());
+  ASSERT_EQ(yates.code, 0) << yates.err;
+  EXPECT_THAT(yates.out, HasSubstr(", yates correction)"));
+  EXPECT_THAT(yates.out, HasSubstr("directed edges (2):\n  xOff1 -> onTop1\n  yOff1 -> onTop1\n"));
+  const auto out = path("e.json");
+  const auto bad = run("learn-structure --data " + data.string() + " --correction williams --out " + out.string());
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_THAT(bad.err, HasSubstr("--correction"));
+  expect_failure("learn-structure --data " + data.string() + " --min-rows-per-cell -1 --out " + out.string(),
+                 "--min-rows-per-cell", out);
 }
 
 TEST_F(cli_test, learn_structure_extends_undirected_edges) {

@@ -48,6 +48,21 @@ TEST(predict_test, numbers_are_binned_with_the_saved_edges) {
   EXPECT_DOUBLE_EQ(predict_success(net, s, {{"x", -2.0}, {"y", std::string("1")}}), 0.3);
 }
 
+TEST(predict_test, a_rounded_column_is_normalized_as_inference_would) {
+  // Published tables are printed to a few digits: this column sums to 1 + 8e-7, inside the
+  // tolerance a table is read with, so the stored entry is not the conditional probability.
+  const variable a("a", {"0", "1"});
+  const variable ok("ok", {"0", "1"});
+  const auto net = bayesian_network::from_tables(
+      {cpt<double>(a, {}, {0.5, 0.5}), cpt<double>(ok, {a}, {0.5, 0.5, 0.2000004, 0.8000004})});
+  const success_event s{"ok", "1"};
+  const double normalized = 0.8000004 / 1.0000008;
+  const double p = predict_success(net, s, parse_assignment("a=1", net));
+  EXPECT_DOUBLE_EQ(p, normalized);
+  EXPECT_GT(0.8000004 - p, 6e-7);  // not the stored entry (which is 6.4e-7 higher)
+  EXPECT_NEAR(p, query(net, {"ok"}, {{"a", "1"}}).probability({"1"}), 1e-15);
+}
+
 TEST(predict_test, default_success_event_is_the_unique_sink_with_state_1) {
   EXPECT_EQ(default_success_event(stacking()), (success_event{"onTop", "1"}));
   const variable a("a", {"0", "1"});

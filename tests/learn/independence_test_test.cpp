@@ -1,6 +1,8 @@
 // Chi-square and G² tests: hand-computed statistics, the empty-cell rule for degrees of
 // freedom, p-values against closed forms (df 1 and 2), and the tests on sampled data.
 
+#include "pgm/learn/independence_test.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -10,7 +12,6 @@
 #include <vector>
 
 #include "pgm/inference/sampling.hpp"
-#include "pgm/learn/independence_test.hpp"
 
 namespace pgm {
 namespace {
@@ -40,8 +41,8 @@ TEST(independence_test, two_by_two_by_hand) {
   // df 1: P(χ² ≥ s) = erfc(sqrt(s / 2)).
   EXPECT_NEAR(chi.p_value, std::erfc(std::sqrt(chi.statistic / 2)), 1e-12);
   // G² = 2 Σ O ln(O/E) with E = 12, 18, 28, 42.
-  const double g2 = 2 * (10 * std::log(10.0 / 12) + 20 * std::log(20.0 / 18) + 30 * std::log(30.0 / 28) +
-                         40 * std::log(40.0 / 42));
+  const double g2 =
+      2 * (10 * std::log(10.0 / 12) + 20 * std::log(20.0 / 18) + 30 * std::log(30.0 / 28) + 40 * std::log(40.0 / 42));
   const auto g = test_independence(counts, 2, 2, ci_test::g_squared);
   EXPECT_NEAR(g.statistic, g2, 1e-12);
   EXPECT_NEAR(g.statistic, 0.8043486460964835, 1e-12);
@@ -136,14 +137,69 @@ TEST(independence_test, bad_shapes_and_names) {
   }
 }
 
+TEST(independence_test, yates_moves_each_count_half_a_unit_toward_its_expectation) {
+  // O = [[10, 20], [30, 40]], E = [[12, 18], [28, 42]]: the corrected counts are 10.5, 19.5,
+  // 29.5 and 40.5, and X² = n (|ad − bc| − n/2)² / (r1 r2 c1 c2) = 100·150²/(30·70·40·60).
+  const auto counts = stack({{{10, 20}, {30, 40}}});
+  const ci_test_options yates{.correction = continuity_correction::yates};
+  const auto chi = test_independence(counts, 2, 2, yates);
+  EXPECT_NEAR(chi.statistic, 100.0 * 150 * 150 / (30.0 * 70 * 40 * 60), 1e-12);
+  EXPECT_EQ(chi.df, 1.0);
+  EXPECT_NEAR(chi.p_value, std::erfc(std::sqrt(chi.statistic / 2)), 1e-12);
+  const auto g =
+      test_independence(counts, 2, 2, {.test = ci_test::g_squared, .correction = continuity_correction::yates});
+  const double corrected_g = 2 * (10.5 * std::log(10.5 / 12) + 19.5 * std::log(19.5 / 18) + 29.5 * std::log(29.5 / 28) +
+                                  40.5 * std::log(40.5 / 42));
+  EXPECT_NEAR(g.statistic, corrected_g, 1e-12);
+  // A count within half a unit of its expectation moves onto it, not past it: 10.25 expected.
+  const auto close = test_independence(stack({{{10, 31}, {30, 90}}}), 2, 2, yates);
+  const double e00 = 41.0 * 40 / 161;
+  EXPECT_LT(std::abs(e00 - 10), 0.5);
+  EXPECT_NEAR(close.statistic, 0.0, 1e-12);
+}
+
+TEST(independence_test, yates_corrects_only_strata_with_one_degree_of_freedom) {
+  // Stratum 1 has two x states and two y states seen (df 1), stratum 2 three x states (df 2).
+  const std::vector<std::vector<std::vector<std::uint64_t>>> one{{{10, 20}, {30, 40}, {0, 0}}};
+  const std::vector<std::vector<std::vector<std::uint64_t>>> two{{{4, 9}, {7, 8}, {12, 3}}};
+  const ci_test_options yates{.correction = continuity_correction::yates};
+  const auto both = test_independence(stack({one[0], two[0]}), 3, 2, yates);
+  const auto first = test_independence(stack(one), 3, 2, yates);
+  const auto second_plain = test_independence(stack(two), 3, 2, ci_test::chi_square);
+  EXPECT_NEAR(first.statistic, 100.0 * 150 * 150 / (30.0 * 70 * 40 * 60), 1e-12);
+  EXPECT_EQ(test_independence(stack(two), 3, 2, yates), second_plain);
+  EXPECT_NEAR(both.statistic, first.statistic + second_plain.statistic, 1e-12);
+  EXPECT_EQ(both.df, 3.0);
+  EXPECT_EQ(to_string(continuity_correction::yates), "yates");
+  EXPECT_EQ(parse_continuity_correction("none"), continuity_correction::none);
+  EXPECT_THAT([] { static_cast<void>(parse_continuity_correction("williams")); },
+              ::testing::ThrowsMessage<model_error>(
+                  HasSubstr("unknown continuity correction 'williams' (known: none, yates)")));
+}
+
+TEST(independence_test, too_few_rows_per_cell_declares_independence) {
+  // 100 rows in a 2 x 2 table of 2 strata (8 cells, one stratum empty): 12.5 rows per cell.
+  const auto counts = stack({{{10, 40}, {40, 10}}, {{0, 0}, {0, 0}}});
+  const auto tested = test_independence(counts, 2, 2, {.min_rows_per_cell = 12.5});
+  EXPECT_FALSE(tested.too_few_rows);
+  EXPECT_LT(tested.p_value, 1e-6);
+  const auto sparse = test_independence(counts, 2, 2, {.min_rows_per_cell = 12.51});
+  EXPECT_TRUE(sparse.too_few_rows);
+  EXPECT_EQ(sparse.p_value, 1.0);
+  EXPECT_EQ(sparse.statistic, tested.statistic);  // the statistic is still reported
+  EXPECT_TRUE(sparse.independent(0.05));
+  EXPECT_THAT([&] { static_cast<void>(test_independence(counts, 2, 2, {.min_rows_per_cell = -1})); },
+              ::testing::ThrowsMessage<model_error>(
+                  HasSubstr("the minimum rows per cell must be a finite number >= 0, got -1")));
+}
+
 // a -> b -> c with strong tables.
 bayesian_network chain() {
   const variable a("a", {"0", "1", "2"});
   const variable b("b", {"0", "1"});
   const variable c("c", {"0", "1", "2"});
   network_structure s({a, b, c}, {{"a", "b"}, {"b", "c"}});
-  return bayesian_network(s, {cpt<double>(a, {}, {0.3, 0.3, 0.4}),
-                              cpt<double>(b, {a}, {0.9, 0.1, 0.5, 0.5, 0.1, 0.9}),
+  return bayesian_network(s, {cpt<double>(a, {}, {0.3, 0.3, 0.4}), cpt<double>(b, {a}, {0.9, 0.1, 0.5, 0.5, 0.1, 0.9}),
                               cpt<double>(c, {b}, {0.7, 0.2, 0.1, 0.1, 0.2, 0.7})});
 }
 

@@ -192,10 +192,33 @@ TEST(pc_test, tiers_forbidden_and_required) {
   }
 }
 
+TEST(pc_test, peer_options_reach_every_test) {
+  // A chain of 3-state variables from 300 rows: every table has at least 9 cells, so asking
+  // for 40 rows per cell declares every pair independent untested; Yates changes the
+  // statistics (never on these 3 x 3 tables, which have df 4) but not the skeleton.
+  const auto net = network({"a", "b", "c"}, {{"a", "b"}, {"b", "c"}});
+  const auto data = sample(net, 300, 3);
+  const auto plain = learn(data);
+  EXPECT_EQ(plain.graph.undirected_edges().size(), 2u);
+  const auto sparse = learn(data, {.min_rows_per_cell = 40});
+  EXPECT_TRUE(sparse.graph.undirected_edges().empty());
+  ASSERT_EQ(sparse.removed.size(), 3u);
+  for (const auto& s : sparse.removed) {
+    EXPECT_TRUE(s.test.too_few_rows);
+    EXPECT_TRUE(s.given.empty());
+  }
+  const auto yates = learn(data, {.correction = continuity_correction::yates});
+  EXPECT_EQ(yates.graph, plain.graph);
+  ASSERT_EQ(yates.removed.size(), plain.removed.size());
+  EXPECT_EQ(yates.removed[0].test, plain.removed[0].test);
+}
+
 TEST(pc_test, bad_options) {
   const auto data = sample(network({"a", "b"}, {{"a", "b"}}), 100, 1);
   EXPECT_THROW(static_cast<void>(learn(data, {.alpha = 0.0})), model_error);
   EXPECT_THROW(static_cast<void>(learn(data, {.alpha = 1.5})), model_error);
+  EXPECT_THAT([&] { static_cast<void>(learn(data, {.min_rows_per_cell = -2})); },
+              ::testing::ThrowsMessage<model_error>(::testing::HasSubstr("minimum rows per cell")));
   dataset mixed = data;
   mixed.add(continuous_column("x", std::vector<double>(100, 1.0)));
   EXPECT_THROW(static_cast<void>(learn(mixed)), data_error);

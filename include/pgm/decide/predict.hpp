@@ -2,7 +2,7 @@
 /// \file
 /// Success prediction: the probability that the task succeeds (the success variable takes its
 /// success state) for a planned assignment. With every parent of the success variable assigned
-/// it is one lookup in the node's table; otherwise — by request only, since a forgotten value
+/// it is one lookup in the node's table, normalized by its column; otherwise — by request only, since a forgotten value
 /// should not pass silently — the unassigned variables are summed out by variable elimination.
 
 #include <algorithm>
@@ -117,7 +117,12 @@ namespace detail {
     const auto& table = network.table(target);
     std::vector<std::size_t> codes;
     for (const auto& parent : table.parents()) codes.push_back(state_of(parent, planned.find(parent.name())->second).value());
-    return table(state, table.configuration(codes));
+    // The column as stored may miss 1 by rounding (published tables are printed to a few
+    // digits); the answer is the normalized entry, as variable elimination would give it.
+    const auto column = table.configuration(codes);
+    double sum = 0.0;
+    for (std::size_t s = 0; s < table.child().cardinality(); ++s) sum += table(state_index(s), column);
+    return table(state, column) / sum;
   }
   const variable_id query_ids[] = {target};
   auto joint = joint_with_evidence(network, query_ids, observed, options.heuristic);

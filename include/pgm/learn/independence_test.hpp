@@ -9,10 +9,15 @@
 /// contribute nothing. Without the adjustment a sparse table has far too many degrees of
 /// freedom and every test looks like independence. A test with 0 degrees of freedom has
 /// p = 1: the data cannot show a dependence.
-
-#include <boost/math/distributions/chi_squared.hpp>
+///
+/// Two options reproduce the peers (docs/structure-learning.md says how each differs): Yates'
+/// continuity correction of every stratum with one degree of freedom (pgmpy, through scipy's
+/// chi2_contingency), and a minimum number of rows per cell below which a test declares
+/// independence without looking at the statistic (bnlearn's rule for sparse tables). Neither
+/// is on by default.
 
 #include <algorithm>
+#include <boost/math/distributions/chi_squared.hpp>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -24,6 +29,7 @@
 
 #include "pgm/core/error.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/detail/text.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
@@ -46,6 +52,36 @@ enum class ci_test {
   throw model_error("unknown independence test '" + std::string(text) + "' (known: chi2, g2)");
 }
 
+/// A continuity correction of the 2 x 2 strata (one degree of freedom).
+enum class continuity_correction {
+  none,
+  /// Yates: each count moves half a unit toward its expected value (never past it), as scipy's
+  /// chi2_contingency does by default, for chi-square and G² alike.
+  yates,
+};
+
+/// "none" or "yates", as the command line spells them.
+[[nodiscard]] inline std::string_view to_string(continuity_correction correction) noexcept {
+  return correction == continuity_correction::yates ? "yates" : "none";
+}
+
+/// Parses "none" or "yates"; throws model_error otherwise.
+[[nodiscard]] inline continuity_correction parse_continuity_correction(std::string_view text) {
+  if (text == "none") return continuity_correction::none;
+  if (text == "yates") return continuity_correction::yates;
+  throw model_error("unknown continuity correction '" + std::string(text) + "' (known: none, yates)");
+}
+
+/// How a test is computed and when it gives up on a sparse table.
+struct ci_test_options {
+  ci_test test = ci_test::chi_square;
+  continuity_correction correction = continuity_correction::none;
+  /// A test counting fewer rows than this many per cell of its whole table (|X|·|Y|·|Z|
+  /// cells) declares independence (p = 1, `too_few_rows` set); 0 never does.
+  double min_rows_per_cell = 0.0;
+  friend bool operator==(const ci_test_options&, const ci_test_options&) = default;
+};
+
 /// The outcome of one test.
 struct ci_result {
   double statistic = 0.0;
@@ -54,6 +90,8 @@ struct ci_result {
   double p_value = 1.0;
   /// Rows the table counted.
   std::uint64_t rows = 0;
+  /// Fewer rows than ci_test_options::min_rows_per_cell asks for: p was set to 1.
+  bool too_few_rows = false;
 
   /// X ⟂ Y | Z is accepted when p > alpha (bnlearn's rule).
   [[nodiscard]] bool independent(double alpha) const noexcept { return p_value > alpha; }
@@ -71,14 +109,16 @@ struct ci_result {
 /// The test on a three-way table laid out X fastest, then Y, then the stratum of Z:
 /// `counts[(z · y_states + y) · x_states + x]`. counts.size() must be a multiple of
 /// x_states · y_states (one stratum when Z is empty).
-[[nodiscard]] inline ci_result test_independence(std::span<const std::uint64_t> counts,
-                                                 std::size_t x_states, std::size_t y_states,
-                                                 ci_test test) {
+[[nodiscard]] inline ci_result test_independence(std::span<const std::uint64_t> counts, std::size_t x_states,
+                                                 std::size_t y_states, const ci_test_options& options) {
+  if (!(options.min_rows_per_cell >= 0.0) || !std::isfinite(options.min_rows_per_cell)) {
+    throw model_error("the minimum rows per cell must be a finite number >= 0, got " +
+                      detail::format_short(options.min_rows_per_cell));
+  }
   const std::size_t cells = x_states * y_states;
   if (cells == 0 || counts.size() % cells != 0) {
-    throw model_error("a contingency table of " + std::to_string(counts.size()) +
-                      " cells is not a stack of " + std::to_string(x_states) + " x " +
-                      std::to_string(y_states) + " tables");
+    throw model_error("a contingency table of " + std::to_string(counts.size()) + " cells is not a stack of " +
+                      std::to_string(x_states) + " x " + std::to_string(y_states) + " tables");
   }
   ci_result result;
   std::vector<std::uint64_t> x_margin(x_states);
@@ -102,7 +142,9 @@ struct ci_result {
     std::size_t y_seen = 0;
     for (auto m : x_margin) x_seen += m > 0;
     for (auto m : y_margin) y_seen += m > 0;
-    result.df += static_cast<double>((x_seen - 1) * (y_seen - 1));
+    const auto stratum_df = (x_seen - 1) * (y_seen - 1);
+    result.df += static_cast<double>(stratum_df);
+    const bool yates = options.correction == continuity_correction::yates && stratum_df == 1;
     const double total = static_cast<double>(n);
     for (std::size_t y = 0; y < y_states; ++y) {
       if (y_margin[y] == 0) continue;
@@ -110,8 +152,12 @@ struct ci_result {
       for (std::size_t x = 0; x < x_states; ++x) {
         if (x_margin[x] == 0) continue;
         const double expected = static_cast<double>(x_margin[x]) * y_share;
-        const double observed = static_cast<double>(table[y * x_states + x]);
-        if (test == ci_test::chi_square) {
+        double observed = static_cast<double>(table[y * x_states + x]);
+        if (yates) {
+          const double gap = expected - observed;
+          observed += std::copysign(std::min(0.5, std::abs(gap)), gap);
+        }
+        if (options.test == ci_test::chi_square) {
           const double d = observed - expected;
           result.statistic += d * d / expected;
         } else if (observed > 0) {
@@ -123,7 +169,17 @@ struct ci_result {
   // Rounding can leave a tiny negative G² for a perfectly independent table.
   if (result.statistic < 0.0) result.statistic = 0.0;
   result.p_value = chi_square_p_value(result.statistic, result.df);
+  if (static_cast<double>(result.rows) < options.min_rows_per_cell * static_cast<double>(counts.size())) {
+    result.too_few_rows = true;
+    result.p_value = 1.0;
+  }
   return result;
+}
+
+/// The test without correction or minimum rows.
+[[nodiscard]] inline ci_result test_independence(std::span<const std::uint64_t> counts, std::size_t x_states,
+                                                 std::size_t y_states, ci_test test) {
+  return test_independence(counts, x_states, y_states, ci_test_options{.test = test});
 }
 
 namespace detail {
@@ -135,22 +191,21 @@ namespace detail {
 /// the same.
 /// Throws model_error if the table has 2^32 cells or more.
 inline void count_ci_table(const discrete_column& x, const discrete_column& y,
-                           std::span<const discrete_column* const> given,
-                           std::vector<std::uint64_t>& counts, unsigned threads = 1) {
+                           std::span<const discrete_column* const> given, std::vector<std::uint64_t>& counts,
+                           unsigned threads = 1) {
   std::vector<const code_vector*> columns{&x.codes()};
   std::vector<std::uint32_t> strides{1};
   std::size_t stride = x.var().cardinality();
   const auto limit = static_cast<std::size_t>(std::numeric_limits<std::uint32_t>::max());
   auto add = [&](const discrete_column& c) {
     if (c.size() != x.size()) {
-      throw data_error("column '" + c.name() + "' has " + std::to_string(c.size()) + " rows, '" +
-                       x.name() + "' " + std::to_string(x.size()));
+      throw data_error("column '" + c.name() + "' has " + std::to_string(c.size()) + " rows, '" + x.name() + "' " +
+                       std::to_string(x.size()));
     }
     columns.push_back(&c.codes());
     strides.push_back(static_cast<std::uint32_t>(stride));
     if (stride > limit / c.var().cardinality()) {
-      throw model_error("the test of '" + x.name() + "' and '" + y.name() + "' given " +
-                        std::to_string(given.size()) +
+      throw model_error("the test of '" + x.name() + "' and '" + y.name() + "' given " + std::to_string(given.size()) +
                         " variables needs a table of 2^32 cells or more; lower the largest "
                         "conditioning set");
     }
@@ -166,23 +221,31 @@ inline void count_ci_table(const discrete_column& x, const discrete_column& y,
 }  // namespace detail
 
 /// X ⟂ Y | given, counted over all rows of the columns.
-[[nodiscard]] inline ci_result test_independence(const discrete_column& x,
-                                                 const discrete_column& y,
+[[nodiscard]] inline ci_result test_independence(const discrete_column& x, const discrete_column& y,
                                                  std::span<const discrete_column* const> given,
-                                                 ci_test test) {
+                                                 const ci_test_options& options) {
   std::vector<std::uint64_t> counts;
   detail::count_ci_table(x, y, given, counts);
-  return test_independence(counts, x.var().cardinality(), y.var().cardinality(), test);
+  return test_independence(counts, x.var().cardinality(), y.var().cardinality(), options);
 }
 
 /// X ⟂ Y | given by column names. Throws data_error for a missing or continuous column.
-[[nodiscard]] inline ci_result test_independence(const dataset& data, std::string_view x,
-                                                 std::string_view y,
-                                                 std::span<const std::string> given,
-                                                 ci_test test) {
+[[nodiscard]] inline ci_result test_independence(const dataset& data, std::string_view x, std::string_view y,
+                                                 std::span<const std::string> given, const ci_test_options& options) {
   std::vector<const discrete_column*> given_columns;
   for (const auto& name : given) given_columns.push_back(&data.discrete(name));
-  return test_independence(data.discrete(x), data.discrete(y), given_columns, test);
+  return test_independence(data.discrete(x), data.discrete(y), given_columns, options);
+}
+
+/// The same without correction or minimum rows.
+[[nodiscard]] inline ci_result test_independence(const discrete_column& x, const discrete_column& y,
+                                                 std::span<const discrete_column* const> given, ci_test test) {
+  return test_independence(x, y, given, ci_test_options{.test = test});
+}
+
+[[nodiscard]] inline ci_result test_independence(const dataset& data, std::string_view x, std::string_view y,
+                                                 std::span<const std::string> given, ci_test test) {
+  return test_independence(data, x, y, given, ci_test_options{.test = test});
 }
 
 }  // namespace pgm

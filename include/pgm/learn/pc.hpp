@@ -15,6 +15,7 @@
 /// tasks than threads lends the idle threads to the counting within each test.
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -35,6 +36,11 @@ namespace pgm {
 
 struct pc_options {
   ci_test test = ci_test::chi_square;
+  /// Yates' correction of 2 x 2 strata, as pgmpy applies it (off by default).
+  continuity_correction correction = continuity_correction::none;
+  /// Independence without a test below this many rows per cell, as bnlearn decides sparse
+  /// tables (0, the default: always test).
+  double min_rows_per_cell = 0.0;
   /// Significance level: an edge is removed when some test has p > alpha.
   double alpha = 0.01;
   /// The largest conditioning set tried.
@@ -107,13 +113,11 @@ class skeleton_worker {
  public:
   /// `count_threads` > 1 splits each test's counting over that many threads, for levels
   /// with fewer tasks than threads.
-  skeleton_worker(std::span<const discrete_column* const> columns, const pc_options& options,
-                  unsigned count_threads)
+  skeleton_worker(std::span<const discrete_column* const> columns, const pc_options& options, unsigned count_threads)
       : columns_(columns), options_(options), count_threads_(count_threads), tried_(columns.size(), 0) {}
 
   /// Tests x - y at `level` against the frozen adjacency `around`.
-  edge_outcome run(const edge_task& task, std::size_t level,
-                   const std::vector<std::vector<std::size_t>>& around) {
+  edge_outcome run(const edge_task& task, std::size_t level, const std::vector<std::vector<std::size_t>>& around) {
     edge_outcome outcome;
     const auto from_x = others(around[task.x], task.y);
     const auto from_y = others(around[task.y], task.x);
@@ -149,8 +153,9 @@ class skeleton_worker {
       given_.clear();
       for (auto i : pick) given_.push_back(columns_[candidates[i]]);
       count_ci_table(*columns_[task.x], *columns_[task.y], given_, counts_, count_threads_);
-      const auto result = test_independence(counts_, columns_[task.x]->var().cardinality(),
-                                            columns_[task.y]->var().cardinality(), options_.test);
+      const auto result =
+          test_independence(counts_, columns_[task.x]->var().cardinality(), columns_[task.y]->var().cardinality(),
+                            {options_.test, options_.correction, options_.min_rows_per_cell});
       ++outcome.tests;
       if (result.independent(options_.alpha)) {
         outcome.removed = true;
@@ -172,8 +177,11 @@ class skeleton_worker {
 
 inline void check_pc_options(const pc_options& options) {
   if (!(options.alpha > 0.0 && options.alpha < 1.0)) {
-    throw model_error("alpha must lie strictly between 0 and 1, got " +
-                      detail::format_short(options.alpha));
+    throw model_error("alpha must lie strictly between 0 and 1, got " + detail::format_short(options.alpha));
+  }
+  if (!(options.min_rows_per_cell >= 0.0) || !std::isfinite(options.min_rows_per_cell)) {
+    throw model_error("the minimum rows per cell must be a finite number >= 0, got " +
+                      detail::format_short(options.min_rows_per_cell));
   }
 }
 
@@ -181,8 +189,7 @@ inline void check_pc_options(const pc_options& options) {
 
 /// The PC-stable skeleton over `columns` (node i is columns[i]).
 [[nodiscard]] inline skeleton_result pc_skeleton(std::span<const discrete_column* const> columns,
-                                                 const edge_constraints& constraints,
-                                                 const pc_options& options) {
+                                                 const edge_constraints& constraints, const pc_options& options) {
   detail::check_pc_options(options);
   const std::size_t n = columns.size();
   std::vector<std::string> names;
@@ -248,9 +255,7 @@ inline void check_pc_options(const pc_options& options) {
     }
   }
   std::sort(result.removed.begin(), result.removed.end(),
-            [](const separation& a, const separation& b) {
-              return a.x < b.x || (a.x == b.x && a.y < b.y);
-            });
+            [](const separation& a, const separation& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   return result;
 }
 
@@ -262,8 +267,8 @@ inline void check_pc_options(const pc_options& options) {
   for (const auto* c : columns) names.push_back(c->name());
   const edge_constraints constraints(options.knowledge, names);
   auto skeleton = pc_skeleton(columns, constraints, options);
-  pc_result result{std::move(skeleton.graph), std::move(skeleton.sepsets),
-                   std::move(skeleton.removed), skeleton.tests, {}};
+  pc_result result{
+      std::move(skeleton.graph), std::move(skeleton.sepsets), std::move(skeleton.removed), skeleton.tests, {}};
   orient_by_knowledge(result.graph, constraints);
   orient_v_structures(result.graph, result.sepsets, result.conflicts);
   apply_meek_rules(result.graph, result.conflicts);
