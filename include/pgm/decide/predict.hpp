@@ -121,7 +121,7 @@ namespace detail {
     // digits); the answer is the normalized entry, as variable elimination would give it.
     const auto column = table.configuration(codes);
     double sum = 0.0;
-    for (std::size_t s = 0; s < table.child().cardinality(); ++s) sum += table(state_index(s), column);
+    for (std::size_t s = 0; s < table.child().cardinality(); ++s) sum += table(state_index(static_cast<state_index::rep>(s)), column);
     return table(state, column) / sum;
   }
   const variable_id query_ids[] = {target};
