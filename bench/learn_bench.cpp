@@ -88,7 +88,11 @@ void sizes(benchmark::internal::Benchmark* b) {
 }
 
 BENCHMARK(count_625)->Apply(sizes);
-BENCHMARK(count_625_naive_map)->Args({10'000, 1})->Args({100'000, 1})->Args({1'000'000, 1})->ArgNames({"rows", "threads"});
+BENCHMARK(count_625_naive_map)
+    ->Args({10'000, 1})
+    ->Args({100'000, 1})
+    ->Args({1'000'000, 1})
+    ->ArgNames({"rows", "threads"});
 BENCHMARK(fit_625_bdeu)->Apply(sizes);
 
 }  // namespace

@@ -64,9 +64,10 @@ void ground_truth_625(benchmark::State& state) {
       for (int b = 0; b < 5; ++b)
         for (int c = 0; c < 5; ++c)
           for (int d = 0; d < 5; ++d)
-            sum += pgm::sim::analytic_success_probability(
-                t, {{"xOff1", {e[a], e[a + 1]}}, {"yOff1", {e[b], e[b + 1]}}, {"xOff2", {e[c], e[c + 1]}},
-                    {"yOff2", {e[d], e[d + 1]}}});
+            sum += pgm::sim::analytic_success_probability(t, {{"xOff1", {e[a], e[a + 1]}},
+                                                              {"yOff1", {e[b], e[b + 1]}},
+                                                              {"xOff2", {e[c], e[c + 1]}},
+                                                              {"yOff2", {e[d], e[d + 1]}}});
   }
   benchmark::DoNotOptimize(sum);
   state.SetItemsProcessed(state.iterations() * 625);

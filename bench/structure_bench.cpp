@@ -15,8 +15,8 @@
 namespace {
 
 const pgm::bayesian_network& network() {
-  static const auto net = pgm::testing::random_network(
-      12, {.nodes = 12, .max_parents = 3, .min_states = 5, .max_states = 5});
+  static const auto net =
+      pgm::testing::random_network(12, {.nodes = 12, .max_parents = 3, .min_states = 5, .max_states = 5});
   return net;
 }
 

@@ -92,10 +92,11 @@ void fit_with_transferred_prior(benchmark::State& state) {
   std::vector<unsigned> outcome(rows);
   for (auto& c : outcome) c = static_cast<unsigned>(random() & 1U);
   data.add(discrete_column(on2, outcome));
-  const network_structure structure({s.x1, s.y1, s.x2, s.y2, on2},
-                                    {{"xOff1", "onTop2"}, {"yOff1", "onTop2"}, {"xOff2", "onTop2"}, {"yOff2", "onTop2"}});
-  const auto prior_net = bayesian_network::from_tables(
-      {cpt<double>(s.x1, {}, std::vector<double>(5, 0.2)), cpt<double>(s.y1, {}, std::vector<double>(5, 0.2)), s.prior});
+  const network_structure structure(
+      {s.x1, s.y1, s.x2, s.y2, on2},
+      {{"xOff1", "onTop2"}, {"yOff1", "onTop2"}, {"xOff2", "onTop2"}, {"yOff2", "onTop2"}});
+  const auto prior_net = bayesian_network::from_tables({cpt<double>(s.x1, {}, std::vector<double>(5, 0.2)),
+                                                        cpt<double>(s.y1, {}, std::vector<double>(5, 0.2)), s.prior});
   for (auto _ : state) {
     fit_options options;
     options.counting.threads = static_cast<unsigned>(state.range(1));
@@ -107,6 +108,10 @@ void fit_with_transferred_prior(benchmark::State& state) {
   state.counters["ns/row"] = benchmark::Counter(static_cast<double>(state.iterations() * rows),
                                                 benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
-BENCHMARK(fit_with_transferred_prior)->Args({1'000'000, 1})->Args({1'000'000, 2})->ArgNames({"rows", "threads"})->UseRealTime();
+BENCHMARK(fit_with_transferred_prior)
+    ->Args({1'000'000, 1})
+    ->Args({1'000'000, 2})
+    ->ArgNames({"rows", "threads"})
+    ->UseRealTime();
 
 }  // namespace

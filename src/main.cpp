@@ -2,18 +2,16 @@
 // library and prints. Errors in the input end the program with one line on stderr and exit
 // code 1; usage errors with code 2.
 
+#include <CLI/CLI.hpp>
 #include <exception>
 #include <iostream>
 #include <new>
-
-#include <CLI/CLI.hpp>
 
 #include "cli/common.hpp"
 #include "pgm/core/error.hpp"
 
 int main(int argc, char** argv) {
-  CLI::App app{"pgm: causal Bayesian networks for robot tasks, with priors transferred between tasks",
-               "pgm"};
+  CLI::App app{"pgm: causal Bayesian networks for robot tasks, with priors transferred between tasks", "pgm"};
   app.require_subcommand(1, 1);
   app.set_version_flag("--version", "pgm 0.1.0");
   pgm::cli::add_discretize_command(app);

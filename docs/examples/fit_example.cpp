@@ -1,8 +1,7 @@
 // The README's library example: fit a network from a discretized CSV and save it as BIF.
 // Usage: fit_example trials.csv fitted.bif
-#include <pgm/pgm.hpp>
-
 #include <iostream>
+#include <pgm/pgm.hpp>
 
 int main(int argc, char** argv) {
   if (argc != 3) {

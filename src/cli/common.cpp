@@ -1,11 +1,10 @@
 #include "cli/common.hpp"
 
+#include <unistd.h>
+
 #include <charconv>
 #include <cmath>
-
 #include <iostream>
-
-#include <unistd.h>
 
 #include "pgm/core/error.hpp"
 #include "pgm/data/csv.hpp"

@@ -2,14 +2,13 @@
 // Helpers shared by the commands of the `pgm` program. The program is thin: commands parse
 // their arguments, call the library and print; nothing here computes.
 
+#include <CLI/CLI.hpp>
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <CLI/CLI.hpp>
 
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/csv_counts.hpp"

@@ -18,7 +18,8 @@ void add_transfer_options(CLI::App& command, transfer_arguments& args, bool with
                      "Correspondences, target left: \"onTop2=onTop1,xOff2~xOff1,yOff2~yOff1\" (= transferred node, "
                      "~ related, == identical, P@v pins the prior's P to value v, P@* marginalizes it), or auto");
   if (with_weight) {
-    command.add_option("--w-prior", args.w_prior, "Prior weight w of eq. 8 (≥ 0), or auto (highest marginal likelihood)")
+    command
+        .add_option("--w-prior", args.w_prior, "Prior weight w of eq. 8 (≥ 0), or auto (highest marginal likelihood)")
         ->capture_default_str();
   }
   command.add_option("--success", args.success, "The success state of the transferred node (Minimal-Replacement)")
@@ -46,10 +47,12 @@ transfer_settings settings_of(const transfer_arguments& args) {
 }
 
 void require_map(const transfer_arguments& args) {
-  if (args.map.empty()) throw error("--prior-model needs --map, e.g. --map \"onTop2=onTop1,xOff2~xOff1\" or --map auto");
+  if (args.map.empty())
+    throw error("--prior-model needs --map, e.g. --map \"onTop2=onTop1,xOff2~xOff1\" or --map auto");
 }
 
-correspondence resolve_map(const transfer_arguments& args, const bayesian_network& prior, const network_structure& target) {
+correspondence resolve_map(const transfer_arguments& args, const bayesian_network& prior,
+                           const network_structure& target) {
   require_map(args);
   const auto map = resolve_correspondence(args.map, prior, target);
   if (args.map == "auto") note("--map auto: " + to_string(map));

@@ -2,10 +2,9 @@
 // The options `pgm fit` and `pgm transfer` share for a transferred prior, and turning them
 // into priors for a target structure.
 
+#include <CLI/CLI.hpp>
 #include <map>
 #include <string>
-
-#include <CLI/CLI.hpp>
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/network_structure.hpp"
@@ -35,7 +34,8 @@ transfer_settings settings_of(const transfer_arguments& args);
 void require_map(const transfer_arguments& args);
 
 /// The map of --map: parsed, or proposed from the two networks with `auto` (printed).
-correspondence resolve_map(const transfer_arguments& args, const bayesian_network& prior, const network_structure& target);
+correspondence resolve_map(const transfer_arguments& args, const bayesian_network& prior,
+                           const network_structure& target);
 
 /// The transferred prior of every `target=prior` pair, by the named strategy.
 std::map<std::string, transferred_prior, std::less<>> resolve_priors(const transfer_arguments& args,

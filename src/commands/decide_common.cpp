@@ -33,7 +33,8 @@ assignment read_assignment(const std::string& text, const bayesian_network& netw
     if (!number || !v.has_intervals()) continue;
     if (*number < v.edges().front() || *number > v.edges().back()) {
       note(name + " = " + with_unit(v, *number) + " lies outside the range the model was fitted on [" +
-           with_unit(v, v.edges().front()) + ", " + with_unit(v, v.edges().back()) + "]; it counts as the outer interval");
+           with_unit(v, v.edges().front()) + ", " + with_unit(v, v.edges().back()) +
+           "]; it counts as the outer interval");
     }
   }
   return planned;

@@ -2,9 +2,8 @@
 // Shared by `pgm predict` and `pgm prevent`: reading the model with its success event and
 // describing states for people.
 
-#include <string>
-
 #include <CLI/CLI.hpp>
+#include <string>
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/decide/assignment.hpp"

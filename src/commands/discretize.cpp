@@ -82,12 +82,12 @@ void run_discretize(const discretize_arguments& args) {
   for (const auto& [name, v] : fitted) {
     std::cout << name << ": " << v.cardinality() << " bins " << describe(v) << '\n';
     if (args.method != "edges" && v.cardinality() < args.bins) {
-      note("'" + name + "' has ties, so only " + std::to_string(v.cardinality()) + " of " +
-           std::to_string(args.bins) + " bins are distinct");
+      note("'" + name + "' has ties, so only " + std::to_string(v.cardinality()) + " of " + std::to_string(args.bins) +
+           " bins are distinct");
     }
   }
-  std::cout << binned.rows() << " rows -> " << args.out << (args.edges_out.empty() ? "" : ", edges -> " + args.edges_out)
-            << '\n';
+  std::cout << binned.rows() << " rows -> " << args.out
+            << (args.edges_out.empty() ? "" : ", edges -> " + args.edges_out) << '\n';
 }
 
 }  // namespace
@@ -95,8 +95,7 @@ void run_discretize(const discretize_arguments& args) {
 void add_discretize_command(CLI::App& app) {
   auto args = std::make_shared<discretize_arguments>();
   auto* cmd = app.add_subcommand("discretize", "Bin continuous columns into intervals");
-  cmd->add_option("--in", args->in, std::string("CSV file with raw (continuous) columns") + data_file_help)
-      ->required();
+  cmd->add_option("--in", args->in, std::string("CSV file with raw (continuous) columns") + data_file_help)->required();
   cmd->add_option("--method", args->method,
                   "quantile (equal frequency, as in the paper), width (equal width) or edges (saved edges)")
       ->check(CLI::IsMember({"quantile", "width", "edges"}))
@@ -105,8 +104,7 @@ void add_discretize_command(CLI::App& app) {
   cmd->add_option("--columns", args->columns,
                   "Columns to bin, e.g. \"xOff1,yOff1\" (default: every numeric column with more distinct "
                   "values than bins)");
-  cmd->add_option("--out", args->out, "Discretized CSV; each binned value becomes its bin index 0..bins-1")
-      ->required();
+  cmd->add_option("--out", args->out, "Discretized CSV; each binned value becomes its bin index 0..bins-1")->required();
   cmd->add_option("--edges-out", args->edges_out, "Where to save the fitted edges (JSON)");
   cmd->add_option("--edges-in", args->edges_in, "Saved edges to apply, with --method edges");
   cmd->callback([args] { run_discretize(*args); });

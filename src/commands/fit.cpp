@@ -1,5 +1,7 @@
 // pgm fit: estimate every table of a network from data.
 
+#include "pgm/learn/fit.hpp"
+
 #include <algorithm>
 #include <iostream>
 #include <optional>
@@ -15,7 +17,6 @@
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/estimator_choice.hpp"
-#include "pgm/learn/fit.hpp"
 #include "pgm/transfer/transfer_settings.hpp"
 
 namespace pgm::cli {
@@ -39,19 +40,20 @@ struct fit_arguments {
 
 /// Sets the weighted prior (eq. 8) of every node the map transfers to, choosing w from the
 /// data when asked, and says what was chosen.
-void use_prior_model(const fit_arguments& args, const network_structure& structure, const std::vector<count_table>& counts,
-                     fit_options& options) {
+void use_prior_model(const fit_arguments& args, const network_structure& structure,
+                     const std::vector<count_table>& counts, fit_options& options) {
   const auto settings = settings_of(args.transfer);
   const auto prior = read_network(args.transfer.prior_model);
   require_map(args.transfer);
-  const auto report = pgm::add_transferred_priors(options, structure, std::span<const count_table>(counts), prior, settings);
+  const auto report =
+      pgm::add_transferred_priors(options, structure, std::span<const count_table>(counts), prior, settings);
   if (report.map_proposed) note("--map auto: " + to_string(report.map));
   for (const auto& [node, entry] : report.nodes) {
     if (entry.reason) note("--w-prior auto for '" + node + "': " + *entry.reason);
   }
   for (const auto& [node, entry] : report.nodes) {
-    note("'" + node + "' gets the " + args.transfer.strategy + " prior from '" + entry.prior_node + "' with w = " +
-         detail::format_short(entry.weight));
+    note("'" + node + "' gets the " + args.transfer.strategy + " prior from '" + entry.prior_node +
+         "' with w = " + detail::format_short(entry.weight));
   }
 }
 
@@ -123,7 +125,8 @@ void run_fit(const fit_arguments& args) {
     structure = network_structure(counted.variables, edges);
   }
   if (!args.intervals_file.empty()) {
-    structure = with_intervals(std::move(structure), read_discretization_json(args.intervals_file), args.intervals_file);
+    structure =
+        with_intervals(std::move(structure), read_discretization_json(args.intervals_file), args.intervals_file);
   }
   // The counts under the structure's variables, which may carry intervals and tags.
   std::vector<count_table> counts;
@@ -145,8 +148,8 @@ void run_fit(const fit_arguments& args) {
   }
   const auto network = fit(structure, std::span<const count_table>(counts), options);
   write_network(network, args.out);
-  std::cout << "fitted " << network.size() << " tables (" << network.free_parameters()
-            << " free parameters) from " << counted.rows << " rows -> " << args.out << '\n';
+  std::cout << "fitted " << network.size() << " tables (" << network.free_parameters() << " free parameters) from "
+            << counted.rows << " rows -> " << args.out << '\n';
 }
 
 }  // namespace
@@ -171,8 +174,7 @@ void add_fit_command(CLI::App& app) {
       ->check(non_negative_number());
   cmd->add_option("--ess", args->ess, "Equivalent sample size of the bdeu prior (default 1)")
       ->check(non_negative_number());
-  cmd->add_option("--empty", args->empty,
-                  "A parent configuration with no data: uniform (1/J) or fail")
+  cmd->add_option("--empty", args->empty, "A parent configuration with no data: uniform (1/J) or fail")
       ->check(CLI::IsMember({"uniform", "fail"}))
       ->capture_default_str();
   auto* raw = cmd->add_option("--discretization", args->discretization_file,
@@ -181,7 +183,9 @@ void add_fit_command(CLI::App& app) {
                                     "Edges file whose intervals the already discretized columns hold; "
                                     "saved with the model");
   raw->excludes(intervals);
-  cmd->add_option("--threads", args->threads, "Counting threads (0: all cores)")->check(whole_number(0, 1024))->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Counting threads (0: all cores)")
+      ->check(whole_number(0, 1024))
+      ->capture_default_str();
   cmd->add_option("--out", args->out, "The fitted network, .bif or .json")->required();
   add_transfer_options(*cmd, args->transfer, true);
   cmd->callback([args] {

@@ -1,5 +1,7 @@
 // pgm predict: the probability that a planned action succeeds.
 
+#include "pgm/decide/predict.hpp"
+
 #include <iostream>
 #include <memory>
 #include <string>
@@ -7,7 +9,6 @@
 #include "cli/common.hpp"
 #include "commands/decide_common.hpp"
 #include "pgm/decide/assignment.hpp"
-#include "pgm/decide/predict.hpp"
 #include "pgm/detail/text.hpp"
 
 namespace pgm::cli {
@@ -20,7 +21,8 @@ struct predict_arguments {
 void run_predict(const predict_arguments& args) {
   const auto model = read_decision_model(args.decision.model, args.decision.success);
   const auto planned = read_assignment(args.decision.assign, model.network);
-  const auto p = predict_success(model.network, model.success, planned, {.marginalize_missing = args.decision.marginalize});
+  const auto p =
+      predict_success(model.network, model.success, planned, {.marginalize_missing = args.decision.marginalize});
   std::cout << "success: " << model.success.variable << "=" << model.success.state << '\n';
   for (const auto& [name, value] : planned) {
     const auto& v = model.network.at(name);

@@ -54,8 +54,9 @@ void run_prevent(const prevent_arguments& args) {
               << ") predicts a higher success\n";
     return;
   }
-  std::cout << "explanation: " << (why.target_succeeds() ? "the smallest change predicted to succeed"
-                                                         : "no change reaches epsilon; the best one")
+  std::cout << "explanation: "
+            << (why.target_succeeds() ? "the smallest change predicted to succeed"
+                                      : "no change reaches epsilon; the best one")
             << " (" << why.steps << " bin step" << (why.steps == 1 ? "" : "s");
   if (why.distance_units) std::cout << ", distance " << detail::format_short(*why.distance_units);
   std::cout << ")\n";

@@ -53,8 +53,8 @@ void run_simulate(const simulate_arguments& args) {
   for (std::size_t row = 0; row < data.rows(); ++row) successes += success.code(row);
   std::cout << "simulated " << data.rows() << " experiments of " << task.name << " (" << args.backend << ", seed "
             << args.seed << "): " << task.success << " = 1 in "
-            << detail::format_short(static_cast<double>(successes) / static_cast<double>(data.rows()), 4)
-            << " -> " << args.out << '\n';
+            << detail::format_short(static_cast<double>(successes) / static_cast<double>(data.rows()), 4) << " -> "
+            << args.out << '\n';
   if (task.variant == "reality") note("'" + task.name + "' is a stand-in for the real robot, not real data");
 }
 
@@ -66,8 +66,9 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--task", args->task, "Task name, e.g. 1-stack, 2-stack, drop-plate, drop-bowl, drop-glass")
       ->required();
   // The back-ends this build has registered (analytic always; bullet and users' when linked).
-  cmd->add_option("--backend", args->backend,
-                  "Simulator back-end: " + detail::join(sim::backends()) + " (analytic: closed-form; bullet: rigid bodies)")
+  cmd->add_option(
+         "--backend", args->backend,
+         "Simulator back-end: " + detail::join(sim::backends()) + " (analytic: closed-form; bullet: rigid bodies)")
       ->capture_default_str();
   cmd->add_option("--variant", args->variant,
                   "sim, or reality: the stacking tasks' stand-in for the real robot (not real data)")
@@ -77,7 +78,9 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--seed", args->seed, "Random seed; the same seed gives the same data for any --threads")
       ->check(whole_number(0, UINT64_MAX))
       ->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")->check(whole_number(0, 1024))->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Worker threads (0: all cores)")
+      ->check(whole_number(0, 1024))
+      ->capture_default_str();
   cmd->add_option("--tasks-dir", args->tasks_dir,
                   "Directory of task files (default: $PGM_TASKS_DIR, then the source tree's tasks/)");
   cmd->add_option("--out", args->out, "Output CSV file (written atomically)")->required();

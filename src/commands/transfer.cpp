@@ -142,8 +142,10 @@ void run_correspond(const correspond_arguments& args) {
 
 void add_transfer_command(CLI::App& app) {
   auto args = std::make_shared<transfer_command_arguments>();
-  auto* cmd = app.add_subcommand("transfer", "Write the prior table a strategy transfers to a target node, without data");
-  auto* edges = cmd->add_option("--edges", args->edges, "The target structure as edges, e.g. \"xOff1->onTop2,xOff2->onTop2\"");
+  auto* cmd =
+      app.add_subcommand("transfer", "Write the prior table a strategy transfers to a target node, without data");
+  auto* edges =
+      cmd->add_option("--edges", args->edges, "The target structure as edges, e.g. \"xOff1->onTop2,xOff2->onTop2\"");
   auto* model = cmd->add_option("--model", args->model, "The target structure from a JSON model file instead");
   edges->excludes(model);
   model->excludes(edges);
@@ -160,7 +162,9 @@ void add_correspond_command(CLI::App& app) {
   cmd->add_option("--prior-model", args->prior_model, "The prior task's network (.bif or .json)")->required();
   cmd->add_option("--target-model", args->target_model, "The target task's network or structure (.bif or .json)")
       ->required();
-  cmd->add_option("--top", args->top, "How many candidates to list")->check(whole_number(1, 1000000))->capture_default_str();
+  cmd->add_option("--top", args->top, "How many candidates to list")
+      ->check(whole_number(1, 1000000))
+      ->capture_default_str();
   cmd->callback([args] { run_correspond(*args); });
 }
 

@@ -3,7 +3,6 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <algorithm>
@@ -37,7 +36,8 @@ constexpr const char* stacking =
     "0,0,Red,1\n0,1,Blue,1\n1,1,Red,0\n1,0,Green,1\n0,0,Red,1\n1,1,Blue,0\n2,0,Red,0\n";
 
 TEST_F(cli_test, every_command_has_help) {
-  for (const std::string command : {"", "fit ", "discretize ", "show ", "transfer ", "correspond ", "experiment ", "report ", "simulate ", "predict ", "prevent ", "learn-structure "}) {
+  for (const std::string command : {"", "fit ", "discretize ", "show ", "transfer ", "correspond ", "experiment ",
+                                    "report ", "simulate ", "predict ", "prevent ", "learn-structure "}) {
     const auto r = run(command + "--help");
     EXPECT_EQ(r.code, 0) << command;
     EXPECT_THAT(r.out, HasSubstr("Usage")) << command;
@@ -48,7 +48,8 @@ TEST_F(cli_test, every_command_has_help) {
 
 TEST_F(cli_test, fit_with_edges_writes_bif_and_json) {
   const auto data = file("d.csv", stacking);
-  const auto r = run("fit --data " + data.string() + " --edges \"xOff1->onTop1,yOff1->onTop1\" --out " + path("f.bif").string());
+  const auto r =
+      run("fit --data " + data.string() + " --edges \"xOff1->onTop1,yOff1->onTop1\" --out " + path("f.bif").string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("fitted 3 tables"));
   const auto net = read_network(path("f.bif"));
@@ -57,8 +58,9 @@ TEST_F(cli_test, fit_with_edges_writes_bif_and_json) {
   EXPECT_DOUBLE_EQ(net.table("onTop1").probability("1", {"0", "0"}), 1.0);
   EXPECT_DOUBLE_EQ(net.table("onTop1").probability("1", {"2", "1"}), 0.5);
 
-  const auto b = run("fit --data " + data.string() + " --edges \"xOff1->onTop1\" --estimator bayes --prior dirichlet --alpha 2 --out " +
-                     path("f.json").string());
+  const auto b =
+      run("fit --data " + data.string() +
+          " --edges \"xOff1->onTop1\" --estimator bayes --prior dirichlet --alpha 2 --out " + path("f.json").string());
   ASSERT_EQ(b.code, 0) << b.err;
   // xOff1=1: onTop1 = 0, 1, 0 → (2 + 1) / (4 + 3).
   EXPECT_DOUBLE_EQ(read_network(path("f.json")).table("onTop1").probability("1", {"1"}), 3.0 / 7);
@@ -67,8 +69,8 @@ TEST_F(cli_test, fit_with_edges_writes_bif_and_json) {
 TEST_F(cli_test, fit_from_a_model_file_and_show) {
   const auto data = file("d.csv", stacking);
   ASSERT_EQ(run("fit --data " + data.string() + " --edges \"xOff1->onTop1\" --out " + path("a.json").string()).code, 0);
-  const auto r = run("fit --data " + data.string() + " --model " + path("a.json").string() + " --estimator bayes --prior k2 --out " +
-                     path("b.bif").string());
+  const auto r = run("fit --data " + data.string() + " --model " + path("a.json").string() +
+                     " --estimator bayes --prior k2 --out " + path("b.bif").string());
   ASSERT_EQ(r.code, 0) << r.err;
   const auto shown = run("show " + path("b.bif").string());
   ASSERT_EQ(shown.code, 0) << shown.err;
@@ -80,18 +82,18 @@ TEST_F(cli_test, discretize_then_fit_keeps_the_edges) {
   std::string raw = "x,onTop\n";
   for (int i = 0; i < 100; ++i) raw += std::to_string(i * 0.1) + "," + std::to_string(i % 3 == 0) + "\n";
   const auto in = file("raw.csv", raw);
-  const auto r = run("discretize --in " + in.string() + " --bins 4 --out " + path("disc.csv").string() + " --edges-out " +
-                     path("edges.json").string());
+  const auto r = run("discretize --in " + in.string() + " --bins 4 --out " + path("disc.csv").string() +
+                     " --edges-out " + path("edges.json").string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.err, HasSubstr("left 'onTop' as it is"));
-  const auto f = run("fit --data " + path("disc.csv").string() + " --edges \"x->onTop\" --intervals " + path("edges.json").string() +
-                     " --out " + path("m.json").string());
+  const auto f = run("fit --data " + path("disc.csv").string() + " --edges \"x->onTop\" --intervals " +
+                     path("edges.json").string() + " --out " + path("m.json").string());
   ASSERT_EQ(f.code, 0) << f.err;
   const auto net = read_network(path("m.json"));
   EXPECT_EQ(net.at("x").edges().size(), 5u);
   // The raw data with the saved edges gives the same network.
-  const auto g = run("fit --data " + in.string() + " --edges \"x->onTop\" --discretization " + path("edges.json").string() +
-                     " --out " + path("m2.json").string());
+  const auto g = run("fit --data " + in.string() + " --edges \"x->onTop\" --discretization " +
+                     path("edges.json").string() + " --out " + path("m2.json").string());
   ASSERT_EQ(g.code, 0) << g.err;
   EXPECT_EQ(read_network(path("m2.json")), net);
 }
@@ -104,7 +106,8 @@ TEST_F(cli_test, missing_column) {
 
 TEST_F(cli_test, cycle_in_edges) {
   const auto data = file("d.csv", stacking);
-  expect_failure("fit --data " + data.string() + " --edges \"xOff1->onTop1,onTop1->yOff1,yOff1->xOff1\" --out " + path("f.bif").string(),
+  expect_failure("fit --data " + data.string() + " --edges \"xOff1->onTop1,onTop1->yOff1,yOff1->xOff1\" --out " +
+                     path("f.bif").string(),
                  "closes the cycle yOff1 -> xOff1 -> onTop1 -> yOff1", path("f.bif"));
 }
 
@@ -116,16 +119,19 @@ TEST_F(cli_test, malformed_edges) {
 
 TEST_F(cli_test, nan_in_data) {
   const auto data = file("d.csv", "x,y\n1,0\nNaN,1\n");
-  expect_failure("fit --data " + data.string() + " --edges \"x->y\" --out " + path("f.bif").string(), "d.csv:3:1: column 'x': 'NaN'",
-                 path("f.bif"));
+  expect_failure("fit --data " + data.string() + " --edges \"x->y\" --out " + path("f.bif").string(),
+                 "d.csv:3:1: column 'x': 'NaN'", path("f.bif"));
 }
 
 TEST_F(cli_test, non_numeric_value_in_a_numeric_column) {
   const auto data = file("raw.csv", "x,y\n1.5,0\n2.5,1\nabc,0\n3.5,1\n4.5,0\n5.5,1\n");
   expect_failure("discretize --in " + data.string() + " --columns x --bins 2 --out " + path("o.csv").string(),
                  "raw.csv:4:1: column 'x': expected a number, got 'abc'", path("o.csv"));
-  const auto edges = file("e.json", R"({"format":"pgm-discretization","version":1,"variables":[{"name":"x","states":["0","1"],"edges":[0,2,6]}]})");
-  expect_failure("fit --data " + data.string() + " --edges \"x->y\" --discretization " + edges.string() + " --out " + path("f.bif").string(),
+  const auto edges = file(
+      "e.json",
+      R"({"format":"pgm-discretization","version":1,"variables":[{"name":"x","states":["0","1"],"edges":[0,2,6]}]})");
+  expect_failure("fit --data " + data.string() + " --edges \"x->y\" --discretization " + edges.string() + " --out " +
+                     path("f.bif").string(),
                  "raw.csv:4:1: column 'x': expected a number, got 'abc'", path("f.bif"));
 }
 
@@ -139,8 +145,9 @@ TEST_F(cli_test, empty_file_and_header_only) {
 }
 
 TEST_F(cli_test, ragged_rows) {
-  expect_failure("fit --data " + file("r.csv", "a,b\n0,1\n1\n").string() + " --edges \"a->b\" --out " + path("f.bif").string(),
-                 "r.csv:3:1: expected 2 fields as in the header, found 1", path("f.bif"));
+  expect_failure(
+      "fit --data " + file("r.csv", "a,b\n0,1\n1\n").string() + " --edges \"a->b\" --out " + path("f.bif").string(),
+      "r.csv:3:1: expected 2 fields as in the header, found 1", path("f.bif"));
 }
 
 TEST_F(cli_test, a_failed_fit_leaves_an_existing_output_alone) {
@@ -153,7 +160,8 @@ TEST_F(cli_test, a_failed_fit_leaves_an_existing_output_alone) {
 TEST_F(cli_test, three_hundred_states) {
   std::string csv = "id,ok\n";
   for (int i = 0; i < 900; ++i) csv += "item" + std::to_string(i % 300) + "," + std::to_string(i % 2) + "\n";
-  const auto r = run("fit --data " + file("w.csv", csv).string() + " --edges \"id->ok\" --out " + path("f.json").string());
+  const auto r =
+      run("fit --data " + file("w.csv", csv).string() + " --edges \"id->ok\" --out " + path("f.json").string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_EQ(read_network(path("f.json")).at("id").cardinality(), 300u);
 }
@@ -175,25 +183,28 @@ TEST_F(cli_test, usage_errors) {
   EXPECT_THAT(r.err, Not(HasSubstr("internal")));
 }
 
-
 namespace transfer_cli {
 
 // A 1-Stack prior and 2-Stack target data on 2 bins per offset: the prior says a centred
 // cube (bin 1) stays with 0.9 and an offset one with 0.2.
-constexpr const char* one_stack = "xOff1,yOff1,onTop1\n"
-                                  "1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,0\n"
-                                  "0,1,0\n0,1,0\n0,1,0\n0,1,0\n0,1,1\n1,0,0\n1,0,0\n1,0,0\n1,0,0\n1,0,1\n"
-                                  "0,0,0\n0,0,0\n0,0,0\n0,0,0\n0,0,1\n";
-constexpr const char* two_stack = "xOff1,yOff1,xOff2,yOff2,onTop2\n"
-                                  "1,1,1,1,1\n1,1,1,1,0\n1,1,0,0,0\n";
+constexpr const char* one_stack =
+    "xOff1,yOff1,onTop1\n"
+    "1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,1\n1,1,0\n"
+    "0,1,0\n0,1,0\n0,1,0\n0,1,0\n0,1,1\n1,0,0\n1,0,0\n1,0,0\n1,0,0\n1,0,1\n"
+    "0,0,0\n0,0,0\n0,0,0\n0,0,0\n0,0,1\n";
+constexpr const char* two_stack =
+    "xOff1,yOff1,xOff2,yOff2,onTop2\n"
+    "1,1,1,1,1\n1,1,1,1,0\n1,1,0,0,0\n";
 constexpr const char* edges = "xOff1->onTop2,yOff1->onTop2,xOff2->onTop2,yOff2->onTop2";
 
 }  // namespace transfer_cli
 
 TEST_F(cli_test, fit_with_a_transferred_prior) {
   using namespace transfer_cli;
-  ASSERT_EQ(run("fit --data " + file("one.csv", one_stack).string() + " --edges \"xOff1->onTop1,yOff1->onTop1\" --out " +
-                path("one.json").string()).code, 0);
+  ASSERT_EQ(run("fit --data " + file("one.csv", one_stack).string() +
+                " --edges \"xOff1->onTop1,yOff1->onTop1\" --out " + path("one.json").string())
+                .code,
+            0);
   const auto r = run("fit --data " + file("two.csv", two_stack).string() + " --edges \"" + edges + "\" --prior-model " +
                      path("one.json").string() + " --strategy minimal --map \"onTop2=onTop1,xOff2~xOff1,yOff2~yOff1\"" +
                      " --w-prior 2 --out " + path("two.json").string());
@@ -206,8 +217,9 @@ TEST_F(cli_test, fit_with_a_transferred_prior) {
   EXPECT_EQ(table.probability("1", std::vector<std::string>{"1", "1", "0", "1"}), 0.2);
   EXPECT_THAT(r.err, HasSubstr("'onTop2' gets the minimal prior from 'onTop1' with w = 2"));
 
-  const auto automatic = run("fit --data " + path("two.csv").string() + " --edges \"" + edges + "\" --prior-model " +
-                             path("one.json").string() + " --map auto --w-prior auto --out " + path("auto.json").string());
+  const auto automatic =
+      run("fit --data " + path("two.csv").string() + " --edges \"" + edges + "\" --prior-model " +
+          path("one.json").string() + " --map auto --w-prior auto --out " + path("auto.json").string());
   ASSERT_EQ(automatic.code, 0) << automatic.err;
   EXPECT_THAT(automatic.err, HasSubstr("--map auto: onTop2=onTop1,xOff2~xOff1,yOff2~yOff1"));
   EXPECT_THAT(automatic.err, HasSubstr("maximizes the marginal likelihood of the 3 target rows"));
@@ -215,8 +227,10 @@ TEST_F(cli_test, fit_with_a_transferred_prior) {
 
 TEST_F(cli_test, transfer_writes_the_zero_shot_prior_and_correspond_proposes_the_map) {
   using namespace transfer_cli;
-  ASSERT_EQ(run("fit --data " + file("one.csv", one_stack).string() + " --edges \"xOff1->onTop1,yOff1->onTop1\" --out " +
-                path("one.json").string()).code, 0);
+  ASSERT_EQ(run("fit --data " + file("one.csv", one_stack).string() +
+                " --edges \"xOff1->onTop1,yOff1->onTop1\" --out " + path("one.json").string())
+                .code,
+            0);
   const auto r = run("transfer --edges \"" + std::string(edges) + "\" --prior-model " + path("one.json").string() +
                      " --strategy cross --map \"onTop2=onTop1,xOff2~xOff1,yOff2~yOff1\" --explain --out " +
                      path("prior.csv").string());
@@ -225,18 +239,25 @@ TEST_F(cli_test, transfer_writes_the_zero_shot_prior_and_correspond_proposes_the
   const auto csv = pgm::detail::read_file(path("prior.csv"));
   EXPECT_THAT(csv, HasSubstr("xOff1,yOff1,xOff2,yOff2,onTop2,probability\n"));
   EXPECT_THAT(csv, HasSubstr("1,1,0,1,1,0.2\n"));
-  ASSERT_EQ(run("fit --data " + file("two.csv", two_stack).string() + " --edges \"" + edges + "\" --out " + path("two.json").string()).code, 0);
-  const auto c = run("correspond --prior-model " + path("one.json").string() + " --target-model " + path("two.json").string());
+  ASSERT_EQ(run("fit --data " + file("two.csv", two_stack).string() + " --edges \"" + edges + "\" --out " +
+                path("two.json").string())
+                .code,
+            0);
+  const auto c =
+      run("correspond --prior-model " + path("one.json").string() + " --target-model " + path("two.json").string());
   ASSERT_EQ(c.code, 0) << c.err;
   EXPECT_THAT(c.out, HasSubstr("proposal: --map \"onTop2=onTop1,xOff2~xOff1,yOff2~yOff1\""));
 }
 
 TEST_F(cli_test, transfer_errors_name_the_problem) {
   using namespace transfer_cli;
-  ASSERT_EQ(run("fit --data " + file("one.csv", one_stack).string() + " --edges \"xOff1->onTop1,yOff1->onTop1\" --out " +
-                path("one.json").string()).code, 0);
+  ASSERT_EQ(run("fit --data " + file("one.csv", one_stack).string() +
+                " --edges \"xOff1->onTop1,yOff1->onTop1\" --out " + path("one.json").string())
+                .code,
+            0);
   const auto data = file("two.csv", two_stack).string();
-  const std::string base = "fit --data " + data + " --edges \"" + edges + "\" --prior-model " + path("one.json").string();
+  const std::string base =
+      "fit --data " + data + " --edges \"" + edges + "\" --prior-model " + path("one.json").string();
   expect_failure(base + " --map \"onTop2=onTop1,xOff3~xOff1\" --out " + path("f.json").string(),
                  "the map's related variable 'xOff3' is not a variable of the target network", path("f.json"));
   expect_failure(base + " --strategy bogus --map \"onTop2=onTop1\" --out " + path("f.json").string(),
@@ -271,15 +292,16 @@ std::string learnable_stacking() {
 TEST_F(cli_test, learn_structure_help) {
   const auto r = run("learn-structure --help");
   EXPECT_EQ(r.code, 0);
-  for (const char* option : {"--data", "--test", "--alpha", "--max-cond", "--tiers", "--forbid", "--require", "--threads",
-                             "--explain", "--out", "--correction", "--min-rows-per-cell"}) {
+  for (const char* option : {"--data", "--test", "--alpha", "--max-cond", "--tiers", "--forbid", "--require",
+                             "--threads", "--explain", "--out", "--correction", "--min-rows-per-cell"}) {
     EXPECT_THAT(r.out, HasSubstr(option));
   }
 }
 
 TEST_F(cli_test, learn_structure_finds_the_parents_and_explains) {
   const auto data = file("d.csv", learnable_stacking());
-  const auto r = run("learn-structure --data " + data.string() + " --test g2 --alpha 0.01 --explain --out " + path("m.json").string());
+  const auto r = run("learn-structure --data " + data.string() + " --test g2 --alpha 0.01 --explain --out " +
+                     path("m.json").string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("directed edges (2):\n  xOff1 -> onTop1\n  yOff1 -> onTop1\n"));
   EXPECT_THAT(r.out, HasSubstr("undirected edges (0)"));
@@ -295,7 +317,8 @@ TEST_F(cli_test, learn_structure_finds_the_parents_and_explains) {
   const auto quiet = run("learn-structure --data " + data.string() + " --out " + path("q.json").string());
   ASSERT_EQ(quiet.code, 0) << quiet.err;
   EXPECT_THAT(quiet.out, Not(HasSubstr("absent edges")));
-  const auto f = run("fit --data " + data.string() + " --model " + path("m.json").string() + " --out " + path("f.bif").string());
+  const auto f =
+      run("fit --data " + data.string() + " --model " + path("m.json").string() + " --out " + path("f.bif").string());
   ASSERT_EQ(f.code, 0) << f.err;
   EXPECT_THAT(f.out, HasSubstr("fitted 4 tables"));
 }
@@ -310,7 +333,8 @@ TEST_F(cli_test, learn_structure_peer_options) {
   EXPECT_THAT(sparse.out, HasSubstr("directed edges (0)"));
   EXPECT_THAT(sparse.out, HasSubstr("no xOff1 - onTop1: independent given {} (too few rows: 3000 < 600 per cell)"));
   EXPECT_EQ(read_model_json(path("s.json")).structure.edges().size(), 0u);
-  const auto yates = run("learn-structure --data " + data.string() + " --correction yates --out " + path("y.json").string());
+  const auto yates =
+      run("learn-structure --data " + data.string() + " --correction yates --out " + path("y.json").string());
   ASSERT_EQ(yates.code, 0) << yates.err;
   EXPECT_THAT(yates.out, HasSubstr(", yates correction)"));
   EXPECT_THAT(yates.out, HasSubstr("directed edges (2):\n  xOff1 -> onTop1\n  yOff1 -> onTop1\n"));
@@ -340,15 +364,16 @@ TEST_F(cli_test, learn_structure_extends_undirected_edges) {
   const auto r = run("learn-structure --data " + data.string() + " --threads 2 --out " + path("m.json").string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("undirected edges (2):\n  a - b\n  b - c\n"));
-  EXPECT_THAT(r.out, HasSubstr("extended the CPDAG to a DAG: 2 undirected edge(s) oriented without adding a v-structure"));
+  EXPECT_THAT(r.out,
+              HasSubstr("extended the CPDAG to a DAG: 2 undirected edge(s) oriented without adding a v-structure"));
   EXPECT_EQ(read_model_json(path("m.json")).structure.edges().size(), 2u);
   // Tiers orient the chain c -> b -> a.
   const auto t = run("learn-structure --data " + data.string() + " --tiers \"c;b;a\" --out " + path("t.json").string());
   ASSERT_EQ(t.code, 0) << t.err;
   EXPECT_THAT(t.out, HasSubstr("directed edges (2):\n  b -> a\n  c -> b\n"));
   // Required and forbidden edges.
-  const auto k = run("learn-structure --data " + data.string() + " --require \"a->c\" --forbid \"b->a\" --explain --out " +
-                     path("k.json").string());
+  const auto k = run("learn-structure --data " + data.string() +
+                     " --require \"a->c\" --forbid \"b->a\" --explain --out " + path("k.json").string());
   ASSERT_EQ(k.code, 0) << k.err;
   EXPECT_THAT(k.out, HasSubstr("a -> b"));
   EXPECT_THAT(k.out, HasSubstr("a -> c"));
@@ -365,23 +390,25 @@ TEST_F(cli_test, learn_structure_errors) {
                  "unknown variable 'who' in the required edges", out);
   expect_failure("learn-structure --data " + data.string() + " --require \"xOff1=onTop1\" --out " + out.string(),
                  "is not of the form 'from->to'", out);
-  expect_failure("learn-structure --data " + data.string() + " --tiers \"xOff1;;onTop1\" --out " + out.string(), "tier 2 is empty",
-                 out);
-  expect_failure("learn-structure --data " + data.string() + " --out " + path("m.bif").string(), "expected a file ending in .json",
-                 path("m.bif"));
+  expect_failure("learn-structure --data " + data.string() + " --tiers \"xOff1;;onTop1\" --out " + out.string(),
+                 "tier 2 is empty", out);
+  expect_failure("learn-structure --data " + data.string() + " --out " + path("m.bif").string(),
+                 "expected a file ending in .json", path("m.bif"));
   expect_failure("learn-structure --data " + data.string() + " --test fisher --out " + out.string(), "fisher", out);
   expect_failure("learn-structure --data " + data.string() + " --alpha 2 --out " + out.string(), "alpha", out);
-  expect_failure("learn-structure --data " + data.string() + " --require \"xOff1->onTop1\" --forbid \"xOff1->onTop1\" --out " +
-                     out.string(),
+  expect_failure("learn-structure --data " + data.string() +
+                     " --require \"xOff1->onTop1\" --forbid \"xOff1->onTop1\" --out " + out.string(),
                  "edge xOff1->onTop1 is required, but it is forbidden", out);
-  expect_failure("learn-structure --data " + path("absent.csv").string() + " --out " + out.string(), "cannot open", out);
+  expect_failure("learn-structure --data " + path("absent.csv").string() + " --out " + out.string(), "cannot open",
+                 out);
 }
 
 TEST_F(cli_test, counts_must_be_whole_numbers_in_range) {
-  for (const std::string& arguments : {"simulate --task 1-stack --rows -5 --out " + path("s.csv").string(),
-                                      "simulate --task 1-stack --rows 18446744073709551615 --out " + path("s.csv").string(),
-                                      "experiment --scenario 2-stack-reality --reps 0 --out " + path("r").string(),
-                                      "discretize --in x.csv --bins 0 --out " + path("o.csv").string()}) {
+  for (const std::string& arguments :
+       {"simulate --task 1-stack --rows -5 --out " + path("s.csv").string(),
+        "simulate --task 1-stack --rows 18446744073709551615 --out " + path("s.csv").string(),
+        "experiment --scenario 2-stack-reality --reps 0 --out " + path("r").string(),
+        "discretize --in x.csv --bins 0 --out " + path("o.csv").string()}) {
     const auto r = run(arguments);
     EXPECT_EQ(r.code, 2) << arguments;
     EXPECT_THAT(r.err, HasSubstr("expected a whole number from")) << arguments;
@@ -443,9 +470,11 @@ TEST_F(cli_test, report_writes_and_checks_a_document_from_summaries) {
   const std::string header = "scenario,target,strategy,w,rows,metric,mean,sd,repetitions\n";
   const auto summary = file("summary.csv", header + "s,t,mle,0,0,failure_prevention,0.5,0.1,20\n");
   const auto other = file("other.csv", header + "s,t,mle,0,0,failure_prevention,0.25,0.1,20\n");
-  const auto page = file("page.md", "# Results\nMLE prevents {{pct:1 s/t/mle/0/0/failure_prevention}} %, "
-                                    "elsewhere {{pct:0 b:s/t/mle/0/0/failure_prevention}} %.\n");
-  const auto sources = " --template " + page.string() + " --summary " + summary.string() + " --summary b=" + other.string();
+  const auto page = file("page.md",
+                         "# Results\nMLE prevents {{pct:1 s/t/mle/0/0/failure_prevention}} %, "
+                         "elsewhere {{pct:0 b:s/t/mle/0/0/failure_prevention}} %.\n");
+  const auto sources =
+      " --template " + page.string() + " --summary " + summary.string() + " --summary b=" + other.string();
   const auto printed = run("report" + sources);
   EXPECT_EQ(printed.code, 0) << printed.err;
   EXPECT_EQ(printed.out, "# Results\nMLE prevents 50.0 %, elsewhere 25 %.\n");
@@ -463,12 +492,13 @@ TEST_F(cli_test, report_writes_and_checks_a_document_from_summaries) {
 }
 
 TEST_F(cli_test, report_errors_name_the_template_place_and_write_nothing) {
-  const auto summary = file("summary.csv", "scenario,target,strategy,w,rows,metric,mean,sd,repetitions\n"
-                                           "s,t,mle,0,0,failure_prevention,0.5,0.1,20\n");
+  const auto summary = file("summary.csv",
+                            "scenario,target,strategy,w,rows,metric,mean,sd,repetitions\n"
+                            "s,t,mle,0,0,failure_prevention,0.5,0.1,20\n");
   const auto page = file("page.md", "ok\n  {{pct:1 s/t/direct/0/0/failure_prevention}}\n");
-  expect_failure("report --template " + page.string() + " --summary " + summary.string() + " --out " +
-                     path("out.md").string(),
-                 page.string() + ":2:3: {{pct:1 s/t/direct/0/0/failure_prevention}}: no summary row matches", path("out.md"));
+  expect_failure(
+      "report --template " + page.string() + " --summary " + summary.string() + " --out " + path("out.md").string(),
+      page.string() + ":2:3: {{pct:1 s/t/direct/0/0/failure_prevention}}: no summary row matches", path("out.md"));
   expect_failure("report --template " + page.string() + " --summary " + path("none.csv").string(), "none.csv");
 }
 
@@ -484,7 +514,8 @@ TEST_F(cli_test, discretize_checks_every_output_before_writing_any) {
   expect_failure("discretize --in " + data.string() + " --columns x --bins 2 --out " + path("o.csv").string() +
                      " --edges-out " + path("missing/e.json").string(),
                  "the directory '" + path("missing").string() + "' does not exist", path("o.csv"));
-  expect_failure("discretize --in " + data.string() + " --columns x --bins 2 --out " + data.string(), "is the input file");
+  expect_failure("discretize --in " + data.string() + " --columns x --bins 2 --out " + data.string(),
+                 "is the input file");
   EXPECT_EQ(slurp(data), "x,y\n1.5,0\n2.5,1\n3.5,0\n4.5,1\n");
 }
 

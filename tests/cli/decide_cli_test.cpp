@@ -3,7 +3,6 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
-
 #include <sys/wait.h>
 
 #include <cstdlib>
@@ -64,7 +63,8 @@ TEST_F(decide_cli_test, predict_prints_the_probability) {
   EXPECT_THAT(r.out, HasSubstr("success: onTop1=1"));
   EXPECT_THAT(r.out, HasSubstr("xOff1 = 0.3 cm -> state 1 [-0.4, 0.4) cm"));
   EXPECT_THAT(r.out, HasSubstr("predicted success probability: 0.6\n"));
-  const auto bif = run("predict --model " + (dir_ / "model.bif").string() + " --assign 'xOff1=@1,yOff1=@1' --success onTop1=0");
+  const auto bif =
+      run("predict --model " + (dir_ / "model.bif").string() + " --assign 'xOff1=@1,yOff1=@1' --success onTop1=0");
   EXPECT_EQ(bif.code, 0) << bif.err;
   EXPECT_THAT(bif.out, HasSubstr("predicted success probability: 0.05\n"));
   const auto summed = run("predict --model " + model().string() + " --assign xOff1=0 --marginalize");
@@ -73,7 +73,8 @@ TEST_F(decide_cli_test, predict_prints_the_probability) {
 }
 
 TEST_F(decide_cli_test, prevent_explains_and_suggests) {
-  const auto r = run("prevent --model " + model().string() + " --assign 'xOff1=-1,yOff1=0.1' --controllable xOff1,yOff1");
+  const auto r =
+      run("prevent --model " + model().string() + " --assign 'xOff1=-1,yOff1=0.1' --controllable xOff1,yOff1");
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("predicted success probability: 0.3\n"));
   EXPECT_THAT(r.out, HasSubstr("failure predicted"));
@@ -85,7 +86,8 @@ TEST_F(decide_cli_test, prevent_explains_and_suggests) {
   EXPECT_EQ(fine.code, 0) << fine.err;
   EXPECT_THAT(fine.out, HasSubstr("no failure predicted"));
   EXPECT_THAT(fine.err, HasSubstr("every parent of 'onTop1' may move"));
-  const auto low = run("prevent --model " + model().string() + " --assign 'xOff1=2,yOff1=-1' --controllable yOff1 --epsilon 0.5");
+  const auto low =
+      run("prevent --model " + model().string() + " --assign 'xOff1=2,yOff1=-1' --controllable yOff1 --epsilon 0.5");
   EXPECT_THAT(low.out, HasSubstr("no change reaches epsilon; the best one"));
 }
 

@@ -1,7 +1,6 @@
 // Fits a two-node network through the installed or fetched library and checks one value.
-#include <pgm/pgm.hpp>
-
 #include <iostream>
+#include <pgm/pgm.hpp>
 
 int main() {
   const pgm::variable a("a", {"no", "yes"});

@@ -34,22 +34,37 @@ TEST(cpt_test, values_are_configuration_major_last_parent_fastest) {
 }
 
 TEST(cpt_test, rejects_tables_that_are_not_distributions) {
-  EXPECT_THAT([] { cpt<double>(on_top, {y_off}, {0.5, 0.5, 0.5}); },
-              ThrowsMessage<model_error>(HasSubstr("needs 4 values (2 states × 2 parent configurations), got 3")));
-  EXPECT_THAT([] { cpt<double>(on_top, {y_off}, {0.5, 0.5, 0.6, 0.5}); },
-              ThrowsMessage<model_error>(HasSubstr("given yOff1=r sums to 1.1")));
-  EXPECT_THAT([] { cpt<double>(on_top, {y_off}, {1.5, -0.5, 0.5, 0.5}); },
-              ThrowsMessage<model_error>(HasSubstr("not a probability given yOff1=l")));
-  EXPECT_THAT([] { cpt<double>(on_top, {y_off}, {std::nan(""), 1, 0.5, 0.5}); },
-              ThrowsMessage<model_error>(HasSubstr("not a probability")));
+  EXPECT_THAT(
+      [] {
+        cpt<double>(on_top, {y_off}, {0.5, 0.5, 0.5});
+      },
+      ThrowsMessage<model_error>(HasSubstr("needs 4 values (2 states × 2 parent configurations), got 3")));
+  EXPECT_THAT(
+      [] {
+        cpt<double>(on_top, {y_off}, {0.5, 0.5, 0.6, 0.5});
+      },
+      ThrowsMessage<model_error>(HasSubstr("given yOff1=r sums to 1.1")));
+  EXPECT_THAT(
+      [] {
+        cpt<double>(on_top, {y_off}, {1.5, -0.5, 0.5, 0.5});
+      },
+      ThrowsMessage<model_error>(HasSubstr("not a probability given yOff1=l")));
+  EXPECT_THAT(
+      [] {
+        cpt<double>(on_top, {y_off}, {std::nan(""), 1, 0.5, 0.5});
+      },
+      ThrowsMessage<model_error>(HasSubstr("not a probability")));
 }
 
 TEST(cpt_test, rejects_bad_parents_and_lookups) {
   EXPECT_THAT([] { cpt<double>(on_top, {on_top}); }, ThrowsMessage<model_error>(HasSubstr("its own parent")));
   EXPECT_THAT([] { cpt<double>(on_top, {y_off, y_off}); }, ThrowsMessage<model_error>(HasSubstr("twice")));
   const cpt<double> t(on_top, {y_off});
-  EXPECT_THAT([&] { static_cast<void>(t.probability("1", {"l", "r"})); },
-              ThrowsMessage<model_error>(HasSubstr("has 1 parents, got states for 2")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(t.probability("1", {"l", "r"}));
+      },
+      ThrowsMessage<model_error>(HasSubstr("has 1 parents, got states for 2")));
   EXPECT_THAT([&] { static_cast<void>(t.probability("1", {"x"})); },
               ThrowsMessage<model_error>(HasSubstr("no state 'x'")));
 }

@@ -78,7 +78,7 @@ TEST(dag_test, boost_algorithms_run_on_the_graph) {
   g.add_edge("a", "b");
   std::vector<boost::default_color_type> colours(g.size());
   boost::depth_first_search(g.graph(), boost::color_map(boost::make_iterator_property_map(
-                                          colours.begin(), boost::get(boost::vertex_index, g.graph()))));
+                                           colours.begin(), boost::get(boost::vertex_index, g.graph()))));
   EXPECT_EQ(boost::num_vertices(g.graph()), 3u);
   EXPECT_EQ(g.graph()[0], "a");
 }

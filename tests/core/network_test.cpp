@@ -1,7 +1,7 @@
-#include "pgm/core/bayesian_network.hpp"
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+
+#include "pgm/core/bayesian_network.hpp"
 
 namespace pgm {
 namespace {

@@ -56,12 +56,21 @@ TEST(variable_test, midpoint_of_numeric_labels_and_none_for_categories) {
 }
 
 TEST(variable_test, rejects_bad_edges) {
-  EXPECT_THAT([] { static_cast<void>(variable::intervals("x", {1.0, 1.0, 2.0})); },
-              ThrowsMessage<model_error>(HasSubstr("strictly increasing")));
-  EXPECT_THAT([] { static_cast<void>(variable::with_edges("x", {"a", "b"}, {0.0, 1.0})); },
-              ThrowsMessage<model_error>(HasSubstr("2 states need 3 interval edges, got 2")));
-  EXPECT_THAT([] { static_cast<void>(variable::intervals("x", {0.0, std::nan("")})); },
-              ThrowsMessage<model_error>(HasSubstr("finite")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(variable::intervals("x", {1.0, 1.0, 2.0}));
+      },
+      ThrowsMessage<model_error>(HasSubstr("strictly increasing")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(variable::with_edges("x", {"a", "b"}, {0.0, 1.0}));
+      },
+      ThrowsMessage<model_error>(HasSubstr("2 states need 3 interval edges, got 2")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(variable::intervals("x", {0.0, std::nan("")}));
+      },
+      ThrowsMessage<model_error>(HasSubstr("finite")));
 }
 
 TEST(variable_test, equality_covers_states_edges_and_tags) {
@@ -88,8 +97,7 @@ TEST(mixed_radix_test, empty_radix_has_one_configuration) {
 }
 
 TEST(mixed_radix_test, overflow_is_an_error) {
-  EXPECT_THAT([] { mixed_radix(std::vector<std::size_t>(70, 2)); },
-              ThrowsMessage<model_error>(HasSubstr("overflows")));
+  EXPECT_THAT([] { mixed_radix(std::vector<std::size_t>(70, 2)); }, ThrowsMessage<model_error>(HasSubstr("overflows")));
 }
 
 }  // namespace

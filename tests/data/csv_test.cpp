@@ -15,9 +15,7 @@ using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
-dataset parse(std::string_view text, const csv_options& options = {}) {
-  return parse_csv(text, "runs.csv", options);
-}
+dataset parse(std::string_view text, const csv_options& options = {}) { return parse_csv(text, "runs.csv", options); }
 
 TEST(csv_test, numeric_columns_are_continuous_text_columns_discrete) {
   const auto data = parse("xOff1,colour,onTop1\n0.5,Red,1\n-1.25,Blue,0\n3e-1,Red,1\n");
@@ -41,7 +39,9 @@ TEST(csv_test, discrete_numeric_labels_sort_numerically) {
 }
 
 TEST(csv_test, quoting_crlf_bom_and_blank_lines) {
-  const auto data = parse("\xEF\xBB\xBF" "name,note\r\n\"a, b\",\"say \"\"hi\"\"\"\r\n\r\nc,\"two\nlines\"\r\n  d , e \r\n");
+  const auto data = parse(
+      "\xEF\xBB\xBF"
+      "name,note\r\n\"a, b\",\"say \"\"hi\"\"\"\r\n\r\nc,\"two\nlines\"\r\n  d , e \r\n");
   const auto& name = data.discrete("name");
   EXPECT_EQ(name.var().states(), (std::vector<std::string>{"a, b", "c", "d"}));
   const auto& note = data.discrete("note");
@@ -66,7 +66,8 @@ TEST(csv_test, a_label_outside_a_known_variable_is_located) {
   csv_options options;
   options.variables.emplace("onTop1", variable("onTop1", {"0", "1"}));
   EXPECT_THAT([&] { parse("onTop1\n0\n2\n", options); },
-              ThrowsMessage<parse_error>(HasSubstr("runs.csv:3:1: column 'onTop1': '2' is not a state of 'onTop1' (states: 0, 1)")));
+              ThrowsMessage<parse_error>(
+                  HasSubstr("runs.csv:3:1: column 'onTop1': '2' is not a state of 'onTop1' (states: 0, 1)")));
 }
 
 TEST(csv_test, non_numeric_value_in_numeric_column) {
@@ -101,19 +102,23 @@ TEST(csv_test, empty_file_header_only_and_empty_values) {
   csv_options allow;
   allow.allow_empty = true;
   EXPECT_EQ(parse("a,b\n", allow).rows(), 0u);
-  EXPECT_THAT([] { parse("a,b\n1,\n"); }, ThrowsMessage<parse_error>(HasSubstr("runs.csv:2:3: column 'b': the value is empty")));
+  EXPECT_THAT([] { parse("a,b\n1,\n"); },
+              ThrowsMessage<parse_error>(HasSubstr("runs.csv:2:3: column 'b': the value is empty")));
 }
 
 TEST(csv_test, ragged_rows) {
   EXPECT_THAT([] { parse("a,b,c\n1,2,3\n1,2\n"); },
               ThrowsMessage<parse_error>(HasSubstr("runs.csv:3:3: expected 3 fields as in the header, found 2")));
-  EXPECT_THAT([] { parse("a,b\n1,2,3\n"); }, ThrowsMessage<parse_error>(HasSubstr("expected 2 fields as in the header, found 3")));
+  EXPECT_THAT([] { parse("a,b\n1,2,3\n"); },
+              ThrowsMessage<parse_error>(HasSubstr("expected 2 fields as in the header, found 3")));
 }
 
 TEST(csv_test, malformed_quotes_and_headers) {
-  EXPECT_THAT([] { parse("a\n\"open\n"); }, ThrowsMessage<parse_error>(HasSubstr("runs.csv:2:1: a quoted field is never closed")));
+  EXPECT_THAT([] { parse("a\n\"open\n"); },
+              ThrowsMessage<parse_error>(HasSubstr("runs.csv:2:1: a quoted field is never closed")));
   EXPECT_THAT([] { parse("a,b\n\"x\"y,1\n"); }, ThrowsMessage<parse_error>(HasSubstr("after a closing quote")));
-  EXPECT_THAT([] { parse("a,a\n1,2\n"); }, ThrowsMessage<parse_error>(HasSubstr("runs.csv:1:3: the column 'a' appears twice")));
+  EXPECT_THAT([] { parse("a,a\n1,2\n"); },
+              ThrowsMessage<parse_error>(HasSubstr("runs.csv:1:3: the column 'a' appears twice")));
   EXPECT_THAT([] { parse("a,,c\n1,2,3\n"); }, ThrowsMessage<parse_error>(HasSubstr("has no name")));
 }
 
@@ -179,9 +184,11 @@ TEST(csv_test, tricky_text_in_tiny_chunks) {
   options.threads = 4;
   // A quoted line end right at a chunk boundary, CRLF, blank lines with blanks, a BOM, numbers
   // written several ways, and no line end at the end.
-  const auto data = parse("\xEF\xBB\xBF" "id,label,n\r\n1,\"a\nb\",1e3\r\n\r\n  \t\n2,\"c,\r\nd\",-0\n3, plain ,1.0\n"
-                          "4,\"\"\"q\"\"\",1",
-                          options);
+  const auto data = parse(
+      "\xEF\xBB\xBF"
+      "id,label,n\r\n1,\"a\nb\",1e3\r\n\r\n  \t\n2,\"c,\r\nd\",-0\n3, plain ,1.0\n"
+      "4,\"\"\"q\"\"\",1",
+      options);
   EXPECT_EQ(data.rows(), 4u);
   EXPECT_THAT(data.continuous("n").values(), ElementsAre(1000.0, -0.0, 1.0, 1.0));
   const auto& label = data.discrete("label");
@@ -196,7 +203,8 @@ TEST(csv_test, tricky_text_in_tiny_chunks) {
   // A trailing delimiter is one more (empty) field.
   EXPECT_THAT([] { parse("a,b\n1,2,\n"); },
               ThrowsMessage<parse_error>(HasSubstr("runs.csv:2:5: expected 2 fields as in the header, found 3")));
-  EXPECT_THAT([] { parse("a,b,\n1,2,\n"); }, ThrowsMessage<parse_error>(HasSubstr("runs.csv:1:5: a column in the header has no name")));
+  EXPECT_THAT([] { parse("a,b,\n1,2,\n"); },
+              ThrowsMessage<parse_error>(HasSubstr("runs.csv:1:5: a column in the header has no name")));
   // A column that turns out to hold text in a later chunk is read as labels throughout.
   options.default_kind = column_kind::automatic;
   const auto mixed = parse("x\n1\n2\n2.0\nlate\n", options);
@@ -204,7 +212,10 @@ TEST(csv_test, tricky_text_in_tiny_chunks) {
 }
 
 TEST(csv_test, the_scanner_reads_records_one_at_a_time) {
-  detail::csv_scanner scanner("\xEF\xBB\xBF" "a,b\n\n\"x\ny\",2\r\n3 , 4", "s.csv", ',');
+  detail::csv_scanner scanner(
+      "\xEF\xBB\xBF"
+      "a,b\n\n\"x\ny\",2\r\n3 , 4",
+      "s.csv", ',');
   std::vector<detail::csv_field> fields;
   ASSERT_TRUE(scanner.next(fields));
   EXPECT_EQ(fields[1].text, "b");

@@ -22,17 +22,24 @@ TEST(dataset_test, code_width_follows_cardinality) {
 }
 
 TEST(dataset_test, codes_must_index_states) {
-  EXPECT_THAT([] { discrete_column(variable("a", {"x", "y"}), std::vector<unsigned>{0, 2}); },
-              ThrowsMessage<data_error>(HasSubstr("column 'a' row 2: state code 2 is out of range (2 states)")));
+  EXPECT_THAT(
+      [] {
+        discrete_column(variable("a", {"x", "y"}), std::vector<unsigned>{0, 2});
+      },
+      ThrowsMessage<data_error>(HasSubstr("column 'a' row 2: state code 2 is out of range (2 states)")));
 }
 
 TEST(dataset_test, columns_must_agree) {
   dataset data("runs.csv");
   data.add(continuous_column("x", {1, 2, 3}));
-  EXPECT_THAT([&] { data.add(continuous_column("y", {1, 2})); },
-              ThrowsMessage<data_error>(HasSubstr("runs.csv: column 'y' has 2 rows, the others 3")));
+  EXPECT_THAT(
+      [&] {
+        data.add(continuous_column("y", {1, 2}));
+      },
+      ThrowsMessage<data_error>(HasSubstr("runs.csv: column 'y' has 2 rows, the others 3")));
   EXPECT_THAT([&] { data.add(continuous_column("x", {1, 2, 3})); }, ThrowsMessage<data_error>(HasSubstr("twice")));
-  EXPECT_THAT([&] { static_cast<void>(data.discrete("x")); }, ThrowsMessage<data_error>(HasSubstr("discretize it first")));
+  EXPECT_THAT([&] { static_cast<void>(data.discrete("x")); },
+              ThrowsMessage<data_error>(HasSubstr("discretize it first")));
   EXPECT_THAT([&] { static_cast<void>(data.at("z")); },
               ThrowsMessage<data_error>(HasSubstr("runs.csv: there is no column 'z' (columns: x)")));
 }

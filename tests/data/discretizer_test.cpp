@@ -3,9 +3,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-#include <random>
-
 #include <boost/math/distributions/normal.hpp>
+#include <random>
 
 namespace pgm {
 namespace {
@@ -47,12 +46,18 @@ TEST(discretizer_test, equal_width_edges) {
 
 TEST(discretizer_test, ties_merge_bins_and_a_constant_column_is_an_error) {
   EXPECT_THAT(quantile_edges(std::vector<double>{0, 0, 0, 0, 0, 0, 1, 2}, 4), ElementsAre(0, 0.25, 2));
-  EXPECT_THAT([] { static_cast<void>(quantile_edges(std::vector<double>{3, 3, 3}, 5, "z")); },
-              ThrowsMessage<data_error>(HasSubstr("column 'z' holds a single value")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(quantile_edges(std::vector<double>{3, 3, 3}, 5, "z"));
+      },
+      ThrowsMessage<data_error>(HasSubstr("column 'z' holds a single value")));
   EXPECT_THAT([] { static_cast<void>(quantile_edges(std::vector<double>{}, 5, "z")); },
               ThrowsMessage<data_error>(HasSubstr("no values")));
-  EXPECT_THAT([] { static_cast<void>(quantile_edges(std::vector<double>{1, std::nan("")}, 5, "z")); },
-              ThrowsMessage<data_error>(HasSubstr("column 'z' row 2: cannot discretize a value that is not finite")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(quantile_edges(std::vector<double>{1, std::nan("")}, 5, "z"));
+      },
+      ThrowsMessage<data_error>(HasSubstr("column 'z' row 2: cannot discretize a value that is not finite")));
 }
 
 TEST(discretizer_test, fitted_on_one_set_applied_to_another) {

@@ -1,11 +1,12 @@
 // Success prediction, explanation and the network-level prevention plan on a small stacking
 // network whose answers are worked out by hand.
 
+#include "pgm/decide/predict.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "pgm/decide/explain.hpp"
-#include "pgm/decide/predict.hpp"
 #include "pgm/decide/success_table.hpp"
 
 namespace pgm {
@@ -25,17 +26,16 @@ bayesian_network stacking() {
   const variable on_top("onTop", {"0", "1"});
   const double third = 1.0 / 3.0;
   // P(onTop = 1 | x, y), y fastest: only near the centre does the cube stay.
-  const double p[] = {0.1, 0.3, 0.1,  //
+  const double p[] = {0.1, 0.3,  0.1,  //
                       0.6, 0.95, 0.5,  //
-                      0.1, 0.2, 0.1};
+                      0.1, 0.2,  0.1};
   std::vector<double> values;
   for (double v : p) {
     values.push_back(1 - v);
     values.push_back(v);
   }
   return bayesian_network::from_tables({cpt<double>(x, {}, {third, third, third}),
-                                        cpt<double>(y, {}, {third, third, third}),
-                                        cpt<double>(colour, {}, {0.5, 0.5}),
+                                        cpt<double>(y, {}, {third, third, third}), cpt<double>(colour, {}, {0.5, 0.5}),
                                         cpt<double>(on_top, {x, y}, values)});
 }
 
@@ -68,8 +68,7 @@ TEST(predict_test, default_success_event_is_the_unique_sink_with_state_1) {
   const variable a("a", {"0", "1"});
   const variable b("b", {"0", "1"});
   const variable c("c", {"0", "1"});
-  const auto two_sinks = bayesian_network::from_tables(
-      {cpt<double>(a, {}), cpt<double>(b, {a}), cpt<double>(c, {a})});
+  const auto two_sinks = bayesian_network::from_tables({cpt<double>(a, {}), cpt<double>(b, {a}), cpt<double>(c, {a})});
   EXPECT_THAT([&] { static_cast<void>(default_success_event(two_sinks)); },
               ThrowsMessage<model_error>(HasSubstr("several variables could be the success variable (b, c)")));
   EXPECT_EQ(parse_success_event("c=0", two_sinks), (success_event{"c", "0"}));

@@ -1,13 +1,14 @@
 // Failure prevention on hand-built tables with known answers, against the plain per-
 // configuration search on random tables, and the prevention metric on hand-computed cases.
 
+#include "pgm/decide/prevent.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "pgm/decide/prevent.hpp"
 #include "support/enumeration.hpp"
 
 namespace pgm {
@@ -90,8 +91,12 @@ TEST(prevent_test, rejects_bad_input) {
               ::testing::ThrowsMessage<model_error>(HasSubstr("1 parents, got 2 controllable flags")));
   const auto colour = variable("colour", {"Red", "Blue"});
   const auto c = table_of({colour}, {0.1, 0.9});
-  EXPECT_THAT([&] { static_cast<void>(prevention_targets(c, 1, yes, {.epsilon = 0.8, .metric = prevention_options::distance::units})); },
-              ::testing::ThrowsMessage<model_error>(HasSubstr("'colour' has no interval edges")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(
+            prevention_targets(c, 1, yes, {.epsilon = 0.8, .metric = prevention_options::distance::units}));
+      },
+      ::testing::ThrowsMessage<model_error>(HasSubstr("'colour' has no interval edges")));
   EXPECT_THROW(static_cast<void>(prevention_targets(t, 1, yes, {.epsilon = 1.5})), model_error);
 }
 
@@ -100,8 +105,8 @@ std::vector<double> random_estimates(std::mt19937_64& random, std::size_t n, int
   std::vector<double> p(n);
   for (auto& v : p) {
     v = unit(random);
-    if (mode == 1) v = std::round(v * 4) / 4;  // many ties
-    if (mode == 2) v *= 0.79;                   // nothing above ε
+    if (mode == 1) v = std::round(v * 4) / 4;        // many ties
+    if (mode == 2) v *= 0.79;                        // nothing above ε
     if (mode == 3) v = std::round(v * 2) / 2 * 0.7;  // nothing above ε, many ties
   }
   return p;
@@ -163,7 +168,8 @@ TEST(prevent_test, units_match_an_exhaustive_scan) {
                              *var.midpoint(state_index(static_cast<state_index::rep>(from[k])));
           d += gap * gap;
         }
-        if (d < best_distance - 1e-9 || (std::abs(d - best_distance) <= 1e-9 && (p[v] > p[best] || (p[v] == p[best] && v < best)))) {
+        if (d < best_distance - 1e-9 ||
+            (std::abs(d - best_distance) <= 1e-9 && (p[v] > p[best] || (p[v] == p[best] && v < best)))) {
           best = v;
           best_distance = std::min(best_distance, d);
         }

@@ -1,11 +1,12 @@
 // The metrics by hand, the scenario file, and the protocol on a tiny scenario whose answers are
 // known: a deterministic task where the prior is the truth.
 
+#include "pgm/eval/experiment.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include "eval/tiny_scenario.hpp"
-#include "pgm/eval/experiment.hpp"
 
 namespace {
 
@@ -28,7 +29,8 @@ TEST(metrics_test, max_and_mean_difference_by_hand) {
 double value_of(const std::vector<experiment_point>& points, const std::string& strategy, const std::string& w,
                 std::size_t rows, const std::string& metric, std::size_t rep = 0) {
   for (const auto& p : points) {
-    if (p.strategy == strategy && p.weight == w && p.rows == rows && p.metric == metric && p.repetition == rep) return p.value;
+    if (p.strategy == strategy && p.weight == w && p.rows == rows && p.metric == metric && p.repetition == rep)
+      return p.value;
   }
   ADD_FAILURE() << "no point " << strategy << " w=" << w << " |D|=" << rows << " " << metric;
   return NAN;
@@ -48,7 +50,8 @@ TEST(experiment_test, a_prior_equal_to_the_truth_is_exact_at_zero_data) {
     // Direct-Replacement ignores the second cube: wrong where x2 = 2, i.e. by 1 there.
     EXPECT_EQ(value_of(points, "direct", "5", 0, "max_difference", rep), 1.0);
     // With data, MLE is exact wherever D has rows, so its mean difference falls.
-    EXPECT_LT(value_of(points, "mle", "0", 40, "mean_difference", rep), value_of(points, "mle", "0", 0, "mean_difference", rep));
+    EXPECT_LT(value_of(points, "mle", "0", 40, "mean_difference", rep),
+              value_of(points, "mle", "0", 0, "mean_difference", rep));
   }
   // |D| runs over 0, 10, 20, 30, 40.
   std::set<std::size_t> sizes;
@@ -122,8 +125,10 @@ TEST(scenario_test, errors_name_the_file_and_the_key) {
 }
 
 TEST(scenario_test, the_shipped_scenarios_load) {
-  for (const auto* name : {"2-stack-sim", "2-stack-reality", "2-stack-sim-to-real", "sphere-dropping", "stack-to-drop"}) {
-    const auto s = load_scenario(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "scenarios" / (std::string(name) + ".json"));
+  for (const auto* name :
+       {"2-stack-sim", "2-stack-reality", "2-stack-sim-to-real", "sphere-dropping", "stack-to-drop"}) {
+    const auto s =
+        load_scenario(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "scenarios" / (std::string(name) + ".json"));
     EXPECT_EQ(s.name, name);
     EXPECT_EQ(s.repetitions, 20U);
     EXPECT_EQ(s.subsets, 20U);

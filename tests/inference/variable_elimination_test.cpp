@@ -1,6 +1,8 @@
 // Variable elimination against brute-force enumeration of the joint, on random networks and
 // the published sachs network, plus the factor operations it is built from and its errors.
 
+#include "pgm/inference/variable_elimination.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -8,7 +10,6 @@
 #include <random>
 
 #include "pgm/inference/factor.hpp"
-#include "pgm/inference/variable_elimination.hpp"
 #include "pgm/io/bif.hpp"
 #include "support/enumeration.hpp"
 #include "support/random_network.hpp"
@@ -73,7 +74,8 @@ TEST(variable_elimination_test, matches_enumeration_on_random_networks) {
     std::vector<observation> e;
     for (std::size_t k = 0; k < observed; ++k) {
       const auto id = nodes[queried + k];
-      e.push_back({id, state_index(static_cast<state_index::rep>(random() % net.variables()[id.value()].cardinality()))});
+      e.push_back(
+          {id, state_index(static_cast<state_index::rep>(random() % net.variables()[id.value()].cardinality()))});
     }
     SCOPED_TRACE("seed " + std::to_string(seed));
     expect_matches_enumeration(net, q, e, elimination_heuristic::min_fill);
@@ -97,20 +99,29 @@ TEST(variable_elimination_test, posterior_by_name_is_normalized) {
 bayesian_network coin_and_lamp() {
   const variable coin("coin", {"heads", "tails"});
   const variable lamp("lamp", {"off", "on"});
-  return bayesian_network::from_tables({cpt<double>(coin, {}, {1.0, 0.0}),
-                                        cpt<double>(lamp, {coin}, {0.3, 0.7, 0.5, 0.5})});
+  return bayesian_network::from_tables(
+      {cpt<double>(coin, {}, {1.0, 0.0}), cpt<double>(lamp, {coin}, {0.3, 0.7, 0.5, 0.5})});
 }
 
 TEST(variable_elimination_test, reports_unknown_names_and_impossible_evidence) {
   const auto net = coin_and_lamp();
   EXPECT_THAT([&] { static_cast<void>(query(net, {"lamb"})); },
               ::testing::ThrowsMessage<model_error>(HasSubstr("no variable 'lamb' (variables: coin, lamp)")));
-  EXPECT_THAT([&] { static_cast<void>(query(net, {"lamp"}, {{"coin", "edge"}})); },
-              ::testing::ThrowsMessage<model_error>(HasSubstr("no state 'edge'")));
-  EXPECT_THAT([&] { static_cast<void>(query(net, {"lamp"}, {{"lamp", "on"}})); },
-              ::testing::ThrowsMessage<model_error>(HasSubstr("both queried and observed")));
-  EXPECT_THAT([&] { static_cast<void>(query(net, {"lamp"}, {{"coin", "tails"}})); },
-              ::testing::ThrowsMessage<impossible_evidence>(HasSubstr("coin=tails has probability 0")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(query(net, {"lamp"}, {{"coin", "edge"}}));
+      },
+      ::testing::ThrowsMessage<model_error>(HasSubstr("no state 'edge'")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(query(net, {"lamp"}, {{"lamp", "on"}}));
+      },
+      ::testing::ThrowsMessage<model_error>(HasSubstr("both queried and observed")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(query(net, {"lamp"}, {{"coin", "tails"}}));
+      },
+      ::testing::ThrowsMessage<impossible_evidence>(HasSubstr("coin=tails has probability 0")));
   const auto p = query(net, {"coin"}, {{"lamp", "on"}});
   EXPECT_NEAR(p.probability({"heads"}), 1.0, 1e-15);
 }

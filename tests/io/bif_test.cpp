@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <fstream>
 
-#include "support/random_network.hpp"
 #include "pgm/io/network_file.hpp"
+#include "support/random_network.hpp"
 
 namespace pgm {
 namespace {
@@ -73,19 +73,35 @@ TEST(bif_test, round_trip_keeps_every_bit_and_pgm_properties) {
 }
 
 TEST(bif_test, errors_are_located) {
-  EXPECT_THAT([] { static_cast<void>(parse_bif("variable a {\n  type discrete [ 2 ] { x, y };\n}\nprobability ( a | b ) {\n}\n", "m.bif")); },
-              ThrowsMessage<parse_error>(HasSubstr("m.bif:4:19: parent 'b' is not declared")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(
+            parse_bif("variable a {\n  type discrete [ 2 ] { x, y };\n}\nprobability ( a | b ) {\n}\n", "m.bif"));
+      },
+      ThrowsMessage<parse_error>(HasSubstr("m.bif:4:19: parent 'b' is not declared")));
   EXPECT_THAT([] { static_cast<void>(parse_bif("variable a {\n  type discrete [ 3 ] { x, y };\n}\n", "m.bif")); },
               ThrowsMessage<parse_error>(HasSubstr("m.bif:2:19: variable 'a' declares 3 states but lists 2")));
-  EXPECT_THAT([] { static_cast<void>(parse_bif("variable a {\n type discrete [ 2 ] { x, y };\n}\nprobability ( a ) {\n table 0.5, zero;\n}\n", "m.bif")); },
-              ThrowsMessage<parse_error>(HasSubstr("m.bif:5:13: expected a probability, found 'zero'")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(parse_bif(
+            "variable a {\n type discrete [ 2 ] { x, y };\n}\nprobability ( a ) {\n table 0.5, zero;\n}\n", "m.bif"));
+      },
+      ThrowsMessage<parse_error>(HasSubstr("m.bif:5:13: expected a probability, found 'zero'")));
   EXPECT_THAT([] { static_cast<void>(parse_bif("variable a {\n type discrete [ 2 ] { x, y };\n}\n", "m.bif")); },
               ThrowsMessage<parse_error>(HasSubstr("variable 'a' has no probability block")));
-  EXPECT_THAT([] { static_cast<void>(parse_bif("variable a {\n type discrete [ 2 ] { x, y };\n}\nprobability ( a ) {\n table 0.5, 0.6;\n}\n", "m.bif")); },
-              ThrowsMessage<parse_error>(HasSubstr("sums to 1.1")));
-  EXPECT_THAT([] { static_cast<void>(parse_bif("", "m.bif")); }, ThrowsMessage<parse_error>(HasSubstr("declares no variables")));
-  EXPECT_THAT([] { static_cast<void>(parse_bif("variable a { type discrete [ 2 ] { x, y }; }\nprobability ( a ) {\n", "m.bif")); },
-              ThrowsMessage<parse_error>(HasSubstr("found the end of the file")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(parse_bif(
+            "variable a {\n type discrete [ 2 ] { x, y };\n}\nprobability ( a ) {\n table 0.5, 0.6;\n}\n", "m.bif"));
+      },
+      ThrowsMessage<parse_error>(HasSubstr("sums to 1.1")));
+  EXPECT_THAT([] { static_cast<void>(parse_bif("", "m.bif")); },
+              ThrowsMessage<parse_error>(HasSubstr("declares no variables")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(parse_bif("variable a { type discrete [ 2 ] { x, y }; }\nprobability ( a ) {\n", "m.bif"));
+      },
+      ThrowsMessage<parse_error>(HasSubstr("found the end of the file")));
 }
 
 TEST(bif_test, missing_configurations_and_parent_tables) {
@@ -94,8 +110,9 @@ TEST(bif_test, missing_configurations_and_parent_tables) {
       "probability ( a ) { table 0.5, 0.5; }\n";
   EXPECT_THAT([&] { static_cast<void>(parse_bif(head + "probability ( b | a ) {\n (x) 0.5, 0.5;\n}\n", "m.bif")); },
               ThrowsMessage<parse_error>(HasSubstr("misses a parent configuration and has no 'default' line")));
-  EXPECT_THAT([&] { static_cast<void>(parse_bif(head + "probability ( b | a ) {\n table 0.5, 0.5, 0.5, 0.5;\n}\n", "m.bif")); },
-              ThrowsMessage<parse_error>(HasSubstr("which has parents, is ordered differently")));
+  EXPECT_THAT(
+      [&] { static_cast<void>(parse_bif(head + "probability ( b | a ) {\n table 0.5, 0.5, 0.5, 0.5;\n}\n", "m.bif")); },
+      ThrowsMessage<parse_error>(HasSubstr("which has parents, is ordered differently")));
   EXPECT_THAT([&] { static_cast<void>(parse_bif(head + "probability ( b | a ) {\n (z) 0.5, 0.5;\n}\n", "m.bif")); },
               ThrowsMessage<parse_error>(HasSubstr("m.bif:5:2: 'z' is not a state of 'a'")));
   EXPECT_THAT([&] { static_cast<void>(parse_bif(head + "probability ( b | a ) {\n (x) 0.5;\n}\n", "m.bif")); },
@@ -123,8 +140,10 @@ TEST(bif_test, writing_is_atomic) {
   const auto good = bayesian_network::from_tables({cpt<double>(variable("a", {"blue", "red"}), {})});
   EXPECT_THAT([&] { write_network(good, dir / "missing" / "net.bif"); },
               ThrowsMessage<io_error>(HasSubstr("does not exist")));
-  EXPECT_THAT([&] { write_network(good, dir / "net.txt"); }, ThrowsMessage<io_error>(HasSubstr("expected a .bif or .json file")));
-  EXPECT_THAT([&] { static_cast<void>(read_network(dir / "nothing.bif")); }, ThrowsMessage<io_error>(HasSubstr("cannot open")));
+  EXPECT_THAT([&] { write_network(good, dir / "net.txt"); },
+              ThrowsMessage<io_error>(HasSubstr("expected a .bif or .json file")));
+  EXPECT_THAT([&] { static_cast<void>(read_network(dir / "nothing.bif")); },
+              ThrowsMessage<io_error>(HasSubstr("cannot open")));
   std::filesystem::remove_all(dir);
 }
 

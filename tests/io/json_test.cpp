@@ -1,12 +1,11 @@
-#include "pgm/io/json_model.hpp"
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <sstream>
 
-#include "support/random_network.hpp"
 #include "pgm/io/cpt_csv.hpp"
+#include "pgm/io/json_model.hpp"
+#include "support/random_network.hpp"
 
 namespace pgm {
 namespace {
@@ -40,23 +39,37 @@ TEST(json_model_test, syntax_errors_have_line_and_column) {
 TEST(json_model_test, content_errors_name_the_path) {
   EXPECT_THAT([] { static_cast<void>(parse_model_json(R"({"format":"other","version":1})", "m.json")); },
               ThrowsMessage<data_error>(HasSubstr("m.json: /format: expected \"pgm-model\"")));
-  EXPECT_THAT([] { static_cast<void>(parse_model_json(R"({"format":"pgm-model","version":1,"variables":[{"name":"a","states":[1]}]})", "m.json")); },
-              ThrowsMessage<data_error>(HasSubstr("m.json: /variables/0/states/0: expected a string")));
-  EXPECT_THAT([] {
-    static_cast<void>(parse_model_json(
-        R"({"format":"pgm-model","version":1,"variables":[{"name":"a","states":["0"]},{"name":"b","states":["0"]}],"edges":[["a","b"],["b","a"]]})",
-        "m.json"));
-  }, ThrowsMessage<data_error>(HasSubstr("/edges/1: adding this edge closes the cycle b -> a -> b")));
-  EXPECT_THAT([] {
-    static_cast<void>(parse_model_json(
-        R"({"format":"pgm-model","version":1,"variables":[{"name":"a","states":["0","1"]}],"tables":[{"variable":"a","parents":[],"values":[[0.5,0.6]]}]})",
-        "m.json"));
-  }, ThrowsMessage<data_error>(HasSubstr("/tables/0: the distribution of 'a' sums to 1.1")));
-  EXPECT_THAT([] {
-    static_cast<void>(parse_model_json(
-        R"({"format":"pgm-model","version":1,"variables":[{"name":"a","states":["0","1"]},{"name":"b","states":["0"]}],"edges":[],"tables":[{"variable":"a","parents":["b"],"values":[[0.5,0.5]]},{"variable":"b","parents":[],"values":[[1]]}]})",
-        "m.json"));
-  }, ThrowsMessage<data_error>(HasSubstr("/tables: the table of 'a' has 1 parents, the graph 0")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(parse_model_json(
+            R"({"format":"pgm-model","version":1,"variables":[{"name":"a","states":[1]}]})", "m.json"));
+      },
+      ThrowsMessage<data_error>(HasSubstr("m.json: /variables/0/states/0: expected a string")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(
+            parse_model_json(R"({"format":"pgm-model","version":1,"variables":[{"name":"a","states":["0"]},{"name":"b")"
+                             R"(,"states":["0"]}],"edges":[["a","b"],["b","a"]]})",
+                             "m.json"));
+      },
+      ThrowsMessage<data_error>(HasSubstr("/edges/1: adding this edge closes the cycle b -> a -> b")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(
+            parse_model_json(R"({"format":"pgm-model","version":1,"variables":[{"name":"a","states":["0","1"]}])"
+                             R"(,"tables":[{"variable":"a","parents":[],"values":[[0.5,0.6]]}]})",
+                             "m.json"));
+      },
+      ThrowsMessage<data_error>(HasSubstr("/tables/0: the distribution of 'a' sums to 1.1")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(parse_model_json(
+            R"({"format":"pgm-model","version":1,"variables":[{"name":"a","states":["0","1"]},{"name":"b")"
+            R"(,"states":["0"]}],"edges":[],"tables":[{"variable":"a","parents":["b"])"
+            R"(,"values":[[0.5,0.5]]},{"variable":"b","parents":[],"values":[[1]]}]})",
+            "m.json"));
+      },
+      ThrowsMessage<data_error>(HasSubstr("/tables: the table of 'a' has 1 parents, the graph 0")));
 }
 
 TEST(discretization_json_test, round_trip_and_errors) {
@@ -64,8 +77,12 @@ TEST(discretization_json_test, round_trip_and_errors) {
   d.emplace("x", variable::intervals("x", {0, 0.1, 0.30000000000000004}, {"q", "cm", ""}));
   const auto back = parse_discretization_json(to_json(d).dump(), "e.json");
   EXPECT_EQ(back, d);
-  EXPECT_THAT([] { static_cast<void>(parse_discretization_json(R"({"format":"pgm-discretization","version":1,"variables":[{"name":"x","states":["0"]}]})", "e.json")); },
-              ThrowsMessage<data_error>(HasSubstr("/variables/0: a discretized variable needs interval edges")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(parse_discretization_json(
+            R"({"format":"pgm-discretization","version":1,"variables":[{"name":"x","states":["0"]}]})", "e.json"));
+      },
+      ThrowsMessage<data_error>(HasSubstr("/variables/0: a discretized variable needs interval edges")));
 }
 
 TEST(cpt_csv_test, round_trip) {

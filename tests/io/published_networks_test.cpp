@@ -52,7 +52,9 @@ INSTANTIATE_TEST_SUITE_P(bnlearn_repository, published_network_test,
                          ::testing::Values(published{"sachs.bif", 11, 178 + 89, 3},
                                            published{"water.bif", 32, 13484, 5},
                                            published{"pathfinder.bif", 109, 97851, 5}),
-                         [](const auto& param_info) { return std::string(std::filesystem::path(param_info.param.file).stem()); });
+                         [](const auto& param_info) {
+                           return std::string(std::filesystem::path(param_info.param.file).stem());
+                         });
 
 TEST(published_network_fit_test, sachs_is_recovered_from_its_own_samples) {
   const auto file = std::filesystem::path(PGM_NETWORKS_DIR) / "sachs.bif";

@@ -1,10 +1,10 @@
-#include "pgm/learn/sufficient_statistics.hpp"
-
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <map>
 #include <random>
+
+#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 namespace {
@@ -75,7 +75,8 @@ random_family make_random_family(std::size_t rows, std::uint64_t seed) {
   std::vector<std::vector<std::uint32_t>> columns(cards.size() + 1, std::vector<std::uint32_t>(rows));
   for (std::size_t r = 0; r < rows; ++r) {
     std::vector<std::uint32_t> key;
-    for (std::size_t k = 0; k < cards.size(); ++k) key.push_back(columns[k][r] = static_cast<std::uint32_t>(engine() % cards[k]));
+    for (std::size_t k = 0; k < cards.size(); ++k)
+      key.push_back(columns[k][r] = static_cast<std::uint32_t>(engine() % cards[k]));
     key.push_back(columns.back()[r] = static_cast<std::uint32_t>(engine() % 2));
     ++f.naive[key];
   }

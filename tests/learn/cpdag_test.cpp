@@ -1,13 +1,14 @@
 // The CPDAG type, Meek's rules one by one, the CPDAG of a DAG, the Dor–Tarsi extension and
 // the structural Hamming distance.
 
+#include "pgm/learn/cpdag.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
-#include "pgm/learn/cpdag.hpp"
 #include "pgm/learn/orientation.hpp"
 #include "pgm/learn/structural_hamming_distance.hpp"
 #include "support/random_network.hpp"

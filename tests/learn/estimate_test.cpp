@@ -5,8 +5,8 @@
 
 #include <random>
 
-#include "support/random_network.hpp"
 #include "pgm/learn/fit.hpp"
+#include "support/random_network.hpp"
 
 namespace pgm {
 namespace {
@@ -63,10 +63,16 @@ TEST(estimate_test, dirichlet_k2_and_bdeu_by_hand) {
 TEST(estimate_test, explicit_pseudo_counts) {
   const auto t = estimate(small_counts(), pseudo_counts_prior{{1, 0, 0, 2, 3, 1}});
   EXPECT_THAT(values(t), Pointwise(DoubleEq(), {2.0 / 4, 2.0 / 4, 3.0 / 6, 3.0 / 6, 0.75, 0.25}));
-  EXPECT_THAT([] { static_cast<void>(estimate(small_counts(), pseudo_counts_prior{{1, 2}})); },
-              ThrowsMessage<model_error>(HasSubstr("need 6 values, got 2")));
-  EXPECT_THAT([] { static_cast<void>(estimate(small_counts(), pseudo_counts_prior{{1, 0, 0, 2, 3, -1}})); },
-              ThrowsMessage<model_error>(HasSubstr("a pseudo-count must be a finite number ≥ 0, got -1")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(estimate(small_counts(), pseudo_counts_prior{{1, 2}}));
+      },
+      ThrowsMessage<model_error>(HasSubstr("need 6 values, got 2")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(estimate(small_counts(), pseudo_counts_prior{{1, 0, 0, 2, 3, -1}}));
+      },
+      ThrowsMessage<model_error>(HasSubstr("a pseudo-count must be a finite number ≥ 0, got -1")));
 }
 
 cpt<double> prior_table() {
@@ -81,10 +87,16 @@ TEST(estimate_test, weighted_prior_eq8_by_hand) {
 
 TEST(estimate_test, weighted_prior_shape_and_weight_are_checked) {
   const cpt<double> wrong(variable("c", {"0", "1"}), {variable("p", {"a", "b"})});
-  EXPECT_THAT([&] { static_cast<void>(estimate(small_counts(), weighted_prior{wrong, 1.0})); },
-              ThrowsMessage<model_error>(HasSubstr("(2 states × 2 configurations) does not match the shape of 'c' (2 × 3)")));
-  EXPECT_THAT([] { static_cast<void>(estimate(small_counts(), weighted_prior{prior_table(), -1.0})); },
-              ThrowsMessage<model_error>(HasSubstr("the prior weight w must be a finite number ≥ 0")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(estimate(small_counts(), weighted_prior{wrong, 1.0}));
+      },
+      ThrowsMessage<model_error>(HasSubstr("(2 states × 2 configurations) does not match the shape of 'c' (2 × 3)")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(estimate(small_counts(), weighted_prior{prior_table(), -1.0}));
+      },
+      ThrowsMessage<model_error>(HasSubstr("the prior weight w must be a finite number ≥ 0")));
   EXPECT_THROW(static_cast<void>(estimate(small_counts(), weighted_prior{prior_table(), std::nan("")})), model_error);
 }
 
@@ -206,10 +218,16 @@ TEST(parameter_prior_test, a_users_prior_fits_a_network_globally_and_per_node) {
 }
 
 TEST(parameter_prior_test, errors_name_the_prior_and_the_node) {
-  EXPECT_THAT([] { (void)estimate(small_counts(), fixed_counts{{1, 2}}); },
-              ThrowsMessage<model_error>(HasSubstr("the prior 'fixed': the pseudo-counts of 'c' need 6 values, got 2")));
-  EXPECT_THAT([] { (void)estimate(small_counts(), fixed_counts{{1, 1, 1, -2, 1, 1}}); },
-              ThrowsMessage<model_error>(HasSubstr("the prior 'fixed': a pseudo-count must be a finite number ≥ 0, got -2")));
+  EXPECT_THAT(
+      [] {
+        (void)estimate(small_counts(), fixed_counts{{1, 2}});
+      },
+      ThrowsMessage<model_error>(HasSubstr("the prior 'fixed': the pseudo-counts of 'c' need 6 values, got 2")));
+  EXPECT_THAT(
+      [] {
+        (void)estimate(small_counts(), fixed_counts{{1, 1, 1, -2, 1, 1}});
+      },
+      ThrowsMessage<model_error>(HasSubstr("the prior 'fixed': a pseudo-count must be a finite number ≥ 0, got -2")));
 }
 
 }  // namespace

@@ -33,8 +33,8 @@ std::vector<double> naive_mle(const dataset& data, const network_structure& s, v
     const std::vector<std::uint32_t> key(codes.begin(), codes.end());
     for (std::size_t x = 0; x < j; ++x) {
       const auto m = marginal.find(key);
-      values[u * j + x] = m == marginal.end() ? 1.0 / static_cast<double>(j)
-                                              : joint[{key, static_cast<std::uint32_t>(x)}] / m->second;
+      values[u * j + x] =
+          m == marginal.end() ? 1.0 / static_cast<double>(j) : joint[{key, static_cast<std::uint32_t>(x)}] / m->second;
     }
   }
   return values;
@@ -91,12 +91,21 @@ TEST(fit_test, structure_from_data_and_its_errors) {
   data.add(continuous_column("z", {0.5, 0.7}));
   const auto s = structure_from_data(data, {{"y", "x"}});
   EXPECT_EQ(s.variables().front().name(), "x");  // data column order
-  EXPECT_THAT([&] { static_cast<void>(structure_from_data(data, {{"x", "w"}})); },
-              ThrowsMessage<data_error>(HasSubstr("runs.csv: there is no column 'w'")));
-  EXPECT_THAT([&] { static_cast<void>(structure_from_data(data, {{"x", "z"}})); },
-              ThrowsMessage<data_error>(HasSubstr("'z' holds continuous values")));
-  EXPECT_THAT([&] { static_cast<void>(structure_from_data(data, {{"x", "y"}, {"y", "x"}})); },
-              ThrowsMessage<not_a_dag>(HasSubstr("y -> x -> y")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(structure_from_data(data, {{"x", "w"}}));
+      },
+      ThrowsMessage<data_error>(HasSubstr("runs.csv: there is no column 'w'")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(structure_from_data(data, {{"x", "z"}}));
+      },
+      ThrowsMessage<data_error>(HasSubstr("'z' holds continuous values")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(structure_from_data(data, {{"x", "y"}, {"y", "x"}}));
+      },
+      ThrowsMessage<not_a_dag>(HasSubstr("y -> x -> y")));
 }
 
 TEST(fit_test, states_must_match_the_model) {

@@ -3,6 +3,8 @@
 // network, measured by structural Hamming distance; determinism across thread counts;
 // background knowledge.
 
+#include "pgm/learn/pc.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -15,7 +17,6 @@
 
 #include "pgm/inference/sampling.hpp"
 #include "pgm/io/bif.hpp"
-#include "pgm/learn/pc.hpp"
 #include "pgm/learn/structural_hamming_distance.hpp"
 #include "support/random_network.hpp"
 
@@ -177,7 +178,8 @@ TEST(pc_test, tiers_forbidden_and_required) {
   // Forbidding both directions removes a true edge without a test.
   r = learn(data, {.knowledge = {.forbidden = {{"a", "b"}, {"b", "a"}}}});
   EXPECT_FALSE(r.graph.adjacent(r.graph.id("a"), r.graph.id("b")));
-  const auto removed = std::find_if(r.removed.begin(), r.removed.end(), [](const separation& s) { return s.by_knowledge; });
+  const auto removed =
+      std::find_if(r.removed.begin(), r.removed.end(), [](const separation& s) { return s.by_knowledge; });
   ASSERT_NE(removed, r.removed.end());
   EXPECT_EQ(r.graph.name(removed->x), "a");
   // Requiring a -> c keeps that edge although a ⟂ c | b.
@@ -276,10 +278,11 @@ TEST(pc_test, stacking_like_parents_of_on_top2) {
   }
   EXPECT_EQ(shd(r, net), 0u);
   // With the outcomes last in tiers, the same graph.
-  const auto tiered = learn(data, {.test = ci_test::g_squared,
-                                   .knowledge = {.tiers = {{"xOff1", "yOff1", "xOff2", "yOff2", "colorUp1", "colorUp2", "colorDown"},
-                                                           {"onTop1"},
-                                                           {"onTop2"}}}});
+  const auto tiered =
+      learn(data, {.test = ci_test::g_squared,
+                   .knowledge = {.tiers = {{"xOff1", "yOff1", "xOff2", "yOff2", "colorUp1", "colorUp2", "colorDown"},
+                                           {"onTop1"},
+                                           {"onTop2"}}}});
   EXPECT_EQ(tiered.graph, r.graph);
 }
 

@@ -41,8 +41,8 @@ TEST(analytic_test, centred_stack_succeeds_and_a_cube_beyond_half_its_width_fall
   const auto two = shipped("2-stack");
   const std::map<std::string, double> centred{{"xOff1", 0.0}, {"yOff1", 0.0}, {"xOff2", 0.0}, {"yOff2", 0.0}};
   EXPECT_GT(rate(pinned(two, centred), "analytic", 20000), 0.99);
-  EXPECT_GT(analytic_success_probability(two, {{"xOff1", {-0.4, 0.4}}, {"yOff1", {-0.4, 0.4}},
-                                               {"xOff2", {-0.4, 0.4}}, {"yOff2", {-0.4, 0.4}}}),
+  EXPECT_GT(analytic_success_probability(
+                two, {{"xOff1", {-0.4, 0.4}}, {"yOff1", {-0.4, 0.4}}, {"xOff2", {-0.4, 0.4}}, {"yOff2", {-0.4, 0.4}}}),
             0.98);
   // Beyond half the width (2.5 cm) the cube falls; release noise blurs the edge a little.
   EXPECT_LT(rate(pinned(shipped("1-stack"), {{"xOff1", 3.0}, {"dropOff1", 1.0}}), "analytic", 20000), 0.05);
@@ -78,9 +78,9 @@ TEST(analytic_test, sphere_lands_in_a_glass_and_the_plate_loses_more_than_the_bo
   EXPECT_GT(loss("drop-plate"), 0.5);
   EXPECT_LT(loss("drop-bowl"), 0.2);
   // Far off the axis the sphere misses.
-  EXPECT_LT(rate(pinned(shipped("drop-glass"), {{"xOff", 6.0}, {"yOff", 6.0}, {"scalingFactor", 0.5}}), "analytic",
-                 5000),
-            0.01);
+  EXPECT_LT(
+      rate(pinned(shipped("drop-glass"), {{"xOff", 6.0}, {"yOff", 6.0}, {"scalingFactor", 0.5}}), "analytic", 5000),
+      0.01);
 }
 
 TEST(analytic_test, same_data_for_any_thread_count) {
@@ -125,8 +125,9 @@ TEST(analytic_test, unknown_backend_is_an_error) {
   simulate_options o;
   o.backend = "unity";
   o.rows = 1;
-  EXPECT_THAT([&] { (void)simulate(shipped("1-stack"), o); },
-              ::testing::ThrowsMessage<data_error>(HasSubstr("unknown simulator back-end 'unity' (available: analytic")));
+  EXPECT_THAT(
+      [&] { (void)simulate(shipped("1-stack"), o); },
+      ::testing::ThrowsMessage<data_error>(HasSubstr("unknown simulator back-end 'unity' (available: analytic")));
 }
 
 // Monte-Carlo rates per Table I box agree with the integrated probability within 4.5
@@ -195,11 +196,12 @@ TEST(analytic_test, monte_carlo_agrees_with_integrated_probability) {
 TEST(analytic_test, integration_is_accurate_and_quick) {
   const auto two = shipped("2-stack");
   const integration_options fine{32, 64, 4096, 8192, 512, 16384};
-  for (const auto& box : std::vector<variable_box>{{},
-                                                   {{"xOff1", {0.4, 1.4}}, {"xOff2", {-3, -1.4}}},
-                                                   {{"xOff1", {-0.4, 0.4}}, {"yOff1", {1.4, 3}}, {"dropOff2", {4.6, 10}}}}) {
-    EXPECT_NEAR(analytic_outcome_probability(two, "onTop2", box), analytic_outcome_probability(two, "onTop2", box, fine),
-                1e-3);
+  for (const auto& box :
+       std::vector<variable_box>{{},
+                                 {{"xOff1", {0.4, 1.4}}, {"xOff2", {-3, -1.4}}},
+                                 {{"xOff1", {-0.4, 0.4}}, {"yOff1", {1.4, 3}}, {"dropOff2", {4.6, 10}}}}) {
+    EXPECT_NEAR(analytic_outcome_probability(two, "onTop2", box),
+                analytic_outcome_probability(two, "onTop2", box, fine), 1e-3);
   }
   const auto glass = shipped("drop-glass");
   const variable_box box{{"xOff", {1.2, 3.6}}, {"scalingFactor", {0.4, 0.52}}};

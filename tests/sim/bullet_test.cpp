@@ -3,6 +3,8 @@
 // Sizes stay small so that the suite also runs quickly under the sanitizers. Built only when
 // the pgm_bullet plugin is (its objects register "bullet").
 
+#include "pgm/sim/bullet.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -11,10 +13,8 @@
 #include <cstdlib>
 #include <vector>
 
-#include "sim/sim_support.hpp"
-
 #include "pgm/sim/agreement.hpp"
-#include "pgm/sim/bullet.hpp"
+#include "sim/sim_support.hpp"
 
 namespace pgm::sim {
 namespace {
@@ -179,8 +179,15 @@ TEST(bullet_test, three_cubes_fall_as_the_analytic_model_says) {
   // inside the edge (the largest margin possible), except cubeDown's at the end: the three
   // cubes' centre of mass lies 2.59 cm out, 0.38 cm beyond it, so the third cube brings the
   // stack down.
-  auto leaning = pinned(three, {{"xOff1", 1.37}, {"xOff2", 0.92}, {"xOff3", 1.83}, {"yOff1", 0.0}, {"yOff2", 0.0},
-                                {"yOff3", 0.0}, {"dropOff1", 0.5}, {"dropOff2", 0.5}, {"dropOff3", 0.5}});
+  auto leaning = pinned(three, {{"xOff1", 1.37},
+                                {"xOff2", 0.92},
+                                {"xOff3", 1.83},
+                                {"yOff1", 0.0},
+                                {"yOff2", 0.0},
+                                {"yOff3", 0.0},
+                                {"dropOff1", 0.5},
+                                {"dropOff2", 0.5},
+                                {"dropOff3", 0.5}});
   std::get<stacking_physics>(leaning.physics).noise_base = 0.02;
   for (const auto* backend : {"analytic", "bullet"}) {
     EXPECT_GT(rate(leaning, backend, 40, 7, "onTop2"), 0.9) << backend;

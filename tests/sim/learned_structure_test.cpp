@@ -28,9 +28,10 @@ TEST(learned_structure_test, two_stack_parents_of_on_top2_are_the_four_offsets) 
   pc.alpha = 0.01;
   // Outcomes come last, and the second cube's outcome is read as the paper's model reads it:
   // a function of the offsets, not of whether the first cube stayed.
-  pc.knowledge.tiers = {{"xOff1", "yOff1", "dropOff1", "colorUp1", "xOff2", "yOff2", "dropOff2", "colorUp2", "colorDown"},
-                        {"onTop1"},
-                        {"onTop2"}};
+  pc.knowledge.tiers = {
+      {"xOff1", "yOff1", "dropOff1", "colorUp1", "xOff2", "yOff2", "dropOff2", "colorUp2", "colorDown"},
+      {"onTop1"},
+      {"onTop2"}};
   pc.knowledge.forbidden = {{"onTop1", "onTop2"}};
   const auto learned = pc_stable(data, pc).graph;
 

@@ -3,13 +3,11 @@
 // values, and success rates per configuration.
 
 #include <map>
-
 #include <nlohmann/json.hpp>
-
-#include "pgm/detail/file.hpp"
 #include <string>
 #include <vector>
 
+#include "pgm/detail/file.hpp"
 #include "pgm/sim/analytic_probability.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task.hpp"
@@ -25,7 +23,8 @@ inline task_definition shipped(const std::string& name) {
 /// 2-Stack with a third cube (xOff3, yOff3, dropOff3, colorUp3, onTop3) released on the
 /// second one, the same way, and onTop3 as success.
 inline task_definition three_stack() {
-  auto doc = nlohmann::json::parse(pgm::detail::read_file(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "2-stack.json"));
+  auto doc =
+      nlohmann::json::parse(pgm::detail::read_file(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "2-stack.json"));
   doc["name"] = "3-stack";
   auto& variables = doc["variables"];
   const auto count = variables.size();
@@ -62,8 +61,8 @@ inline double success_rate(const dataset& data, const std::string& outcome) {
   return data.rows() ? n / static_cast<double>(data.rows()) : 0.0;
 }
 
-inline double rate(const task_definition& task, const std::string& backend, std::size_t rows,
-                   std::uint64_t seed = 7, const std::string& outcome = {}) {
+inline double rate(const task_definition& task, const std::string& backend, std::size_t rows, std::uint64_t seed = 7,
+                   const std::string& outcome = {}) {
   simulate_options o;
   o.backend = backend;
   o.rows = rows;
@@ -78,8 +77,8 @@ struct box_counts {
   std::vector<double> rows;
 };
 
-inline box_counts count_by_box(const dataset& data, const std::string& outcome,
-                               const std::vector<std::string>& names, const std::vector<double>& edges) {
+inline box_counts count_by_box(const dataset& data, const std::string& outcome, const std::vector<std::string>& names,
+                               const std::vector<double>& edges) {
   const std::size_t bins = edges.size() - 1;
   std::size_t boxes = 1;
   for (std::size_t i = 0; i < names.size(); ++i) boxes *= bins;

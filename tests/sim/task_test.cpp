@@ -97,15 +97,18 @@ TEST(task_test, errors_name_the_file_and_the_key) {
   EXPECT_THAT(error_of("{ \"format\": "), HasSubstr("bad.json:1:"));
   EXPECT_THAT(error_of(with(good, "\"success\": \"onTop1\"", "\"success\": \"colorDown\"")),
               HasSubstr("bad.json: /success: 'colorDown' is not an outcome variable"));
-  EXPECT_THAT(error_of(with(good, "\"sd\": 2.0", "\"sd\": -1")), HasSubstr("bad.json: /variables/0/distribution/sd: expected a positive number"));
+  EXPECT_THAT(error_of(with(good, "\"sd\": 2.0", "\"sd\": -1")),
+              HasSubstr("bad.json: /variables/0/distribution/sd: expected a positive number"));
   EXPECT_THAT(error_of(with(good, "\"type\": \"normal\"", "\"type\": \"gamma\"")),
               HasSubstr("/variables/0/distribution/type: expected \"normal\""));
-  EXPECT_THAT(error_of(with(good, "\"format\": \"pgm-task\",", "")), HasSubstr("bad.json: /: the key 'format' is missing"));
+  EXPECT_THAT(error_of(with(good, "\"format\": \"pgm-task\",", "")),
+              HasSubstr("bad.json: /: the key 'format' is missing"));
   EXPECT_THAT(error_of(with(good, "\"xOff1 -> onTop1\"", "\"xOff1 -> nothing\"")),
               HasSubstr("/structure/0: 'nothing' is not a variable of the task"));
   EXPECT_THAT(error_of(with(good, "\"name\": \"dropOff1\"", "\"name\": \"height1\"")),
               HasSubstr("/physics/model: the model \"stacking\" needs the continuous variable 'dropOff1'"));
-  EXPECT_THAT(error_of(with(good, "\"cube_size\": 5.0", "\"cube_size\": \"big\"")), HasSubstr("/physics/cube_size: expected a number"));
+  EXPECT_THAT(error_of(with(good, "\"cube_size\": 5.0", "\"cube_size\": \"big\"")),
+              HasSubstr("/physics/cube_size: expected a number"));
   EXPECT_THAT(error_of(with(good, "\"tipping_margin\": {", "\"tipping_margin\": {\"later\": 2.5,")),
               HasSubstr("/physics/analytic/tipping_margin/later: must be below the supporting half-width"));
   EXPECT_THAT(error_of(with(good, "\"cube_mass\": 0.1", "\"cube_mass\": 0.1, \"time_step\": 0")),

@@ -27,7 +27,8 @@ inline std::vector<double> enumerate_joint(const bayesian_network& network, std:
   std::vector<double> out(out_size, 0.0);
   std::vector<std::size_t> state(n, 0);
   std::vector<std::vector<variable_id>> parents(n);
-  for (std::size_t i = 0; i < n; ++i) parents[i] = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
+  for (std::size_t i = 0; i < n; ++i)
+    parents[i] = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
   while (true) {
     bool consistent = true;
     for (const auto& o : observed) consistent = consistent && state[o.variable.value()] == o.state.value();

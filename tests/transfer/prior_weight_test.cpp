@@ -1,11 +1,12 @@
 // Choosing w from the target data, and proposing correspondences.
 
+#include "pgm/transfer/prior_weight.hpp"
+
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <boost/math/special_functions/beta.hpp>
 
-#include "pgm/transfer/prior_weight.hpp"
 #include "pgm/transfer/propose.hpp"
 
 namespace {
@@ -69,7 +70,8 @@ TEST(propose_test, stacking_proposes_the_second_cube_as_related_to_the_first) {
     return variable::intervals(name, {-3, -1.4, -0.4, 0.4, 1.4, 3}, std::move(tags));
   };
   const variable on1("onTop1", {"0", "1"}), on2("onTop2", {"0", "1"});
-  const network_structure prior({offset("xOff1", x), offset("yOff1", y), on1}, {{"xOff1", "onTop1"}, {"yOff1", "onTop1"}});
+  const network_structure prior({offset("xOff1", x), offset("yOff1", y), on1},
+                                {{"xOff1", "onTop1"}, {"yOff1", "onTop1"}});
   const network_structure target({offset("xOff1", x), offset("yOff1", y), offset("xOff2", x), offset("yOff2", y), on2},
                                  {{"xOff1", "onTop2"}, {"yOff1", "onTop2"}, {"xOff2", "onTop2"}, {"yOff2", "onTop2"}});
   const auto map = propose_correspondence({&target}, {&prior});

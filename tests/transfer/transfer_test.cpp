@@ -62,9 +62,11 @@ TEST_F(two_stack, direct_reads_the_first_cube_for_all_625_parameters) {
   ASSERT_EQ(result.table().configurations(), 625U);
   for (std::size_t u = 0; u < 625; ++u) {
     const auto codes = result.table().parent_codes(config_index(static_cast<config_index::rep>(u)));
-    EXPECT_EQ(result.table().column(config_index(static_cast<config_index::rep>(u)))[1], success(prior, {codes[0], codes[1]}));
+    EXPECT_EQ(result.table().column(config_index(static_cast<config_index::rep>(u)))[1],
+              success(prior, {codes[0], codes[1]}));
   }
-  EXPECT_EQ(result.describe_sources(result.table().configuration(std::vector<std::size_t>{2, 3, 4, 0})), "xOff1=2, yOff1=3");
+  EXPECT_EQ(result.describe_sources(result.table().configuration(std::vector<std::size_t>{2, 3, 4, 0})),
+            "xOff1=2, yOff1=3");
 }
 
 TEST_F(two_stack, cross_reads_the_second_cube_as_the_first) {
@@ -148,20 +150,25 @@ TEST(transfer_test, stack_to_drop_25_to_125_by_cross_with_midpoints) {
     }
   }
   EXPECT_THAT([&] { static_cast<void>(direct_replacement{}(problem)); },
-              ThrowsMessage<model_error>(HasSubstr("Direct-Replacement leaves the prior's parent 'xOff1' of 'onTop1' unassigned")));
+              ThrowsMessage<model_error>(
+                  HasSubstr("Direct-Replacement leaves the prior's parent 'xOff1' of 'onTop1' unassigned")));
 }
 
 TEST(transfer_test, sim_to_real_maps_points_into_bins_and_pins_what_reality_holds_fixed) {
   const auto prior = distinct_table(outcome_2, {offset("xOff1"), offset("yOff1"), offset("xOff2"), offset("yOff2")}, 9);
   const variable x1("xOff1", {"0", "0.9", "2.2"}), x2("xOff2", {"0", "0.9", "2.2"});
   const std::size_t bin[] = {2, 3, 4};  // 0 ∈ [-0.4, 0.4), 0.9 ∈ [0.4, 1.4), 2.2 ∈ [1.4, 3]
-  EXPECT_THAT([&] {
-    static_cast<void>(direct_replacement{}(transfer_problem(prior, outcome_2, {x1, x2}, parse_correspondence("onTop2=onTop2"))));
-  }, ThrowsMessage<model_error>(HasSubstr("pin it with 'yOff1@<value>' or marginalize it with 'yOff1@*'")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(
+            direct_replacement{}(transfer_problem(prior, outcome_2, {x1, x2}, parse_correspondence("onTop2=onTop2"))));
+      },
+      ThrowsMessage<model_error>(HasSubstr("pin it with 'yOff1@<value>' or marginalize it with 'yOff1@*'")));
   const transfer_problem problem(prior, outcome_2, {x1, x2}, parse_correspondence("onTop2=onTop2,yOff1@0,yOff2@0"));
   const auto result = direct_replacement{}(problem);
   for (std::size_t a = 0; a < 3; ++a) {
-    for (std::size_t b = 0; b < 3; ++b) EXPECT_EQ(success(result.table(), {a, b}), success(prior, {bin[a], 2, bin[b], 2}));
+    for (std::size_t b = 0; b < 3; ++b)
+      EXPECT_EQ(success(result.table(), {a, b}), success(prior, {bin[a], 2, bin[b], 2}));
   }
 }
 
@@ -192,16 +199,25 @@ TEST(transfer_test, overlap_matching_weights_prior_intervals_by_length) {
 TEST(transfer_test, mismatched_children_and_unmatched_states_are_errors) {
   const auto prior = distinct_table(outcome_1, {offset("xOff1")});
   const variable three("onTop2", {"0", "1", "2"});
-  EXPECT_THAT([&] {
-    static_cast<void>(direct_replacement{}(transfer_problem(prior, three, {offset("xOff1")}, parse_correspondence("onTop2=onTop1"))));
-  }, ThrowsMessage<model_error>(HasSubstr("the prior has no state '2'")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(direct_replacement{}(
+            transfer_problem(prior, three, {offset("xOff1")}, parse_correspondence("onTop2=onTop1"))));
+      },
+      ThrowsMessage<model_error>(HasSubstr("the prior has no state '2'")));
   const variable colour("xOff1", {"red", "blue"});
-  EXPECT_THAT([&] {
-    static_cast<void>(direct_replacement{}(transfer_problem(prior, outcome_2, {colour}, parse_correspondence("onTop2=onTop1"))));
-  }, ThrowsMessage<model_error>(HasSubstr("state 'red' has no value on the prior's scale")));
-  EXPECT_THAT([&] { static_cast<void>(minimal_replacement{}(transfer_problem(prior, variable("onTop2", {"no", "yes"}), {offset("xOff1")},
-                                                                             parse_correspondence("onTop2=onTop1")))); },
-              ThrowsMessage<model_error>(HasSubstr("has no success state '1'")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(
+            direct_replacement{}(transfer_problem(prior, outcome_2, {colour}, parse_correspondence("onTop2=onTop1"))));
+      },
+      ThrowsMessage<model_error>(HasSubstr("state 'red' has no value on the prior's scale")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(minimal_replacement{}(transfer_problem(
+            prior, variable("onTop2", {"no", "yes"}), {offset("xOff1")}, parse_correspondence("onTop2=onTop1"))));
+      },
+      ThrowsMessage<model_error>(HasSubstr("has no success state '1'")));
 }
 
 TEST(transfer_test, correspondence_syntax) {
@@ -263,12 +279,23 @@ TEST(transfer_test, weighted_transfer_identities_on_random_networks) {
 TEST(transfer_test, map_names_are_checked_against_both_networks) {
   const auto prior = bayesian_network::from_tables(
       {cpt<double>(offset("xOff1"), {}, std::vector<double>(5, 0.2)), distinct_table(outcome_1, {offset("xOff1")})});
-  const network_structure target({offset("xOff1"), offset("xOff2"), outcome_2}, {{"xOff1", "onTop2"}, {"xOff2", "onTop2"}});
-  EXPECT_THAT([&] { static_cast<void>(transfer_priors(prior, target, parse_correspondence("onTop2=onTop9"), direct_replacement{})); },
-              ThrowsMessage<model_error>(HasSubstr("the map's transferred node 'onTop9' is not a variable of the prior network")));
-  EXPECT_THAT([&] { static_cast<void>(transfer_priors(prior, target, parse_correspondence("onTop2=onTop1,xOff3~xOff1"), cross_replacement{})); },
-              ThrowsMessage<model_error>(HasSubstr("the map's related variable 'xOff3' is not a variable of the target network")));
-  const auto priors = transfer_priors(prior, target, parse_correspondence("onTop2=onTop1,xOff2~xOff1"), cross_replacement{});
+  const network_structure target({offset("xOff1"), offset("xOff2"), outcome_2},
+                                 {{"xOff1", "onTop2"}, {"xOff2", "onTop2"}});
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(transfer_priors(prior, target, parse_correspondence("onTop2=onTop9"), direct_replacement{}));
+      },
+      ThrowsMessage<model_error>(
+          HasSubstr("the map's transferred node 'onTop9' is not a variable of the prior network")));
+  EXPECT_THAT(
+      [&] {
+        static_cast<void>(
+            transfer_priors(prior, target, parse_correspondence("onTop2=onTop1,xOff3~xOff1"), cross_replacement{}));
+      },
+      ThrowsMessage<model_error>(
+          HasSubstr("the map's related variable 'xOff3' is not a variable of the target network")));
+  const auto priors =
+      transfer_priors(prior, target, parse_correspondence("onTop2=onTop1,xOff2~xOff1"), cross_replacement{});
   EXPECT_EQ(priors.at("onTop2").table().configurations(), 25U);
 }
 

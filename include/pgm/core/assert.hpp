@@ -9,12 +9,11 @@
 #ifdef NDEBUG
 #define PGM_ASSERT(condition, message) static_cast<void>(0)
 #else
-#define PGM_ASSERT(condition, message)                                                 \
-  do {                                                                                 \
-    if (!(condition)) {                                                                \
-      std::fprintf(stderr, "%s:%d: assertion failed: %s (%s)\n", __FILE__, __LINE__, \
-                   #condition, message);                                              \
-      std::abort();                                                                    \
-    }                                                                                  \
+#define PGM_ASSERT(condition, message)                                                                     \
+  do {                                                                                                     \
+    if (!(condition)) {                                                                                    \
+      std::fprintf(stderr, "%s:%d: assertion failed: %s (%s)\n", __FILE__, __LINE__, #condition, message); \
+      std::abort();                                                                                        \
+    }                                                                                                      \
   } while (false)
 #endif

@@ -22,8 +22,7 @@ class bayesian_network {
 
   /// One table per variable, in any order. Throws model_error if a table is missing, extra,
   /// or disagrees with the structure.
-  bayesian_network(network_structure structure, std::vector<table_type> tables)
-      : structure_(std::move(structure)) {
+  bayesian_network(network_structure structure, std::vector<table_type> tables) : structure_(std::move(structure)) {
     std::vector<const table_type*> by_node(structure_.size(), nullptr);
     for (const auto& table : tables) {
       const auto& name = table.child().name();
@@ -68,9 +67,7 @@ class bayesian_network {
 
   [[nodiscard]] const network_structure& structure() const noexcept { return structure_; }
   [[nodiscard]] const dag& graph() const noexcept { return structure_.graph(); }
-  [[nodiscard]] const std::vector<variable>& variables() const noexcept {
-    return structure_.variables();
-  }
+  [[nodiscard]] const std::vector<variable>& variables() const noexcept { return structure_.variables(); }
   [[nodiscard]] std::size_t size() const noexcept { return structure_.size(); }
   [[nodiscard]] variable_id id(std::string_view name) const { return structure_.id(name); }
   [[nodiscard]] const variable& at(std::string_view name) const { return structure_.at(name); }
@@ -92,14 +89,14 @@ class bayesian_network {
   void check_table(variable_id node, const table_type& table) const {
     const auto& own = structure_.at(node);
     if (table.child() != own) {
-      throw model_error("the table of '" + own.name() + "' describes the variable differently "
+      throw model_error("the table of '" + own.name() +
+                        "' describes the variable differently "
                         "from the network (states, intervals or tags differ)");
     }
     const auto parents = structure_.parents(node);
     if (parents.size() != table.parents().size()) {
-      throw model_error("the table of '" + own.name() + "' has " +
-                        std::to_string(table.parents().size()) + " parents, the graph " +
-                        std::to_string(parents.size()));
+      throw model_error("the table of '" + own.name() + "' has " + std::to_string(table.parents().size()) +
+                        " parents, the graph " + std::to_string(parents.size()));
     }
     for (std::size_t i = 0; i < parents.size(); ++i) {
       const auto& expected = structure_.at(parents[i]);
@@ -109,8 +106,8 @@ class bayesian_network {
                           "' where the graph has '" + expected.name() + "'");
       }
       if (given != expected) {
-        throw model_error("the table of '" + own.name() + "' describes its parent '" +
-                          given.name() + "' differently from the network");
+        throw model_error("the table of '" + own.name() + "' describes its parent '" + given.name() +
+                          "' differently from the network");
       }
     }
   }

@@ -35,18 +35,13 @@ class cpt {
   cpt(variable child, std::vector<variable> parents)
       : child_(std::move(child)), parents_(std::move(parents)), radix_(radices(parents_)) {
     check_names();
-    values_.assign(child_.cardinality() * radix_.size(),
-                   T{1} / static_cast<T>(child_.cardinality()));
+    values_.assign(child_.cardinality() * radix_.size(), T{1} / static_cast<T>(child_.cardinality()));
   }
 
   /// A table with the given values (configuration major). Throws model_error if the size is
   /// wrong, a value is not a probability, or a column does not sum to one within `tolerance`.
-  cpt(variable child, std::vector<variable> parents, std::vector<T> values,
-      T tolerance = default_tolerance)
-      : child_(std::move(child)),
-        parents_(std::move(parents)),
-        radix_(radices(parents_)),
-        values_(std::move(values)) {
+  cpt(variable child, std::vector<variable> parents, std::vector<T> values, T tolerance = default_tolerance)
+      : child_(std::move(child)), parents_(std::move(parents)), radix_(radices(parents_)), values_(std::move(values)) {
     check_names();
     validate(tolerance);
   }
@@ -65,14 +60,11 @@ class cpt {
   }
 
   /// P(child = child_state | parents = parent_states), by labels in parent order.
-  [[nodiscard]] T probability(std::string_view child_state,
-                              std::span<const std::string> parent_states) const {
+  [[nodiscard]] T probability(std::string_view child_state, std::span<const std::string> parent_states) const {
     return (*this)(child_.state(child_state), configuration(parent_states));
   }
-  [[nodiscard]] T probability(std::string_view child_state,
-                              std::initializer_list<std::string> parent_states) const {
-    return probability(child_state, std::span<const std::string>(parent_states.begin(),
-                                                                 parent_states.size()));
+  [[nodiscard]] T probability(std::string_view child_state, std::initializer_list<std::string> parent_states) const {
+    return probability(child_state, std::span<const std::string>(parent_states.begin(), parent_states.size()));
   }
 
   /// The configuration index of parent state codes, in parent order.
@@ -80,8 +72,8 @@ class cpt {
     if (parent_codes.size() != parents_.size()) throw_arity(parent_codes.size());
     for (std::size_t i = 0; i < parent_codes.size(); ++i) {
       if (parent_codes[i] >= parents_[i].cardinality()) {
-        throw model_error("state code " + std::to_string(parent_codes[i]) + " of '" +
-                          parents_[i].name() + "' is out of range");
+        throw model_error("state code " + std::to_string(parent_codes[i]) + " of '" + parents_[i].name() +
+                          "' is out of range");
       }
     }
     return config_index(radix_.encode(parent_codes));
@@ -96,9 +88,7 @@ class cpt {
     return config_index(radix_.encode(codes));
   }
   /// The parent state codes of a configuration index.
-  [[nodiscard]] std::vector<std::size_t> parent_codes(config_index u) const {
-    return radix_.decode(u.value());
-  }
+  [[nodiscard]] std::vector<std::size_t> parent_codes(config_index u) const { return radix_.decode(u.value()); }
 
   /// The distribution of the child given configuration u.
   [[nodiscard]] std::span<const T> column(config_index u) const {
@@ -123,8 +113,7 @@ class cpt {
       }
       for (std::size_t j = 0; j < i; ++j) {
         if (parents_[i].name() == parents_[j].name()) {
-          throw model_error("'" + parents_[i].name() + "' is a parent of '" + child_.name() +
-                            "' twice");
+          throw model_error("'" + parents_[i].name() + "' is a parent of '" + child_.name() + "' twice");
         }
       }
     }
@@ -133,9 +122,8 @@ class cpt {
   void validate(T tolerance) const {
     const std::size_t j = child_cardinality();
     if (values_.size() != j * configurations()) {
-      throw model_error("the table of '" + child_.name() + "' needs " +
-                        std::to_string(j * configurations()) + " values (" + std::to_string(j) +
-                        " states × " + std::to_string(configurations()) +
+      throw model_error("the table of '" + child_.name() + "' needs " + std::to_string(j * configurations()) +
+                        " values (" + std::to_string(j) + " states × " + std::to_string(configurations()) +
                         " parent configurations), got " + std::to_string(values_.size()));
     }
     for (std::size_t u = 0; u < configurations(); ++u) {
@@ -144,15 +132,14 @@ class cpt {
         const T value = values_[u * j + x];
         if (!std::isfinite(value) || value < T{0} || value > T{1}) {
           throw model_error("the table of '" + child_.name() + "' has the value " +
-                            detail::format_double(static_cast<double>(value)) +
-                            ", which is not a probability" + where(u));
+                            detail::format_double(static_cast<double>(value)) + ", which is not a probability" +
+                            where(u));
         }
         sum += value;
       }
       if (std::abs(sum - T{1}) > tolerance) {
-        throw model_error("the distribution of '" + child_.name() + "'" + where(u) +
-                          " sums to " + detail::format_double(static_cast<double>(sum)) +
-                          ", not 1");
+        throw model_error("the distribution of '" + child_.name() + "'" + where(u) + " sums to " +
+                          detail::format_double(static_cast<double>(sum)) + ", not 1");
       }
     }
   }
@@ -168,8 +155,8 @@ class cpt {
   }
 
   [[noreturn]] void throw_arity(std::size_t given) const {
-    throw model_error("'" + child_.name() + "' has " + std::to_string(parents_.size()) +
-                      " parents, got states for " + std::to_string(given));
+    throw model_error("'" + child_.name() + "' has " + std::to_string(parents_.size()) + " parents, got states for " +
+                      std::to_string(given));
   }
 
   variable child_;

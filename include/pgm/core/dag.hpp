@@ -5,16 +5,15 @@
 /// `graph()` exposes the Boost adjacency_list so Boost algorithms run on it directly.
 
 #include <algorithm>
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/breadth_first_search.hpp>
+#include <boost/graph/topological_sort.hpp>
 #include <cstddef>
 #include <map>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include <boost/graph/adjacency_list.hpp>
-#include <boost/graph/breadth_first_search.hpp>
-#include <boost/graph/topological_sort.hpp>
 
 #include "pgm/core/error.hpp"
 #include "pgm/core/strong_index.hpp"
@@ -26,8 +25,7 @@ class dag {
  public:
   /// Out- and in-edges kept in insertion order (vecS): a node's parents come in the order
   /// their edges were added, which fixes the parent order of its table.
-  using graph_type = boost::adjacency_list<boost::vecS, boost::vecS, boost::bidirectionalS,
-                                           std::string>;
+  using graph_type = boost::adjacency_list<boost::vecS, boost::vecS, boost::bidirectionalS, std::string>;
   using vertex_type = graph_type::vertex_descriptor;
 
   dag() = default;
@@ -54,8 +52,8 @@ class dag {
     if (it == index_.end()) {
       std::vector<std::string> known;
       for (const auto& [node, vertex] : index_) known.push_back(node);
-      throw model_error("unknown variable '" + std::string(name) +
-                        "' (known: " + detail::list_for_message(known) + ")");
+      throw model_error("unknown variable '" + std::string(name) + "' (known: " + detail::list_for_message(known) +
+                        ")");
     }
     return to_id(it->second);
   }
@@ -143,8 +141,7 @@ class dag {
     boost::breadth_first_search(
         graph_, to_vertex(from),
         boost::visitor(boost::make_bfs_visitor(boost::record_predecessors(
-            boost::make_iterator_property_map(predecessor.begin(),
-                                              boost::get(boost::vertex_index, graph_)),
+            boost::make_iterator_property_map(predecessor.begin(), boost::get(boost::vertex_index, graph_)),
             boost::on_tree_edge()))));
     const auto target = to_vertex(to);
     if (predecessor[target] == target) return {};
@@ -171,9 +168,7 @@ class dag {
  private:
   // The one place where pgm ids and Boost vertex descriptors meet.
   static vertex_type to_vertex(variable_id node) noexcept { return node.value(); }
-  static variable_id to_id(vertex_type vertex) noexcept {
-    return variable_id(static_cast<variable_id::rep>(vertex));
-  }
+  static variable_id to_id(vertex_type vertex) noexcept { return variable_id(static_cast<variable_id::rep>(vertex)); }
   void check(variable_id node) const {
     if (node.value() >= size()) {
       throw model_error("node id " + std::to_string(node.value()) + " is not in the graph");

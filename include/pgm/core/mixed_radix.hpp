@@ -20,8 +20,7 @@ class mixed_radix {
   mixed_radix() = default;
 
   /// Throws model_error when a radix is zero or the product overflows.
-  explicit mixed_radix(std::vector<std::size_t> radices)
-      : radices_(std::move(radices)), strides_(radices_.size()) {
+  explicit mixed_radix(std::vector<std::size_t> radices) : radices_(std::move(radices)), strides_(radices_.size()) {
     std::size_t size = 1;
     for (std::size_t i = radices_.size(); i-- > 0;) {
       if (radices_[i] == 0) throw model_error("a variable with no states has no configurations");
@@ -67,9 +66,7 @@ class mixed_radix {
     return digit_values;
   }
 
-  friend bool operator==(const mixed_radix& a, const mixed_radix& b) {
-    return a.radices_ == b.radices_;
-  }
+  friend bool operator==(const mixed_radix& a, const mixed_radix& b) { return a.radices_ == b.radices_; }
 
  private:
   std::vector<std::size_t> radices_;

@@ -37,9 +37,7 @@ class network_structure {
 
   /// Throws model_error for an unknown node, not_a_dag for a cycle.
   void add_edge(std::string_view from, std::string_view to) { graph_.add_edge(from, to); }
-  bool remove_edge(std::string_view from, std::string_view to) {
-    return graph_.remove_edge(id(from), id(to));
-  }
+  bool remove_edge(std::string_view from, std::string_view to) { return graph_.remove_edge(id(from), id(to)); }
 
   [[nodiscard]] std::size_t size() const noexcept { return variables_.size(); }
   [[nodiscard]] const std::vector<variable>& variables() const noexcept { return variables_; }
@@ -49,9 +47,7 @@ class network_structure {
   [[nodiscard]] const variable& at(variable_id node) const { return variables_.at(node.value()); }
   [[nodiscard]] const variable& at(std::string_view name) const { return at(id(name)); }
 
-  [[nodiscard]] std::vector<variable_id> parents(variable_id node) const {
-    return graph_.parents(node);
-  }
+  [[nodiscard]] std::vector<variable_id> parents(variable_id node) const { return graph_.parents(node); }
   /// The parents' variables, in the order of the node's table.
   [[nodiscard]] std::vector<variable> parent_variables(variable_id node) const {
     std::vector<variable> result;
@@ -70,9 +66,8 @@ class network_structure {
   void update_variable(variable replacement) {
     const auto node = id(replacement.name());
     if (replacement.cardinality() != at(node).cardinality()) {
-      throw model_error("variable '" + replacement.name() + "' has " +
-                        std::to_string(at(node).cardinality()) + " states, the replacement " +
-                        std::to_string(replacement.cardinality()));
+      throw model_error("variable '" + replacement.name() + "' has " + std::to_string(at(node).cardinality()) +
+                        " states, the replacement " + std::to_string(replacement.cardinality()));
     }
     variables_[node.value()] = std::move(replacement);
   }
@@ -96,13 +91,12 @@ namespace pgm {
   for (const auto& piece : detail::split(text, ',')) {
     ++number;
     const auto arrow = piece.find("->");
-    const auto from = arrow == std::string::npos ? std::string_view{}
-                                                 : detail::trim(std::string_view(piece).substr(0, arrow));
-    const auto to = arrow == std::string::npos ? std::string_view{}
-                                               : detail::trim(std::string_view(piece).substr(arrow + 2));
+    const auto from =
+        arrow == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(0, arrow));
+    const auto to =
+        arrow == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(arrow + 2));
     if (from.empty() || to.empty() || to.find("->") != std::string_view::npos) {
-      throw model_error("edge " + std::to_string(number) + " ('" + piece +
-                        "') is not of the form 'from->to'");
+      throw model_error("edge " + std::to_string(number) + " ('" + piece + "') is not of the form 'from->to'");
     }
     edges.push_back({std::string(from), std::string(to)});
   }

@@ -36,7 +36,5 @@ using config_index = strong_index<struct config_index_tag, std::size_t>;
 
 template <class Tag, class Rep>
 struct std::hash<pgm::strong_index<Tag, Rep>> {
-  std::size_t operator()(pgm::strong_index<Tag, Rep> index) const noexcept {
-    return std::hash<Rep>{}(index.value());
-  }
+  std::size_t operator()(pgm::strong_index<Tag, Rep> index) const noexcept { return std::hash<Rep>{}(index.value()); }
 };

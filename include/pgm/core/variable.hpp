@@ -26,9 +26,7 @@ struct semantic_tags {
   std::string unit;
   std::string role;
 
-  [[nodiscard]] bool empty() const noexcept {
-    return quantity.empty() && unit.empty() && role.empty();
-  }
+  [[nodiscard]] bool empty() const noexcept { return quantity.empty() && unit.empty() && role.empty(); }
   friend bool operator==(const semantic_tags&, const semantic_tags&) = default;
 };
 
@@ -43,8 +41,7 @@ class variable {
 
   /// A discretized quantity: state i is the interval [edges[i], edges[i+1]), labelled "i".
   /// Edges must be finite and strictly increasing.
-  [[nodiscard]] static variable intervals(std::string name, std::vector<double> edges,
-                                          semantic_tags tags = {}) {
+  [[nodiscard]] static variable intervals(std::string name, std::vector<double> edges, semantic_tags tags = {}) {
     if (edges.size() < 2) {
       throw model_error("variable '" + name + "': interval edges need at least two values");
     }
@@ -55,8 +52,8 @@ class variable {
   }
 
   /// Intervals with labels of the caller's choosing (one fewer label than edges).
-  [[nodiscard]] static variable with_edges(std::string name, std::vector<std::string> states,
-                                           std::vector<double> edges, semantic_tags tags = {}) {
+  [[nodiscard]] static variable with_edges(std::string name, std::vector<std::string> states, std::vector<double> edges,
+                                           semantic_tags tags = {}) {
     variable result(std::move(name), std::move(states), std::move(tags));
     result.set_edges(std::move(edges));
     return result;
@@ -66,9 +63,7 @@ class variable {
   [[nodiscard]] const std::vector<std::string>& states() const noexcept { return states_; }
   [[nodiscard]] std::size_t cardinality() const noexcept { return states_.size(); }
   [[nodiscard]] const semantic_tags& tags() const noexcept { return tags_; }
-  [[nodiscard]] const std::string& label(state_index state) const {
-    return states_.at(state.value());
-  }
+  [[nodiscard]] const std::string& label(state_index state) const { return states_.at(state.value()); }
 
   /// The interval edges (cardinality()+1 values), or empty for a purely categorical variable.
   [[nodiscard]] const std::vector<double>& edges() const noexcept { return edges_; }
@@ -102,8 +97,7 @@ class variable {
   [[nodiscard]] state_index bin(double value) const {
     const auto inner_begin = edges_.begin() + 1;
     const auto inner_end = edges_.end() - 1;
-    return state_index(
-        static_cast<state_index::rep>(std::upper_bound(inner_begin, inner_end, value) - inner_begin));
+    return state_index(static_cast<state_index::rep>(std::upper_bound(inner_begin, inner_end, value) - inner_begin));
   }
 
   [[nodiscard]] variable with_tags(semantic_tags tags) const {
@@ -116,14 +110,12 @@ class variable {
   void set_edges(std::vector<double> edges) {
     if (!edges.empty()) {
       if (edges.size() != states_.size() + 1) {
-        throw model_error("variable '" + name_ + "': " + std::to_string(states_.size()) +
-                          " states need " + std::to_string(states_.size() + 1) +
-                          " interval edges, got " + std::to_string(edges.size()));
+        throw model_error("variable '" + name_ + "': " + std::to_string(states_.size()) + " states need " +
+                          std::to_string(states_.size() + 1) + " interval edges, got " + std::to_string(edges.size()));
       }
       for (std::size_t i = 0; i < edges.size(); ++i) {
         if (!std::isfinite(edges[i]) || (i > 0 && !(edges[i - 1] < edges[i]))) {
-          throw model_error("variable '" + name_ +
-                            "': interval edges must be finite and strictly increasing");
+          throw model_error("variable '" + name_ + "': interval edges must be finite and strictly increasing");
         }
       }
     }
@@ -146,8 +138,7 @@ class variable {
     for (std::size_t i = 0; i < sorted.size(); ++i) {
       if (sorted[i].empty()) throw model_error("variable '" + name_ + "' has an empty state label");
       if (i > 0 && sorted[i] == sorted[i - 1]) {
-        throw model_error("variable '" + name_ + "' has the state '" + std::string(sorted[i]) +
-                          "' twice");
+        throw model_error("variable '" + name_ + "' has the state '" + std::string(sorted[i]) + "' twice");
       }
     }
   }

@@ -23,8 +23,7 @@
 
 namespace pgm {
 
-using code_vector =
-    std::variant<std::vector<std::uint8_t>, std::vector<std::uint16_t>, std::vector<std::uint32_t>>;
+using code_vector = std::variant<std::vector<std::uint8_t>, std::vector<std::uint16_t>, std::vector<std::uint32_t>>;
 
 /// The narrowest code width for a variable with `cardinality` states.
 [[nodiscard]] inline code_vector make_code_vector(std::size_t cardinality, std::size_t rows = 0) {
@@ -37,8 +36,7 @@ class discrete_column {
  public:
   /// Codes index the variable's states; throws data_error on a code out of range.
   template <class Code>
-    requires std::unsigned_integral<Code>
-  discrete_column(variable var, const std::vector<Code>& codes)
+  requires std::unsigned_integral<Code> discrete_column(variable var, const std::vector<Code>& codes)
       : variable_(std::move(var)), codes_(make_code_vector(variable_.cardinality(), codes.size())) {
     std::visit(
         [&](auto& stored) {
@@ -46,9 +44,8 @@ class discrete_column {
           const auto card = variable_.cardinality();
           for (std::size_t row = 0; row < codes.size(); ++row) {
             if (codes[row] >= card) {
-              throw data_error("column '" + variable_.name() + "' row " + std::to_string(row + 1) +
-                               ": state code " + std::to_string(codes[row]) + " is out of range (" +
-                               std::to_string(card) + " states)");
+              throw data_error("column '" + variable_.name() + "' row " + std::to_string(row + 1) + ": state code " +
+                               std::to_string(codes[row]) + " is out of range (" + std::to_string(card) + " states)");
             }
             stored[row] = static_cast<stored_code>(codes[row]);
           }
@@ -68,9 +65,7 @@ class discrete_column {
   [[nodiscard]] std::uint32_t code(std::size_t row) const {
     return std::visit([row](const auto& c) { return static_cast<std::uint32_t>(c[row]); }, codes_);
   }
-  [[nodiscard]] const std::string& label(std::size_t row) const {
-    return variable_.states()[code(row)];
-  }
+  [[nodiscard]] const std::string& label(std::size_t row) const { return variable_.states()[code(row)]; }
   [[nodiscard]] const code_vector& codes() const noexcept { return codes_; }
   /// Bytes per stored code: 1, 2 or 4.
   [[nodiscard]] std::size_t code_width() const noexcept {
@@ -81,23 +76,21 @@ class discrete_column {
   [[nodiscard]] discrete_column with_variable(variable replacement) const {
     if (replacement.cardinality() != variable_.cardinality()) {
       throw model_error("column '" + name() + "' has " + std::to_string(variable_.cardinality()) +
-                        " states, the replacement variable " +
-                        std::to_string(replacement.cardinality()));
+                        " states, the replacement variable " + std::to_string(replacement.cardinality()));
     }
     return discrete_column(std::move(replacement), codes_, std::in_place);
   }
 
   [[nodiscard]] discrete_column select(std::span<const std::size_t> rows) const {
-    return discrete_column(
-        variable_,
-        std::visit(
-            [&](const auto& c) -> code_vector {
-              std::decay_t<decltype(c)> picked(rows.size());
-              for (std::size_t i = 0; i < rows.size(); ++i) picked[i] = c.at(rows[i]);
-              return picked;
-            },
-            codes_),
-        std::in_place);
+    return discrete_column(variable_,
+                           std::visit(
+                               [&](const auto& c) -> code_vector {
+                                 std::decay_t<decltype(c)> picked(rows.size());
+                                 for (std::size_t i = 0; i < rows.size(); ++i) picked[i] = c.at(rows[i]);
+                                 return picked;
+                               },
+                               codes_),
+                           std::in_place);
   }
 
   friend bool operator==(const discrete_column&, const discrete_column&) = default;
@@ -159,8 +152,8 @@ class dataset {
     if (index_.contains(name)) throw data_error(prefix() + "the column '" + name + "' appears twice");
     const auto n = column_size(c);
     if (!columns_.empty() && n != rows_) {
-      throw data_error(prefix() + "column '" + name + "' has " + std::to_string(n) +
-                       " rows, the others " + std::to_string(rows_));
+      throw data_error(prefix() + "column '" + name + "' has " + std::to_string(n) + " rows, the others " +
+                       std::to_string(rows_));
     }
     rows_ = n;
     index_.emplace(name, columns_.size());
@@ -171,8 +164,8 @@ class dataset {
   void replace(data_column c) {
     const auto i = position(column_name(c));
     if (column_size(c) != rows_) {
-      throw data_error(prefix() + "replacement column '" + column_name(c) + "' has " +
-                       std::to_string(column_size(c)) + " rows, the data " + std::to_string(rows_));
+      throw data_error(prefix() + "replacement column '" + column_name(c) + "' has " + std::to_string(column_size(c)) +
+                       " rows, the data " + std::to_string(rows_));
     }
     columns_[i] = std::move(c);
   }
@@ -193,8 +186,7 @@ class dataset {
   [[nodiscard]] const discrete_column& discrete(std::string_view name) const {
     const auto& c = at(name);
     if (const auto* d = std::get_if<discrete_column>(&c)) return *d;
-    throw data_error(prefix() + "column '" + std::string(name) +
-                     "' holds continuous values; discretize it first");
+    throw data_error(prefix() + "column '" + std::string(name) + "' holds continuous values; discretize it first");
   }
   /// The continuous column of this name; throws data_error if it is missing or discrete.
   [[nodiscard]] const continuous_column& continuous(std::string_view name) const {
@@ -230,9 +222,7 @@ class dataset {
     return result;
   }
 
-  friend bool operator==(const dataset& a, const dataset& b) {
-    return a.rows_ == b.rows_ && a.columns_ == b.columns_;
-  }
+  friend bool operator==(const dataset& a, const dataset& b) { return a.rows_ == b.rows_ && a.columns_ == b.columns_; }
 
  private:
   std::size_t position(std::string_view name) const {

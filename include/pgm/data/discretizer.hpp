@@ -47,8 +47,7 @@ inline std::vector<double> distinct_edges(std::vector<double> edges, const std::
 /// Edges of `bins` equal-frequency bins: the minimum, the k/bins quantiles (linear
 /// interpolation between order statistics, NumPy's default) and the maximum. Bins that would
 /// be empty because of ties are merged, so fewer than `bins` may come back.
-[[nodiscard]] inline std::vector<double> quantile_edges(std::span<const double> values,
-                                                        std::size_t bins,
+[[nodiscard]] inline std::vector<double> quantile_edges(std::span<const double> values, std::size_t bins,
                                                         const std::string& name = "values") {
   if (bins == 0) throw data_error("the number of bins must be positive");
   if (values.empty()) throw data_error("column '" + name + "' has no values to discretize");
@@ -68,8 +67,7 @@ inline std::vector<double> distinct_edges(std::vector<double> edges, const std::
 }
 
 /// Edges of `bins` bins of equal width between the minimum and the maximum.
-[[nodiscard]] inline std::vector<double> equal_width_edges(std::span<const double> values,
-                                                           std::size_t bins,
+[[nodiscard]] inline std::vector<double> equal_width_edges(std::span<const double> values, std::size_t bins,
                                                            const std::string& name = "values") {
   if (bins == 0) throw data_error("the number of bins must be positive");
   if (values.empty()) throw data_error("column '" + name + "' has no values to discretize");
@@ -77,8 +75,7 @@ inline std::vector<double> distinct_edges(std::vector<double> edges, const std::
   const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
   std::vector<double> edges;
   for (std::size_t k = 0; k <= bins; ++k) {
-    edges.push_back(k == bins ? *hi
-                              : *lo + (*hi - *lo) * static_cast<double>(k) / static_cast<double>(bins));
+    edges.push_back(k == bins ? *hi : *lo + (*hi - *lo) * static_cast<double>(k) / static_cast<double>(bins));
   }
   return detail::distinct_edges(std::move(edges), name);
 }
@@ -89,8 +86,7 @@ using discretization = std::map<std::string, variable, std::less<>>;
 enum class binning { quantile, equal_width };
 
 /// Fits interval variables for the named continuous columns of `data`.
-[[nodiscard]] inline discretization fit_discretization(const dataset& data,
-                                                       std::span<const std::string> columns,
+[[nodiscard]] inline discretization fit_discretization(const dataset& data, std::span<const std::string> columns,
                                                        binning method, std::size_t bins) {
   discretization result;
   for (const auto& name : columns) {
@@ -103,8 +99,7 @@ enum class binning { quantile, equal_width };
 }
 
 /// The codes of `values` in the intervals of `intervals`.
-[[nodiscard]] inline discrete_column discretize(const continuous_column& values,
-                                                const variable& intervals) {
+[[nodiscard]] inline discrete_column discretize(const continuous_column& values, const variable& intervals) {
   if (!intervals.has_intervals()) {
     throw model_error("variable '" + intervals.name() + "' has no interval edges to bin values by");
   }
@@ -132,8 +127,7 @@ enum class binning { quantile, equal_width };
     if (const auto* values = std::get_if<continuous_column>(&c)) {
       result.replace(discretize(*values, intervals));
     } else if (std::get<discrete_column>(c).var().states() != intervals.states()) {
-      throw data_error("column '" + name + "' is discrete already, with other states than the " +
-                       "discretization");
+      throw data_error("column '" + name + "' is discrete already, with other states than the " + "discretization");
     }
   }
   return result;

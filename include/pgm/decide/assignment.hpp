@@ -69,8 +69,10 @@ using assignment = std::map<std::string, planned_value, std::less<>>;
   assignment result;
   for (const auto& piece : detail::split(text, ',')) {
     const auto equals = piece.find('=');
-    const auto name = equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(0, equals));
-    const auto value = equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(equals + 1));
+    const auto name =
+        equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(0, equals));
+    const auto value =
+        equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(equals + 1));
     if (name.empty() || value.empty()) throw model_error("'" + piece + "' is not of the form name=value");
     const auto& v = network.structure().at(detail::node_of(network, name));
     if (!result.emplace(std::string(name), planned_value_of(v, value)).second) {

@@ -52,11 +52,11 @@ struct explanation {
   std::string success_variable;
   std::string success_state;
   double epsilon = 0.8;
-  std::size_t configuration = 0;  ///< u, in the success table's numbering
-  std::size_t target = 0;         ///< u*
-  double predicted = 0.0;         ///< estimated P(success | u)
-  double target_predicted = 0.0;  ///< estimated P(success | u*)
-  std::size_t steps = 0;          ///< bin steps from u to u*
+  std::size_t configuration = 0;         ///< u, in the success table's numbering
+  std::size_t target = 0;                ///< u*
+  double predicted = 0.0;                ///< estimated P(success | u)
+  double target_predicted = 0.0;         ///< estimated P(success | u*)
+  std::size_t steps = 0;                 ///< bin steps from u to u*
   std::optional<double> distance_units;  ///< Euclidean midpoint distance, when all moved variables have midpoints
   /// Every controllable parent, in table order; those that move are the responsible ones.
   std::vector<variable_change> changes;
@@ -83,9 +83,8 @@ inline std::optional<interval> interval_of(const variable& v, std::size_t state)
 }  // namespace detail
 
 /// The explanation for configuration u of a success table (see prevention_target for u*).
-[[nodiscard]] inline explanation explain(const cpt<double>& table, std::size_t success_state,
-                                         std::size_t configuration, std::span<const bool> controllable,
-                                         const prevention_options& options = {}) {
+[[nodiscard]] inline explanation explain(const cpt<double>& table, std::size_t success_state, std::size_t configuration,
+                                         std::span<const bool> controllable, const prevention_options& options = {}) {
   const auto target = prevention_target(table, success_state, configuration, controllable, options);
   explanation result;
   result.success_variable = table.child().name();
@@ -102,8 +101,15 @@ inline std::optional<interval> interval_of(const variable& v, std::size_t state)
   for (std::size_t p = 0; p < from.size(); ++p) {
     if (!controllable[p]) continue;
     const auto& v = table.parents()[p];
-    variable_change change{v.name(), v.tags().unit, from[p], to[p], v.states()[from[p]], v.states()[to[p]],
-                           detail::interval_of(v, from[p]), detail::interval_of(v, to[p]), std::nullopt};
+    variable_change change{v.name(),
+                           v.tags().unit,
+                           from[p],
+                           to[p],
+                           v.states()[from[p]],
+                           v.states()[to[p]],
+                           detail::interval_of(v, from[p]),
+                           detail::interval_of(v, to[p]),
+                           std::nullopt};
     const auto a = v.midpoint(state_index(static_cast<state_index::rep>(from[p])));
     const auto b = v.midpoint(state_index(static_cast<state_index::rep>(to[p])));
     if (a && b) {
@@ -147,7 +153,8 @@ struct prevention_plan {
     static_cast<void>(detail::node_of(network, name));
     if (name == success.variable) throw model_error("the success variable '" + name + "' cannot be controllable");
     if (!planned.contains(name)) {
-      throw model_error("no value is given for the controllable variable '" + name + "'; prevention moves it from there");
+      throw model_error("no value is given for the controllable variable '" + name +
+                        "'; prevention moves it from there");
     }
   }
   const auto missing = unassigned_parents(network, success, planned);

@@ -77,9 +77,8 @@ namespace detail {
 
 [[noreturn]] inline void throw_missing(const success_event& success, const std::vector<std::string>& missing) {
   throw model_error("no value is given for " + std::string(missing.size() == 1 ? "" : "the parents ") +
-                    list_for_message(missing) + (missing.size() == 1 ? ", a parent" : "") + " of '" +
-                    success.variable + "'; assign " + (missing.size() == 1 ? "it" : "them") +
-                    " or ask to marginalize");
+                    list_for_message(missing) + (missing.size() == 1 ? ", a parent" : "") + " of '" + success.variable +
+                    "'; assign " + (missing.size() == 1 ? "it" : "them") + " or ask to marginalize");
 }
 
 /// Whether any assigned variable is a descendant of `node` (then the node's table alone is
@@ -116,12 +115,14 @@ namespace detail {
   if (missing.empty() && !detail::observes_descendant(network, target, observed)) {
     const auto& table = network.table(target);
     std::vector<std::size_t> codes;
-    for (const auto& parent : table.parents()) codes.push_back(state_of(parent, planned.find(parent.name())->second).value());
+    for (const auto& parent : table.parents())
+      codes.push_back(state_of(parent, planned.find(parent.name())->second).value());
     // The column as stored may miss 1 by rounding (published tables are printed to a few
     // digits); the answer is the normalized entry, as variable elimination would give it.
     const auto column = table.configuration(codes);
     double sum = 0.0;
-    for (std::size_t s = 0; s < table.child().cardinality(); ++s) sum += table(state_index(static_cast<state_index::rep>(s)), column);
+    for (std::size_t s = 0; s < table.child().cardinality(); ++s)
+      sum += table(state_index(static_cast<state_index::rep>(s)), column);
     return table(state, column) / sum;
   }
   const variable_id query_ids[] = {target};

@@ -288,8 +288,7 @@ class prevention_solver {
                                                     std::size_t success_state, std::span<const bool> controllable,
                                                     std::span<const double> configuration_weights,
                                                     const prevention_options& options = {}) {
-  if (estimated.parent_radix() != truth.parent_radix() ||
-      estimated.child_cardinality() != truth.child_cardinality()) {
+  if (estimated.parent_radix() != truth.parent_radix() || estimated.child_cardinality() != truth.child_cardinality()) {
     throw model_error("the estimated and the true table of '" + estimated.child().name() + "' differ in shape");
   }
   if (configuration_weights.size() != estimated.configurations()) {
@@ -306,7 +305,8 @@ class prevention_solver {
   const auto j = truth.child_cardinality();
   double sum = 0.0;
   for (std::size_t u = 0; u < targets.size(); ++u) {
-    if (configuration_weights[u] > 0.0) sum += configuration_weights[u] * truth.values()[targets[u] * j + success_state];
+    if (configuration_weights[u] > 0.0)
+      sum += configuration_weights[u] * truth.values()[targets[u] * j + success_state];
   }
   return sum / total;
 }

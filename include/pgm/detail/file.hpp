@@ -4,6 +4,8 @@
 /// written to a temporary file beside the target and renamed over it only once complete, so a
 /// failure never leaves a half-written file that looks finished.
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -13,8 +15,6 @@
 #include <sstream>
 #include <string>
 #include <system_error>
-
-#include <unistd.h>
 
 #include "pgm/core/error.hpp"
 
@@ -42,21 +42,19 @@ inline void check_output_path(const std::filesystem::path& path) {
   const auto directory = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   std::error_code ec;
   if (!std::filesystem::is_directory(directory, ec)) {
-    throw io_error("cannot write '" + path.string() + "': the directory '" + directory.string() +
-                   "' does not exist");
+    throw io_error("cannot write '" + path.string() + "': the directory '" + directory.string() + "' does not exist");
   }
   if (std::filesystem::is_directory(path, ec)) {
     throw io_error("cannot write '" + path.string() + "': it is a folder");
   }
 }
 
-inline void write_file_atomically(const std::filesystem::path& path,
-                                  const std::function<void(std::ostream&)>& write) {
+inline void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write) {
   check_output_path(path);
   std::error_code ec;
   std::random_device entropy;
-  const auto temporary = std::filesystem::path(
-      path.string() + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(entropy()));
+  const auto temporary =
+      std::filesystem::path(path.string() + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(entropy()));
   try {
     {
       std::ofstream out(temporary, std::ios::binary | std::ios::trunc);

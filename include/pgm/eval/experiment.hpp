@@ -118,8 +118,9 @@ struct prepared_target {
 
   // The prior: fitted once, by MLE, on D′.
   const auto prior_facts = source.facts(s.prior_task, s.prior_node);
-  const auto prior_family = read_family(source.data(s.prior_task, s.prior_rows, detail::mix_seed(base_seed, detail::seed_of(s.prior_task))),
-                                        s.prior_node, prior_facts.parents, s.bins, prior_facts.tags);
+  const auto prior_family =
+      read_family(source.data(s.prior_task, s.prior_rows, detail::mix_seed(base_seed, detail::seed_of(s.prior_task))),
+                  s.prior_node, prior_facts.parents, s.bins, prior_facts.tags);
   for (const auto& n : prior_family.notes) note("prior: " + n);
   const auto prior_network = prior_family.fit_all();
   const auto map = parse_correspondence(s.map);
@@ -131,11 +132,16 @@ struct prepared_target {
                                    read_family(source.data(t.task, t.train_rows + t.ground_truth_rows,
                                                            detail::mix_seed(base_seed, detail::seed_of(t.task))),
                                                s.target_node, facts.parents, s.bins, facts.tags),
-                                   t.train_rows, nullptr, 0, {}, {}};
+                                   t.train_rows,
+                                   nullptr,
+                                   0,
+                                   {},
+                                   {}};
     for (const auto& n : target.family.notes) note(t.task + ": " + n);
     const auto& parents = target.family.parents;
     target.controllable = std::make_unique<bool[]>(parents.size());
-    for (std::size_t p = 0; p < parents.size(); ++p) target.controllable[p] = facts.controllable.contains(parents[p].name());
+    for (std::size_t p = 0; p < parents.size(); ++p)
+      target.controllable[p] = facts.controllable.contains(parents[p].name());
     target.success_state = target.family.child.state("1").value();
     const auto structure = target.family.structure();
     for (const auto& strategy : s.strategies) {
@@ -148,9 +154,12 @@ struct prepared_target {
         correspondence pinned;
         pinned.pinned = map.pinned;
         pinned.transferred = map.transferred;
-        const auto proposal = propose_correspondence({&structure, nullptr}, {&prior_network.structure(), &prior_network}, pinned);
-        note(t.task + ": proposed map " + to_string(proposal) + (to_string(proposal) == to_string(map) ? " (the scenario's)" : " (the scenario's: " + s.map + ")"));
-        auto priors = transfer_priors(prior_network, structure, proposal, transfer_registry::instance().at(s.strategies.back()));
+        const auto proposal =
+            propose_correspondence({&structure, nullptr}, {&prior_network.structure(), &prior_network}, pinned);
+        note(t.task + ": proposed map " + to_string(proposal) +
+             (to_string(proposal) == to_string(map) ? " (the scenario's)" : " (the scenario's: " + s.map + ")"));
+        auto priors =
+            transfer_priors(prior_network, structure, proposal, transfer_registry::instance().at(s.strategies.back()));
         target.priors.emplace(s.strategies.back() + "+auto-map", std::move(priors.at(s.target_node)));
       } catch (const error& e) {
         note(t.task + ": no line for the proposed map: " + e.what());
@@ -183,7 +192,8 @@ struct prepared_target {
       const auto& target = targets[job / repetitions];
       const std::size_t rep = job % repetitions;
       auto& out = results[job];
-      std::mt19937_64 random(detail::mix_seed(detail::mix_seed(base_seed, detail::seed_of(s.name + "/" + target.task)), rep));
+      std::mt19937_64 random(
+          detail::mix_seed(detail::mix_seed(base_seed, detail::seed_of(s.name + "/" + target.task)), rep));
       const auto& family = target.family;
       // D: a uniform random subset of the rows (partial Fisher–Yates), in random order.
       std::vector<std::uint32_t> order(family.rows());
@@ -206,7 +216,8 @@ struct prepared_target {
         produced[u] = static_cast<double>(truth_counts.total(config_index(static_cast<config_index::rep>(u))));
       }
       const std::span<const bool> controllable(target.controllable.get(), family.parents.size());
-      auto emit = [&](const std::string& strategy, const std::string& weight, std::size_t rows, const std::string& metric, double value) {
+      auto emit = [&](const std::string& strategy, const std::string& weight, std::size_t rows,
+                      const std::string& metric, double value) {
         out.push_back({s.name, target.task, strategy, weight, rows, rep, metric, value});
       };
       const double oracle =
@@ -235,7 +246,8 @@ struct prepared_target {
     }
   });
   std::vector<experiment_point> points;
-  for (auto& r : results) points.insert(points.end(), std::make_move_iterator(r.begin()), std::make_move_iterator(r.end()));
+  for (auto& r : results)
+    points.insert(points.end(), std::make_move_iterator(r.begin()), std::make_move_iterator(r.end()));
   return points;
 }
 
@@ -259,7 +271,8 @@ struct aggregated_point {
   std::map<key, accumulator> groups;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = points[i];
-    auto [it, fresh] = groups.try_emplace(key{p.scenario, p.target, p.strategy, p.weight, p.rows, p.metric}, accumulator{i});
+    auto [it, fresh] =
+        groups.try_emplace(key{p.scenario, p.target, p.strategy, p.weight, p.rows, p.metric}, accumulator{i});
     it->second.sum += p.value;
     it->second.sum_squares += p.value * p.value;
     ++it->second.n;
@@ -267,9 +280,12 @@ struct aggregated_point {
   std::vector<std::pair<std::size_t, aggregated_point>> ordered;
   for (const auto& [k, a] : groups) {
     const double mean = a.sum / static_cast<double>(a.n);
-    const double variance = a.n > 1 ? std::max(0.0, (a.sum_squares - static_cast<double>(a.n) * mean * mean) / static_cast<double>(a.n - 1)) : 0.0;
-    ordered.push_back({a.first_seen, {std::get<0>(k), std::get<1>(k), std::get<2>(k), std::get<3>(k), std::get<4>(k), std::get<5>(k), mean,
-                                      std::sqrt(variance), a.n}});
+    const double variance =
+        a.n > 1 ? std::max(0.0, (a.sum_squares - static_cast<double>(a.n) * mean * mean) / static_cast<double>(a.n - 1))
+                : 0.0;
+    ordered.push_back({a.first_seen,
+                       {std::get<0>(k), std::get<1>(k), std::get<2>(k), std::get<3>(k), std::get<4>(k), std::get<5>(k),
+                        mean, std::sqrt(variance), a.n}});
   }
   std::sort(ordered.begin(), ordered.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<aggregated_point> result;

@@ -25,7 +25,8 @@ struct parameter_difference {
 [[nodiscard]] inline parameter_difference success_parameter_difference(const cpt<double>& estimate,
                                                                        const cpt<double>& truth,
                                                                        std::size_t success_state) {
-  if (estimate.configurations() != truth.configurations() || estimate.child_cardinality() != truth.child_cardinality()) {
+  if (estimate.configurations() != truth.configurations() ||
+      estimate.child_cardinality() != truth.child_cardinality()) {
     throw model_error("the estimate and the ground truth of '" + truth.child().name() + "' differ in shape");
   }
   if (success_state >= truth.child_cardinality()) throw model_error("the success state is out of range");

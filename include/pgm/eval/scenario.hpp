@@ -8,12 +8,11 @@
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "pgm/detail/file.hpp"
 #include "pgm/detail/json_reader.hpp"
@@ -69,7 +68,8 @@ class scenario_reader : public json_reader {
     std::size_t i = 0;
     for (const auto& t : array(member(target, "/target", "tasks"), "/target/tasks")) {
       const std::string path = "/target/tasks/" + std::to_string(i++);
-      s.targets.push_back({string(member(t, path, "task"), path + "/task"), count(member(t, path, "train_rows"), path + "/train_rows"),
+      s.targets.push_back({string(member(t, path, "task"), path + "/task"),
+                           count(member(t, path, "train_rows"), path + "/train_rows"),
                            count(member(t, path, "ground_truth_rows"), path + "/ground_truth_rows")});
       if (s.targets.back().train_rows == 0 || s.targets.back().ground_truth_rows == 0) {
         fail(path, "train_rows and ground_truth_rows must be positive");

@@ -39,8 +39,8 @@ class factor {
       }
     }
     if (values_.size() != size) {
-      throw model_error("a factor over " + std::to_string(scope_.size()) + " variables needs " +
-                        std::to_string(size) + " values, got " + std::to_string(values_.size()));
+      throw model_error("a factor over " + std::to_string(scope_.size()) + " variables needs " + std::to_string(size) +
+                        " values, got " + std::to_string(values_.size()));
     }
   }
 

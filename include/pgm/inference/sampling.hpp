@@ -22,8 +22,7 @@ namespace pgm {
 
 /// `rows` independent observations of every variable of `network`, as discrete columns in
 /// the network's variable order.
-[[nodiscard]] inline dataset sample(const bayesian_network& network, std::size_t rows,
-                                    std::uint64_t seed) {
+[[nodiscard]] inline dataset sample(const bayesian_network& network, std::size_t rows, std::uint64_t seed) {
   std::mt19937_64 engine(seed);
   std::vector<std::vector<std::uint32_t>> codes(network.size(), std::vector<std::uint32_t>(rows));
   std::vector<std::size_t> parent_codes;

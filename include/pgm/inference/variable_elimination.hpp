@@ -134,7 +134,8 @@ namespace detail {
       std::size_t fill = 0;
       if (heuristic == elimination_heuristic::min_fill) {
         for (std::size_t i = 0; i < neighbours.size(); ++i) {
-          for (std::size_t j = i + 1; j < neighbours.size(); ++j) fill += adjacent[neighbours[i]][neighbours[j]] ? 0 : 1;
+          for (std::size_t j = i + 1; j < neighbours.size(); ++j)
+            fill += adjacent[neighbours[i]][neighbours[j]] ? 0 : 1;
         }
       }
       const auto cost = std::make_pair(fill, neighbours.size());
@@ -159,8 +160,7 @@ namespace detail {
 
 /// The unnormalized P(query, evidence) over `query` in the order given; its sum is P(evidence).
 /// Query and evidence variables must be distinct network ids (checked by the named overload).
-[[nodiscard]] inline factor joint_with_evidence(const bayesian_network& network,
-                                                std::span<const variable_id> query,
+[[nodiscard]] inline factor joint_with_evidence(const bayesian_network& network, std::span<const variable_id> query,
                                                 std::span<const observation> observed,
                                                 elimination_heuristic heuristic = elimination_heuristic::min_fill) {
   std::vector<variable_id> targets(query.begin(), query.end());

@@ -68,8 +68,8 @@ class bif_lexer {
       return token;
     }
     const auto start = pos_;
-    while (pos_ < text_.size() && !is_symbol(text_[pos_]) && !is_space(text_[pos_]) &&
-           text_[pos_] != '"' && !comment_starts(pos_)) {
+    while (pos_ < text_.size() && !is_symbol(text_[pos_]) && !is_space(text_[pos_]) && text_[pos_] != '"' &&
+           !comment_starts(pos_)) {
       ++pos_;
     }
     token.type = bif_token::kind::word;
@@ -92,8 +92,7 @@ class bif_lexer {
 
  private:
   static bool is_symbol(char c) {
-    return c == '{' || c == '}' || c == '(' || c == ')' || c == '[' || c == ']' || c == ';' ||
-           c == ',' || c == '|';
+    return c == '{' || c == '}' || c == '(' || c == ')' || c == '[' || c == ']' || c == ';' || c == ',' || c == '|';
   }
   static bool is_space(char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; }
   bool comment_starts(std::size_t p) const {
@@ -139,9 +138,7 @@ class bif_lexer {
 
 class bif_parser {
  public:
-  bif_parser(std::string_view text, std::string source) : lexer_(text, std::move(source)) {
-    advance();
-  }
+  bif_parser(std::string_view text, std::string source) : lexer_(text, std::move(source)) { advance(); }
 
   bayesian_network parse() {
     while (current_.type != bif_token::kind::end) {
@@ -267,8 +264,8 @@ class bif_parser {
           accept_symbol(',');
         }
         if (labels.size() != static_cast<std::size_t>(*count)) {
-          fail(count_token, "variable '" + name.text + "' declares " + count_token.text +
-                                " states but lists " + std::to_string(labels.size()));
+          fail(count_token, "variable '" + name.text + "' declares " + count_token.text + " states but lists " +
+                                std::to_string(labels.size()));
         }
         expect_symbol(';');
         states = std::move(labels);
@@ -378,8 +375,8 @@ class bif_parser {
     std::vector<double> values(j * radix.size());
     auto check_count = [&](const bif_token& at, const std::vector<double>& row) {
       if (row.size() != j) {
-        fail(at, "expected " + std::to_string(j) + " probabilities for '" + decl.var.name() +
-                     "', found " + std::to_string(row.size()));
+        fail(at, "expected " + std::to_string(j) + " probabilities for '" + decl.var.name() + "', found " +
+                     std::to_string(row.size()));
       }
     };
     if (block.table) {
@@ -395,8 +392,8 @@ class bif_parser {
       for (const auto& [labels, row] : block.rows) {
         const auto& [at, probabilities] = row;
         if (labels.size() != parents.size()) {
-          fail(at, "expected states of " + std::to_string(parents.size()) + " parents of '" +
-                       decl.var.name() + "', found " + std::to_string(labels.size()));
+          fail(at, "expected states of " + std::to_string(parents.size()) + " parents of '" + decl.var.name() +
+                       "', found " + std::to_string(labels.size()));
         }
         std::vector<std::size_t> codes;
         for (std::size_t i = 0; i < labels.size(); ++i) {
@@ -419,8 +416,7 @@ class bif_parser {
                                 "' misses a parent configuration and has no 'default' line");
         }
         check_count(block.where, *block.fallback);
-        std::copy(block.fallback->begin(), block.fallback->end(),
-                  values.begin() + static_cast<std::ptrdiff_t>(u * j));
+        std::copy(block.fallback->begin(), block.fallback->end(), values.begin() + static_cast<std::ptrdiff_t>(u * j));
       }
     }
     try {
@@ -463,11 +459,11 @@ struct bif_write_options {
 
 /// Writes BIF as pgmpy does: one `(parent states) probabilities;` line per configuration.
 /// Throws model_error for a name or state that BIF cannot express (spaces, punctuation).
-inline void write_bif(const bayesian_network& network, std::ostream& out,
-                      const bif_write_options& options = {}) {
+inline void write_bif(const bayesian_network& network, std::ostream& out, const bif_write_options& options = {}) {
   auto checked = [](const std::string& word, const std::string& what) -> const std::string& {
     if (!detail::bif_word(word)) {
-      throw model_error(what + " '" + word + "' cannot be written to BIF (letters, digits, '_', "
+      throw model_error(what + " '" + word +
+                        "' cannot be written to BIF (letters, digits, '_', "
                         "'-' and '.' only)");
     }
     return word;
@@ -475,8 +471,7 @@ inline void write_bif(const bayesian_network& network, std::ostream& out,
   std::ostringstream text;
   text << "network " << checked(options.network_name, "network name") << " {\n}\n";
   for (const auto& v : network.variables()) {
-    text << "variable " << checked(v.name(), "variable name") << " {\n  type discrete [ "
-         << v.cardinality() << " ] { ";
+    text << "variable " << checked(v.name(), "variable name") << " {\n  type discrete [ " << v.cardinality() << " ] { ";
     for (std::size_t s = 0; s < v.cardinality(); ++s) {
       text << (s ? ", " : "") << checked(v.states()[s], "state of '" + v.name() + "'");
     }
@@ -533,8 +528,7 @@ inline void write_bif(const bayesian_network& network, std::ostream& out,
   out << text.str();
 }
 
-[[nodiscard]] inline std::string to_bif(const bayesian_network& network,
-                                        const bif_write_options& options = {}) {
+[[nodiscard]] inline std::string to_bif(const bayesian_network& network, const bif_write_options& options = {}) {
   std::ostringstream out;
   write_bif(network, out, options);
   return out.str();

@@ -30,8 +30,8 @@ inline void write_cpt_csv(const cpt<double>& table, std::ostream& out,
     }
     const auto column = table.column(config_index(u));
     for (std::size_t x = 0; x < column.size(); ++x) {
-      text += prefix + detail::csv_escape(table.child().states()[x], ',') + "," +
-              detail::format_double(column[x]) + "\n";
+      text +=
+          prefix + detail::csv_escape(table.child().states()[x], ',') + "," + detail::format_double(column[x]) + "\n";
     }
   }
   out << text;
@@ -44,8 +44,7 @@ inline void write_cpt_csv(const cpt<double>& table, const std::filesystem::path&
 
 /// Reads a table written by write_cpt_csv for known variables. Every configuration and state
 /// must appear exactly once.
-[[nodiscard]] inline cpt<double> parse_cpt_csv(std::string_view text, const std::string& source,
-                                               const variable& child,
+[[nodiscard]] inline cpt<double> parse_cpt_csv(std::string_view text, const std::string& source, const variable& child,
                                                const std::vector<variable>& parents) {
   csv_options options;
   for (const auto& p : parents) options.variables.emplace(p.name(), p);
@@ -66,8 +65,7 @@ inline void write_cpt_csv(const cpt<double>& table, const std::filesystem::path&
   for (std::size_t row = 0; row < data.rows(); ++row) {
     std::vector<std::size_t> codes;
     for (const auto& p : parents) codes.push_back(data.discrete(p.name()).code(row));
-    const auto cell = shape.configuration(codes).value() * child.cardinality() +
-                      data.discrete(child.name()).code(row);
+    const auto cell = shape.configuration(codes).value() * child.cardinality() + data.discrete(child.name()).code(row);
     if (seen[cell]) {
       throw data_error(source + ": row " + std::to_string(row + 1) + " repeats a configuration");
     }

@@ -16,13 +16,12 @@
 /// }
 
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
@@ -79,8 +78,7 @@ inline nlohmann::json variable_to_json(const variable& v) {
         const auto column = table.column(config_index(u));
         rows.push_back(std::vector<double>(column.begin(), column.end()));
       }
-      document["tables"].push_back(
-          {{"variable", table.child().name()}, {"parents", parents}, {"values", rows}});
+      document["tables"].push_back({{"variable", table.child().name()}, {"parents", parents}, {"values", rows}});
     }
   }
   return document;
@@ -174,8 +172,7 @@ inline void write_model_json(const nlohmann::json& document, const std::filesyst
   return document;
 }
 
-[[nodiscard]] inline discretization parse_discretization_json(std::string_view text,
-                                                              const std::string& source) {
+[[nodiscard]] inline discretization parse_discretization_json(std::string_view text, const std::string& source) {
   const detail::json_reader reader(source);
   const auto document = reader.parse(text);
   reader.check_format(document, "pgm-discretization");

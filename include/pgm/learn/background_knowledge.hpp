@@ -26,9 +26,7 @@ struct background_knowledge {
   /// a->b is in the graph whatever the data say (it is never tested).
   std::vector<named_edge> required;
 
-  [[nodiscard]] bool empty() const noexcept {
-    return tiers.empty() && forbidden.empty() && required.empty();
-  }
+  [[nodiscard]] bool empty() const noexcept { return tiers.empty() && forbidden.empty() && required.empty(); }
 };
 
 /// Parses "a,b;c;d" into tiers {a, b}, {c}, {d}. Throws model_error on an empty tier or name.
@@ -38,8 +36,7 @@ struct background_knowledge {
     auto names = detail::split(tier, ',');
     for (const auto& name : names) {
       if (name.empty()) {
-        throw model_error("tier " + std::to_string(tiers.size() + 1) + " ('" + tier +
-                          "') has an empty name");
+        throw model_error("tier " + std::to_string(tiers.size() + 1) + " ('" + tier + "') has an empty name");
       }
     }
     if (names.empty()) throw model_error("tier " + std::to_string(tiers.size() + 1) + " is empty");
@@ -54,8 +51,7 @@ struct background_knowledge {
 class edge_constraints {
  public:
   /// No constraints over `size` variables.
-  explicit edge_constraints(std::size_t size = 0)
-      : size_(size), allowed_(size * size, 1), required_(size * size, 0) {
+  explicit edge_constraints(std::size_t size = 0) : size_(size), allowed_(size * size, 1), required_(size * size, 0) {
     for (std::size_t i = 0; i < size; ++i) allowed_[i * size + i] = 0;
   }
 
@@ -79,8 +75,8 @@ class edge_constraints {
       for (const auto& name : knowledge.tiers[t]) {
         const auto i = find(name, "tiers");
         if (tier_of[i] != no_tier) {
-          throw model_error("variable '" + name + "' is in tier " + std::to_string(tier_of[i] + 1) +
-                            " and in tier " + std::to_string(t + 1));
+          throw model_error("variable '" + name + "' is in tier " + std::to_string(tier_of[i] + 1) + " and in tier " +
+                            std::to_string(t + 1));
         }
         tier_of[i] = t;
       }
@@ -120,13 +116,9 @@ class edge_constraints {
   /// Whether i -> j must be in the graph.
   [[nodiscard]] bool required(std::size_t i, std::size_t j) const { return required_[i * size_ + j] != 0; }
   /// Whether i and j may be adjacent at all.
-  [[nodiscard]] bool may_be_adjacent(std::size_t i, std::size_t j) const {
-    return allowed(i, j) || allowed(j, i);
-  }
+  [[nodiscard]] bool may_be_adjacent(std::size_t i, std::size_t j) const { return allowed(i, j) || allowed(j, i); }
   /// Whether i and j must be adjacent (one way or the other).
-  [[nodiscard]] bool must_be_adjacent(std::size_t i, std::size_t j) const {
-    return required(i, j) || required(j, i);
-  }
+  [[nodiscard]] bool must_be_adjacent(std::size_t i, std::size_t j) const { return required(i, j) || required(j, i); }
 
  private:
   static constexpr std::size_t no_tier = static_cast<std::size_t>(-1);

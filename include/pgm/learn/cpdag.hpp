@@ -42,8 +42,8 @@ class cpdag {
   [[nodiscard]] variable_id id(std::string_view name) const {
     const auto it = index_.find(name);
     if (it == index_.end()) {
-      throw model_error("unknown variable '" + std::string(name) +
-                        "' (known: " + detail::list_for_message(names_) + ")");
+      throw model_error("unknown variable '" + std::string(name) + "' (known: " + detail::list_for_message(names_) +
+                        ")");
     }
     return variable_id(static_cast<variable_id::rep>(it->second));
   }
@@ -132,9 +132,7 @@ class cpdag {
     return count;
   }
 
-  friend bool operator==(const cpdag& a, const cpdag& b) {
-    return a.names_ == b.names_ && a.marks_ == b.marks_;
-  }
+  friend bool operator==(const cpdag& a, const cpdag& b) { return a.names_ == b.names_ && a.marks_ == b.marks_; }
 
  private:
   [[nodiscard]] bool mark(variable_id a, variable_id b) const {
@@ -223,15 +221,13 @@ class cpdag {
   }
   // Group by source as the core's dag lists its edges.
   std::stable_sort(edges.begin(), edges.end(), [&](const named_edge& a, const named_edge& b) {
-    return graph.id(a.from) < graph.id(b.from) ||
-           (a.from == b.from && graph.id(a.to) < graph.id(b.to));
+    return graph.id(a.from) < graph.id(b.from) || (a.from == b.from && graph.id(a.to) < graph.id(b.to));
   });
   return edges;
 }
 
 /// The extension as a structure over `variables` (named as the CPDAG's nodes, in any order).
-[[nodiscard]] inline network_structure extend_to_structure(const cpdag& graph,
-                                                           std::vector<variable> variables) {
+[[nodiscard]] inline network_structure extend_to_structure(const cpdag& graph, std::vector<variable> variables) {
   return network_structure(std::move(variables), extend_to_dag(graph));
 }
 

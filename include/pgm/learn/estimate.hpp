@@ -30,8 +30,8 @@ namespace detail {
 
 /// θ[x,u] = (α[x,u] + M[x,u]) / (α_u + M[u]) with α given cell by cell and α_u per column.
 template <class CellAlpha, class ColumnAlpha>
-std::vector<double> dirichlet_posterior_mean(const count_table& counts, CellAlpha cell_alpha,
-                                     ColumnAlpha column_alpha, const estimate_options& options) {
+std::vector<double> dirichlet_posterior_mean(const count_table& counts, CellAlpha cell_alpha, ColumnAlpha column_alpha,
+                                             const estimate_options& options) {
   const std::size_t j = counts.child_cardinality();
   std::vector<double> values(counts.counts().size());
   for (std::size_t u = 0; u < counts.configurations(); ++u) {
@@ -44,11 +44,9 @@ std::vector<double> dirichlet_posterior_mean(const count_table& counts, CellAlph
         std::string where;
         const auto codes = counts.parent_radix().decode(u);
         for (std::size_t i = 0; i < codes.size(); ++i) {
-          where += (i ? ", " : " given ") + counts.parents()[i].name() + "=" +
-                   counts.parents()[i].states()[codes[i]];
+          where += (i ? ", " : " given ") + counts.parents()[i].name() + "=" + counts.parents()[i].states()[codes[i]];
         }
-        throw data_error("no data for '" + counts.child().name() + "'" + where +
-                         ", and no prior to fall back on");
+        throw data_error("no data for '" + counts.child().name() + "'" + where + ", and no prior to fall back on");
       }
       for (std::size_t x = 0; x < j; ++x) values[u * j + x] = 1.0 / static_cast<double>(j);
       continue;
@@ -84,13 +82,11 @@ inline cpt<double> estimate_from_pseudo_counts(const count_table& counts, const 
 }
 
 inline void check_shape(const count_table& counts, const cpt<double>& prior) {
-  if (prior.child_cardinality() != counts.child_cardinality() ||
-      prior.parent_radix() != counts.parent_radix()) {
+  if (prior.child_cardinality() != counts.child_cardinality() || prior.parent_radix() != counts.parent_radix()) {
     throw model_error("the prior table of '" + prior.child().name() + "' (" +
                       std::to_string(prior.child_cardinality()) + " states × " +
-                      std::to_string(prior.configurations()) +
-                      " configurations) does not match the shape of '" + counts.child().name() +
-                      "' (" + std::to_string(counts.child_cardinality()) + " × " +
+                      std::to_string(prior.configurations()) + " configurations) does not match the shape of '" +
+                      counts.child().name() + "' (" + std::to_string(counts.child_cardinality()) + " × " +
                       std::to_string(counts.configurations()) + ")");
   }
 }
@@ -98,11 +94,10 @@ inline void check_shape(const count_table& counts, const cpt<double>& prior) {
 }  // namespace detail
 
 /// Maximum likelihood, eq. 3: θ[x,u] = M[x,u] / M[u].
-[[nodiscard]] inline cpt<double> estimate_mle(const count_table& counts,
-                                              const estimate_options& options = {}) {
-  return detail::table_of(counts, detail::dirichlet_posterior_mean(
-                                      counts, [](std::size_t) { return 0.0; },
-                                      [](std::size_t) { return 0.0; }, options));
+[[nodiscard]] inline cpt<double> estimate_mle(const count_table& counts, const estimate_options& options = {}) {
+  return detail::table_of(counts,
+                          detail::dirichlet_posterior_mean(
+                              counts, [](std::size_t) { return 0.0; }, [](std::size_t) { return 0.0; }, options));
 }
 
 /// The estimate under any parameter prior (eq. 6; eq. 7/8 for `weighted_prior`).
@@ -114,8 +109,7 @@ inline void check_shape(const count_table& counts, const cpt<double>& prior) {
         using prior_type = std::decay_t<decltype(p)>;
         if constexpr (std::is_same_v<prior_type, no_prior>) {
           return estimate_mle(counts, options);
-        } else if constexpr (std::is_same_v<prior_type, dirichlet_prior> ||
-                             std::is_same_v<prior_type, k2_prior> ||
+        } else if constexpr (std::is_same_v<prior_type, dirichlet_prior> || std::is_same_v<prior_type, k2_prior> ||
                              std::is_same_v<prior_type, bdeu_prior>) {
           double alpha = 1.0;
           if constexpr (std::is_same_v<prior_type, dirichlet_prior>) alpha = p.alpha;
@@ -140,8 +134,7 @@ inline void check_shape(const count_table& counts, const cpt<double>& prior) {
           const double w = p.weight;
           // The denominator is w + M[u] exactly as in eq. 8, not the sum of w·f over states.
           auto values = detail::dirichlet_posterior_mean(
-              counts, [&](std::size_t cell) { return w * f[cell]; }, [w](std::size_t) { return w; },
-              options);
+              counts, [&](std::size_t cell) { return w * f[cell]; }, [w](std::size_t) { return w; }, options);
           // Where M[u] = 0 the formula is f itself; (w·f)/w can differ from f in the last bit.
           const auto cells = counts.child_cardinality();
           for (std::size_t u = 0; u < counts.configurations(); ++u) {

@@ -33,8 +33,7 @@ struct fit_options {
 /// The variables of a structure read off a data set: the discrete columns named by the
 /// edges, in the data's column order, with their states. Throws data_error for a column that
 /// is missing or continuous, not_a_dag for a cycle.
-[[nodiscard]] inline network_structure structure_from_data(const dataset& data,
-                                                           const std::vector<named_edge>& edges) {
+[[nodiscard]] inline network_structure structure_from_data(const dataset& data, const std::vector<named_edge>& edges) {
   std::set<std::string, std::less<>> named;
   for (const auto& edge : edges) {
     for (const auto* name : {&edge.from, &edge.to}) {
@@ -69,17 +68,15 @@ struct fit_options {
 }
 
 /// The count table of one node of a structure, with the structure's variables.
-[[nodiscard]] inline count_table count_node(const network_structure& structure, variable_id node,
-                                            const dataset& data, const count_options& counting = {},
-                                            row_range rows = {}) {
+[[nodiscard]] inline count_table count_node(const network_structure& structure, variable_id node, const dataset& data,
+                                            const count_options& counting = {}, row_range rows = {}) {
   const auto& child = structure.at(node);
   const auto parents = structure.parent_variables(node);
   auto column_of = [&](const variable& v) -> const discrete_column& {
     const auto& column = data.discrete(v.name());
     if (column.var().states() != v.states()) {
-      throw data_error((data.source().empty() ? std::string() : data.source() + ": ") +
-                       "column '" + v.name() + "' has the states {" +
-                       detail::join(column.var().states()) + "} but the model expects {" +
+      throw data_error((data.source().empty() ? std::string() : data.source() + ": ") + "column '" + v.name() +
+                       "' has the states {" + detail::join(column.var().states()) + "} but the model expects {" +
                        detail::join(v.states()) + "}");
     }
     return column;

@@ -27,9 +27,7 @@ class separation_sets {
  public:
   explicit separation_sets(std::size_t size = 0) : size_(size), sets_(size * size) {}
 
-  void set(variable_id a, variable_id b, std::vector<variable_id> given) {
-    sets_[key(a, b)] = std::move(given);
-  }
+  void set(variable_id a, variable_id b, std::vector<variable_id> given) { sets_[key(a, b)] = std::move(given); }
   /// The separating set of a and b, or nullptr if none was recorded (they stayed adjacent,
   /// or background knowledge removed the pair).
   [[nodiscard]] const std::vector<variable_id>* get(variable_id a, variable_id b) const {
@@ -85,8 +83,7 @@ inline void orient_by_knowledge(cpdag& graph, const edge_constraints& constraint
 /// For every unshielded triple a - c - b (a, b not adjacent) whose separating set does not
 /// hold c, orients a -> c <- b. Only undirected edges are oriented; an edge already directed
 /// the other way is left as it is and the conflict reported.
-inline void orient_v_structures(cpdag& graph, const separation_sets& sepsets,
-                                std::vector<std::string>& conflicts) {
+inline void orient_v_structures(cpdag& graph, const separation_sets& sepsets, std::vector<std::string>& conflicts) {
   const auto skeleton = graph;  // unshielded triples are those of the skeleton
   for (std::size_t k = 0; k < graph.size(); ++k) {
     const auto c = detail::node(k);
@@ -100,9 +97,8 @@ inline void orient_v_structures(cpdag& graph, const separation_sets& sepsets,
           if (graph.undirected(end, c)) {
             detail::orient_if_acyclic(graph, end, c, "v-structure", conflicts);
           } else if (graph.directed(c, end)) {
-            conflicts.push_back("v-structure " + graph.name(a) + " -> " + graph.name(c) + " <- " +
-                                graph.name(b) + ": " + graph.name(c) + " -> " + graph.name(end) +
-                                " is already oriented");
+            conflicts.push_back("v-structure " + graph.name(a) + " -> " + graph.name(c) + " <- " + graph.name(b) +
+                                ": " + graph.name(c) + " -> " + graph.name(end) + " is already oriented");
           }
         }
       }

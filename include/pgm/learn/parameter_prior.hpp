@@ -86,8 +86,8 @@ concept ParameterPrior = std::copy_constructible<P> && detail::NamedPrior<P> && 
 class any_parameter_prior {
  public:
   template <ParameterPrior P>
-    requires(!std::same_as<P, any_parameter_prior>)
-  any_parameter_prior(P prior)  // NOLINT(google-explicit-constructor): `options.prior = mine{}`
+  requires(!std::same_as<P, any_parameter_prior>)
+      any_parameter_prior(P prior)  // NOLINT(google-explicit-constructor): `options.prior = mine{}`
       : name_(prior.name()),
         pseudo_counts_([p = std::move(prior)](const variable& child, const std::vector<variable>& parents) {
           return p.pseudo_counts(child, parents);
@@ -112,8 +112,7 @@ namespace detail {
 
 inline void check_pseudo_count(double value, const char* what) {
   if (!std::isfinite(value) || value < 0.0) {
-    throw model_error(std::string(what) + " must be a finite number ≥ 0, got " +
-                      format_double(value));
+    throw model_error(std::string(what) + " must be a finite number ≥ 0, got " + format_double(value));
   }
 }
 

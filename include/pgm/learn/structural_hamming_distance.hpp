@@ -37,8 +37,8 @@ struct hamming_parts {
         ++parts.extra;
       } else if (!in_learned && in_truth) {
         ++parts.missing;
-      } else if (in_learned && (learned.directed(a, b) != truth.directed(a, b) ||
-                                learned.directed(b, a) != truth.directed(b, a))) {
+      } else if (in_learned &&
+                 (learned.directed(a, b) != truth.directed(a, b) || learned.directed(b, a) != truth.directed(b, a))) {
         ++parts.misoriented;
       }
     }

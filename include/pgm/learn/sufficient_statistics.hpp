@@ -32,8 +32,7 @@ class count_table {
  public:
   using count_type = std::uint64_t;
 
-  count_table(variable child, std::vector<variable> parents)
-      : child_(std::move(child)), parents_(std::move(parents)) {
+  count_table(variable child, std::vector<variable> parents) : child_(std::move(child)), parents_(std::move(parents)) {
     std::vector<std::size_t> cards;
     for (const auto& p : parents_) cards.push_back(p.cardinality());
     radix_ = mixed_radix(std::move(cards));
@@ -91,8 +90,8 @@ class count_table {
   /// Adds the counts of another table of the same family.
   count_table& operator+=(const count_table& other) {
     if (other.child_ != child_ || other.parents_ != parents_) {
-      throw model_error("cannot add the counts of '" + other.child_.name() + "' to those of '" +
-                        child_.name() + "': the families differ");
+      throw model_error("cannot add the counts of '" + other.child_.name() + "' to those of '" + child_.name() +
+                        "': the families differ");
     }
     for (std::size_t i = 0; i < counts_.size(); ++i) counts_[i] += other.counts_[i];
     return *this;
@@ -224,8 +223,7 @@ struct family_columns {
 /// Counts the family (child | parents) over rows `rows` of the given columns.
 [[nodiscard]] inline count_table count_family(const discrete_column& child,
                                               std::span<const discrete_column* const> parents,
-                                              const count_options& options = {},
-                                              row_range rows = {}) {
+                                              const count_options& options = {}, row_range rows = {}) {
   std::vector<variable> parent_variables;
   for (const auto* p : parents) parent_variables.push_back(p->var());
   count_table table(child.var(), std::move(parent_variables));
@@ -240,8 +238,7 @@ struct family_columns {
 /// Counts the family (child | parents) over rows `rows` of a data set, by column names.
 /// Throws data_error for a missing or continuous column.
 [[nodiscard]] inline count_table count_family(const dataset& data, std::string_view child,
-                                              std::span<const std::string> parents,
-                                              const count_options& options = {},
+                                              std::span<const std::string> parents, const count_options& options = {},
                                               row_range rows = {}) {
   std::vector<const discrete_column*> parent_columns;
   for (const auto& name : parents) parent_columns.push_back(&data.discrete(name));

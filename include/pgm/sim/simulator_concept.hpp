@@ -41,8 +41,7 @@ concept has_backend_name = requires {
 }  // namespace detail
 
 template <class S>
-concept Simulator =
-    detail::constructible_from_task<S> && detail::runs_one_experiment<S> && detail::has_backend_name<S>;
+concept Simulator = detail::constructible_from_task<S> && detail::runs_one_experiment<S> && detail::has_backend_name<S>;
 
 struct simulate_options {
   /// "analytic" (closed-form, header-only) or "bullet" (rigid bodies, when built).

@@ -22,10 +22,12 @@ namespace pgm {
 inline void check_correspondence(const correspondence& map, const bayesian_network& prior,
                                  const network_structure& target) {
   auto in_target = [&](const std::string& name, const char* kind) {
-    if (!target.contains(name)) throw model_error("the map's " + std::string(kind) + " '" + name + "' is not a variable of the target network");
+    if (!target.contains(name))
+      throw model_error("the map's " + std::string(kind) + " '" + name + "' is not a variable of the target network");
   };
   auto in_prior = [&](const std::string& name, const char* kind) {
-    if (!prior.structure().contains(name)) throw model_error("the map's " + std::string(kind) + " '" + name + "' is not a variable of the prior network");
+    if (!prior.structure().contains(name))
+      throw model_error("the map's " + std::string(kind) + " '" + name + "' is not a variable of the prior network");
   };
   for (const auto& [t, p] : map.transferred) in_target(t, "transferred node"), in_prior(p, "transferred node");
   for (const auto& [t, p] : map.identical) in_target(t, "identical variable"), in_prior(p, "identical variable");

@@ -12,11 +12,10 @@
 /// data every w gives the prior itself (eq. 8 with M[u] = 0), so the choice cannot matter; we
 /// report the paper's best weight, 5.
 
+#include <boost/math/special_functions/gamma.hpp>
 #include <cmath>
 #include <string>
 #include <vector>
-
-#include <boost/math/special_functions/gamma.hpp>
 
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
@@ -78,10 +77,12 @@ struct prior_weight_choice {
   const double decades = std::log10(search.largest / search.smallest);
   const auto steps = static_cast<std::size_t>(std::ceil(decades * static_cast<double>(search.steps_per_decade)));
   for (std::size_t k = 0; k <= steps; ++k) {
-    choice.grid.push_back(search.smallest * std::pow(10.0, static_cast<double>(k) / static_cast<double>(search.steps_per_decade)));
+    choice.grid.push_back(search.smallest *
+                          std::pow(10.0, static_cast<double>(k) / static_cast<double>(search.steps_per_decade)));
   }
   if (counts.total() == 0) {
-    choice.reason = "no target data: every w > 0 gives the prior itself; w = " + detail::format_short(search.without_data);
+    choice.reason =
+        "no target data: every w > 0 gives the prior itself; w = " + detail::format_short(search.without_data);
     choice.log_evidence_on_grid.assign(choice.grid.size(), 0.0);
     return choice;
   }
@@ -99,7 +100,9 @@ struct prior_weight_choice {
     choice.reason += best == 0 ? "; at the grid's low end: the data trusts the prior little"
                                : "; at the grid's high end: the data agrees with the prior closely";
   } else {
-    auto relative = [&](std::size_t k) { return detail::format_short(choice.log_evidence_on_grid[k] - choice.log_evidence, 3); };
+    auto relative = [&](std::size_t k) {
+      return detail::format_short(choice.log_evidence_on_grid[k] - choice.log_evidence, 3);
+    };
     choice.reason += "; neighbours w = " + detail::format_short(choice.grid[best - 1], 3) + " (" + relative(best - 1) +
                      ") and w = " + detail::format_short(choice.grid[best + 1], 3) + " (" + relative(best + 1) + ")";
   }

@@ -56,7 +56,8 @@ namespace detail {
 }
 
 /// The marginal of a root variable, or nothing.
-[[nodiscard]] inline std::optional<std::vector<double>> root_marginal(const network_view& view, const std::string& name) {
+[[nodiscard]] inline std::optional<std::vector<double>> root_marginal(const network_view& view,
+                                                                      const std::string& name) {
   if (!view.network) return std::nullopt;
   const auto& table = view.network->table(name);
   if (!table.parents().empty()) return std::nullopt;
@@ -68,7 +69,8 @@ namespace detail {
 
 /// Scores one pair of variables; `target_view`/`prior_view` give marginals where available.
 [[nodiscard]] inline correspondence_candidate score_pair(const variable& target, const variable& prior,
-                                                         const network_view& target_view, const network_view& prior_view) {
+                                                         const network_view& target_view,
+                                                         const network_view& prior_view) {
   correspondence_candidate c{target.name(), prior.name(), 0, {}};
   double total = 0, weight = 0;
   auto add = [&](double part, double w, std::string reason) {
@@ -79,8 +81,11 @@ namespace detail {
   const auto ts = detail::name_stem(target.name()), ps = detail::name_stem(prior.name());
   std::size_t common = 0;
   while (common < std::min(ts.size(), ps.size()) && ts[common] == ps[common]) ++common;
-  const double stem = ts == ps ? 1.0 : static_cast<double>(common) / static_cast<double>(std::max(ts.size(), ps.size()));
-  add(stem, 0.4, ts == ps ? "same name stem '" + ts + "'" : "name stems '" + ts + "'/'" + ps + "' share " + std::to_string(common) + " letters");
+  const double stem =
+      ts == ps ? 1.0 : static_cast<double>(common) / static_cast<double>(std::max(ts.size(), ps.size()));
+  add(stem, 0.4,
+      ts == ps ? "same name stem '" + ts + "'"
+               : "name stems '" + ts + "'/'" + ps + "' share " + std::to_string(common) + " letters");
 
   const auto& tt = target.tags();
   const auto& pt = prior.tags();
@@ -88,7 +93,8 @@ namespace detail {
     const double q = tt.quantity == pt.quantity ? 1.0 : 0.0;
     const double u = tt.unit == pt.unit ? 1.0 : 0.0;
     add(0.75 * q + 0.25 * u, 0.3,
-        q ? "same quantity '" + tt.quantity + "'" + (u ? " in " + tt.unit : ", other units") : "other quantities '" + tt.quantity + "'/'" + pt.quantity + "'");
+        q ? "same quantity '" + tt.quantity + "'" + (u ? " in " + tt.unit : ", other units")
+          : "other quantities '" + tt.quantity + "'/'" + pt.quantity + "'");
   }
   const auto tr = detail::value_range(target), pr = detail::value_range(prior);
   if (tr && pr) {

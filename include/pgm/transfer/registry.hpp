@@ -27,8 +27,8 @@ namespace pgm {
 class any_prior_transfer {
  public:
   template <PriorTransfer S>
-    requires(!std::same_as<S, any_prior_transfer>)
-  any_prior_transfer(S strategy)  // NOLINT(google-explicit-constructor): a strategy is one
+  requires(!std::same_as<S, any_prior_transfer>)
+      any_prior_transfer(S strategy)  // NOLINT(google-explicit-constructor): a strategy is one
       : name_(strategy.name()), call_(std::move(strategy)) {}
 
   [[nodiscard]] std::string_view name() const noexcept { return name_; }

@@ -28,7 +28,7 @@ struct parent_source {
 };
 
 struct replacement_plan {
-  std::vector<parent_source> parents;  ///< one per parent of the prior node, in its order
+  std::vector<parent_source> parents;    ///< one per parent of the prior node, in its order
   std::vector<std::size_t> child_state;  ///< prior child state of each target child state
 };
 
@@ -90,8 +90,8 @@ template <class Counterpart>
       const auto& target_parent = problem.target_parents()[t];
       if (counterpart(target_parent.name()) != std::optional<std::string>(prior_parent.name())) continue;
       if (source.target_parent) {
-        throw model_error(strategy + ": both '" + problem.target_parents()[*source.target_parent].name() +
-                          "' and '" + target_parent.name() + "' stand for the prior's '" + prior_parent.name() + "'");
+        throw model_error(strategy + ": both '" + problem.target_parents()[*source.target_parent].name() + "' and '" +
+                          target_parent.name() + "' stand for the prior's '" + prior_parent.name() + "'");
       }
       source.target_parent = t;
       source.mapping = map_states(target_parent, prior_parent, problem.options().matching);
@@ -99,19 +99,20 @@ template <class Counterpart>
     if (source.target_parent) {
       ++assigned;
     } else if (const auto pin = problem.map().pinned.find(prior_parent.name()); pin != problem.map().pinned.end()) {
-      source.fixed = pin->second.marginalize() ? detail::prior_marginal(problem, prior_parent)
-                                               : std::vector<weighted_state>{{pinned_state(prior_parent, pin->second.value), 1.0}};
+      source.fixed = pin->second.marginalize()
+                         ? detail::prior_marginal(problem, prior_parent)
+                         : std::vector<weighted_state>{{pinned_state(prior_parent, pin->second.value), 1.0}};
     } else {
-      throw model_error(strategy + " leaves the prior's parent '" + prior_parent.name() + "' of '" + prior.child().name() +
-                        "' unassigned: no parent of '" + problem.target_child().name() +
-                        "' corresponds to it; pin it with '" + prior_parent.name() + "@<value>' or marginalize it with '" +
-                        prior_parent.name() + "@*'");
+      throw model_error(strategy + " leaves the prior's parent '" + prior_parent.name() + "' of '" +
+                        prior.child().name() + "' unassigned: no parent of '" + problem.target_child().name() +
+                        "' corresponds to it; pin it with '" + prior_parent.name() +
+                        "@<value>' or marginalize it with '" + prior_parent.name() + "@*'");
     }
     plan.parents.push_back(std::move(source));
   }
   if (!prior.parents().empty() && assigned == 0) {
-    throw model_error(strategy + ": no parent of '" + problem.target_child().name() + "' corresponds to a parent of the prior's '" +
-                      prior.child().name() + "'");
+    throw model_error(strategy + ": no parent of '" + problem.target_child().name() +
+                      "' corresponds to a parent of the prior's '" + prior.child().name() + "'");
   }
   return plan;
 }
@@ -119,15 +120,17 @@ template <class Counterpart>
 /// Direct-Replacement's plan: u′ = u restricted to Pa_X′ ∩ Pa_X (identical variables).
 [[nodiscard]] inline replacement_plan direct_plan(const transfer_problem& problem) {
   const auto& map = problem.map();
-  return make_plan(problem, [&](const std::string& target) { return std::optional(map.identical_to(target)); },
-                   "Direct-Replacement");
+  return make_plan(
+      problem, [&](const std::string& target) { return std::optional(map.identical_to(target)); },
+      "Direct-Replacement");
 }
 
 /// Cross-Replacement's plan: u′ = u restricted to the related variables, read as their prior
 /// counterparts.
 [[nodiscard]] inline replacement_plan cross_plan(const transfer_problem& problem) {
   const auto& map = problem.map();
-  return make_plan(problem, [&](const std::string& target) { return map.related_to(target); }, "Cross-Replacement");
+  return make_plan(
+      problem, [&](const std::string& target) { return map.related_to(target); }, "Cross-Replacement");
 }
 
 /// The prior configurations u′ behind every target configuration u under `plan`, each with

@@ -62,12 +62,12 @@ namespace detail {
 /// How the states of `target` stand for states of `prior`. Same states (and edges) map one to
 /// one; interval or numeric states map by value; categorical states by label.
 [[nodiscard]] inline state_mapping map_states(const variable& target, const variable& prior,
-                                             state_matching matching = state_matching::midpoint) {
+                                              state_matching matching = state_matching::midpoint) {
   state_mapping mapping(target.cardinality());
   const auto cannot = [&](const std::string& why) {
     return model_error("cannot match the states of '" + target.name() + "' " + detail::states_for_message(target) +
-                       " to those of the prior's '" + prior.name() + "' " + detail::states_for_message(prior) +
-                       ": " + why);
+                       " to those of the prior's '" + prior.name() + "' " + detail::states_for_message(prior) + ": " +
+                       why);
   };
   if (target.states() == prior.states() && target.edges() == prior.edges()) {
     for (std::size_t s = 0; s < mapping.size(); ++s) mapping[s] = {{s, 1.0}};
@@ -120,8 +120,9 @@ namespace detail {
       if (other && *other == *number) return p;
     }
   }
-  throw model_error("cannot pin the prior's '" + prior.name() + "' to '" + value + "': it is neither one of its states " +
-                    detail::states_for_message(prior) + (prior.has_intervals() ? " nor a number" : "") );
+  throw model_error("cannot pin the prior's '" + prior.name() + "' to '" + value +
+                    "': it is neither one of its states " + detail::states_for_message(prior) +
+                    (prior.has_intervals() ? " nor a number" : ""));
 }
 
 }  // namespace pgm

@@ -76,9 +76,12 @@ enum class replacement : std::uint8_t { direct, cross, other };
 
 [[nodiscard]] inline const char* to_string(replacement r) {
   switch (r) {
-    case replacement::direct: return "direct";
-    case replacement::cross: return "cross";
-    case replacement::other: break;
+    case replacement::direct:
+      return "direct";
+    case replacement::cross:
+      return "cross";
+    case replacement::other:
+      break;
   }
   return "other";
 }
@@ -102,8 +105,8 @@ class transferred_prior {
         terms_(std::move(terms)),
         via_(std::move(via)) {
     if (term_counts.size() != table_.configurations() || via_.size() != table_.configurations()) {
-      throw model_error("a transferred prior needs sources for each of the " +
-                        std::to_string(table_.configurations()) + " configurations of '" + table_.child().name() + "'");
+      throw model_error("a transferred prior needs sources for each of the " + std::to_string(table_.configurations()) +
+                        " configurations of '" + table_.child().name() + "'");
     }
     offsets_.reserve(term_counts.size() + 1);
     offsets_.push_back(0);
