@@ -18,20 +18,14 @@
 
 namespace pgm {
 
-/// Throws model_error unless the prior node `prior_node` can stand for the target node
-/// `target_node`: when both carry a quantity tag the quantities agree, and the prior node is not
-/// already the counterpart (same name, `==` or `~`) of one of the target node's parents. Both
-/// names must be in their networks. `pgm fit` and `pgm transfer` check each pair with it.
-inline void check_transferred_pair(const correspondence& map, const bayesian_network& prior,
-                                   const std::string& prior_node, const network_structure& target,
-                                   const std::string& target_node) {
+/// Throws model_error if the prior node `prior_node` is already the counterpart (same name, `==`
+/// or `~`) of a parent of the target node `target_node`: a node cannot take the table of its own
+/// parent's counterpart. Quantity tags are not compared: transferring between outcomes of different
+/// quantities (`inside=onTop1`, stacking to dropping) is the paper's use. Both names must be in
+/// their networks. `pgm fit` and `pgm transfer` check each pair with it (via check_correspondence).
+inline void check_transferred_pair(const correspondence& map, const std::string& prior_node,
+                                   const network_structure& target, const std::string& target_node) {
   const auto entry = "map entry '" + target_node + "=" + prior_node + "': ";
-  const auto& to = target.at(target.id(target_node)).tags();
-  const auto& from = prior.at(prior_node).tags();
-  if (!to.quantity.empty() && !from.quantity.empty() && to.quantity != from.quantity) {
-    throw model_error(entry + "'" + target_node + "' measures " + to.quantity + " but the prior's '" + prior_node +
-                      "' measures " + from.quantity + "; a transferred node needs a prior node of the same quantity");
-  }
   for (const auto& parent : target.parent_variables(target.id(target_node))) {
     const auto related = map.related_to(parent.name());
     if (map.identical_to(parent.name()) == prior_node || (related && *related == prior_node)) {
@@ -58,7 +52,7 @@ inline void check_correspondence(const correspondence& map, const bayesian_netwo
   for (const auto& [t, p] : map.identical) in_target(t, "identical variable"), in_prior(p, "identical variable");
   for (const auto& [t, p] : map.related) in_target(t, "related variable"), in_prior(p, "related variable");
   for (const auto& [p, pin] : map.pinned) in_prior(p, "pinned variable");
-  for (const auto& [t, p] : map.transferred) check_transferred_pair(map, prior, p, target, t);
+  for (const auto& [t, p] : map.transferred) check_transferred_pair(map, p, target, t);
 }
 
 /// The transferred prior of every `target=prior` pair of `map`, by target node.
