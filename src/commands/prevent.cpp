@@ -3,6 +3,7 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,7 @@ namespace {
 
 struct prevent_arguments {
   decision_arguments decision;
-  std::string controllable;
+  std::optional<std::string> controllable;  // given but empty is an error, not the default
   double epsilon = 0.8;
   std::string distance = "steps";
 };
@@ -27,12 +28,12 @@ void run_prevent(const prevent_arguments& args) {
   const auto& network = model.network;
   const auto planned = read_assignment(args.decision.assign, network);
   std::vector<std::string> controllable;
-  if (args.controllable.empty()) {
+  if (!args.controllable) {
     controllable = default_controllable(network, model.success);
     note("no --controllable given: every parent of '" + model.success.variable + "' may move (" +
          detail::join(controllable) + ")");
   } else {
-    controllable = split_list(args.controllable, "--controllable");
+    if (!args.controllable->empty()) controllable = split_list(*args.controllable, "--controllable");
   }
   prevention_options options;
   options.epsilon = args.epsilon;
@@ -95,7 +96,8 @@ void add_prevent_command(CLI::App& app) {
   add_decision_options(*cmd, args->decision);
   cmd->add_option("--controllable", args->controllable,
                   "Variables the robot may change, e.g. xOff1,yOff1 (default: every parent of the success variable)");
-  cmd->add_option("--epsilon", args->epsilon, "Success threshold")->check(CLI::Range(0.0, 1.0))->capture_default_str();
+  cmd->add_option("--epsilon", args->epsilon, "Success threshold, 0 ≤ epsilon < 1: a prediction above it succeeds")
+      ->capture_default_str();
   cmd->add_option("--distance", args->distance,
                   "Nearness: steps (bins moved) or units (Euclidean distance between interval midpoints)")
       ->check(CLI::IsMember({"steps", "units"}))

@@ -267,6 +267,19 @@ TEST_F(cli_test, transfer_errors_name_the_problem) {
   expect_failure(base + " --map \"onTop2=onTop1\" --w-prior -1 --out " + path("f.json").string(),
                  "--w-prior must be a number ≥ 0 or auto", path("f.json"));
   expect_failure(base + " --out " + path("f.json").string(), "--prior-model needs --map", path("f.json"));
+  // fit and transfer refuse a node mapped to the prior counterpart of its own parent alike.
+  const std::string same = "map entry 'onTop2=xOff1': the prior's 'xOff1' already stands for 'xOff1'";
+  expect_failure(base + " --map \"onTop2=xOff1\" --out " + path("f.json").string(), same, path("f.json"));
+  expect_failure("transfer --edges \"xOff1->onTop2,yOff1->onTop2\" --prior-model " + path("one.json").string() +
+                     " --map \"onTop2=xOff1\" --out " + path("p.csv").string(),
+                 same, path("p.csv"));
+}
+
+TEST_F(cli_test, pseudo_counts_too_large_to_normalize_are_refused) {
+  const auto data = file("d.csv", stacking);
+  expect_failure("fit --data " + data.string() + " --edges \"xOff1->onTop1\" --estimator bayes --prior dirichlet" +
+                     " --alpha 1e308 --out " + path("f.json").string(),
+                 "add up to more than the largest finite number (1.7976931348623157e+308)", path("f.json"));
 }
 
 // ---- learn-structure --------------------------------------------------------------------

@@ -104,7 +104,13 @@ TEST_F(decide_cli_test, bad_input_is_one_clear_line) {
   expect_error("prevent" + m + " --assign 'xOff1=0,yOff1=0,colour=Red' --controllable colour --distance units",
                "'colour' has no interval edges");
   expect_error("predict --model " + (dir_ / "absent.json").string() + " --assign x=1", "absent.json");
-  EXPECT_NE(run("prevent" + m + " --assign 'xOff1=0,yOff1=0' --epsilon 2").code, 0);
+  expect_error("prevent" + m + " --assign 'xOff1=0,yOff1=0' --epsilon 2", "epsilon must be at least 0 and below 1");
+  // Success is a prediction above epsilon, which no probability exceeds at 1.
+  expect_error("prevent" + m + " --assign 'xOff1=0,yOff1=0' --epsilon 1",
+               "epsilon must be at least 0 and below 1 (success is a prediction above epsilon");
+  // Given but empty is not the same as absent (every parent).
+  expect_error("prevent" + m + " --assign 'xOff1=0,yOff1=0' --controllable ''",
+               "no variable is controllable, so nothing can be changed: name at least one");
 }
 
 }  // namespace

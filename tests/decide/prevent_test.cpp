@@ -98,6 +98,9 @@ TEST(prevent_test, rejects_bad_input) {
       },
       ::testing::ThrowsMessage<model_error>(HasSubstr("'colour' has no interval edges")));
   EXPECT_THROW(static_cast<void>(prevention_targets(t, 1, yes, {.epsilon = 1.5})), model_error);
+  // No prediction exceeds 1, so ε = 1 is refused rather than every change falling short of it.
+  EXPECT_THAT([&] { static_cast<void>(prevention_targets(t, 1, yes, {.epsilon = 1.0})); },
+              ::testing::ThrowsMessage<model_error>(HasSubstr("epsilon must be at least 0 and below 1")));
 }
 
 std::vector<double> random_estimates(std::mt19937_64& random, std::size_t n, int mode) {

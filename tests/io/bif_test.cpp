@@ -104,6 +104,15 @@ TEST(bif_test, errors_are_located) {
       ThrowsMessage<parse_error>(HasSubstr("found the end of the file")));
 }
 
+TEST(bif_test, a_cycle_names_the_file_and_the_block_that_closes_it) {
+  const std::string text =
+      "variable a { type discrete [ 2 ] { x, y }; }\nvariable b { type discrete [ 2 ] { x, y }; }\n"
+      "probability ( a | b ) { table 0.5, 0.5, 0.5, 0.5; }\nprobability ( b | a ) { table 0.5, 0.5, 0.5, 0.5; }\n";
+  EXPECT_THAT([&] { static_cast<void>(parse_bif(text, "loop.bif")); },
+              ThrowsMessage<parse_error>(HasSubstr("loop.bif:4:15: the probability block of 'b' closes a cycle: "
+                                                   "adding this edge closes the cycle a -> b -> a")));
+}
+
 TEST(bif_test, missing_configurations_and_parent_tables) {
   const std::string head =
       "variable a { type discrete [ 2 ] { x, y }; }\nvariable b { type discrete [ 2 ] { x, y }; }\n"

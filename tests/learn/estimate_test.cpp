@@ -75,6 +75,21 @@ TEST(estimate_test, explicit_pseudo_counts) {
       ThrowsMessage<model_error>(HasSubstr("a pseudo-count must be a finite number ≥ 0, got -1")));
 }
 
+TEST(estimate_test, pseudo_counts_whose_sum_is_not_finite_are_refused) {
+  // Each α = 1e308 is finite, but α·J = 2e308 is not: the table would be 0 everywhere.
+  EXPECT_THAT([] { static_cast<void>(estimate(small_counts(), dirichlet_prior{1e308})); },
+              ThrowsMessage<model_error>(HasSubstr("the pseudo-counts and counts of 'c' given p=a add up to more "
+                                                   "than the largest finite number (1.7976931348623157e+308)")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(estimate(small_counts(), pseudo_counts_prior{{1, 1, 1e308, 1e308, 0, 0}}));
+      },
+      ThrowsMessage<model_error>(HasSubstr("of 'c' given p=b add up to more than the largest finite number")));
+  // Just below the limit the table is still normalized.
+  const auto near = values(estimate(small_counts(), dirichlet_prior{8e307}));
+  EXPECT_THAT(near, Pointwise(DoubleEq(), {0.5, 0.5, 0.5, 0.5, 0.5, 0.5}));
+}
+
 cpt<double> prior_table() {
   return cpt<double>(variable("c", {"0", "1"}), {variable("p", {"a", "b", "c"})}, {0.2, 0.8, 0.9, 0.1, 0.6, 0.4});
 }

@@ -299,4 +299,19 @@ TEST(transfer_test, map_names_are_checked_against_both_networks) {
   EXPECT_EQ(priors.at("onTop2").table().configurations(), 25U);
 }
 
+TEST(transfer_test, a_transferred_node_cannot_take_the_table_of_its_parents_counterpart) {
+  const auto prior = bayesian_network::from_tables(
+      {cpt<double>(offset("xOff1"), {}, std::vector<double>(5, 0.2)), distinct_table(outcome_1, {offset("xOff1")})});
+  const network_structure target({offset("xOff1"), offset("xOff2"), outcome_2},
+                                 {{"xOff1", "onTop2"}, {"xOff2", "onTop2"}});
+  // The prior's xOff1 is already the target's xOff1 (same name), a parent of onTop2.
+  EXPECT_THAT([&] { check_correspondence(parse_correspondence("onTop2=xOff1"), prior, target); },
+              ThrowsMessage<model_error>(HasSubstr("map entry 'onTop2=xOff1': the prior's 'xOff1' already stands for "
+                                                   "'xOff1', a parent of 'onTop2'")));
+  // ... and so is it through `~`.
+  EXPECT_THAT([&] { check_correspondence(parse_correspondence("onTop2=xOff1,xOff2~xOff1"), prior, target); },
+              ThrowsMessage<model_error>(HasSubstr("already stands for 'xOff1'")));
+  EXPECT_NO_THROW(check_correspondence(parse_correspondence("onTop2=onTop1,xOff2~xOff1"), prior, target));
+}
+
 }  // namespace

@@ -143,12 +143,14 @@ struct prevention_plan {
                                                      std::span<const std::string> controllable,
                                                      const prevention_options& options = {},
                                                      const prediction_options& prediction = {}) {
+  detail::check_epsilon(options.epsilon);
   const auto target = detail::node_of(network, success.variable);
   const auto state = network.at(success.variable).state(success.state);
   if (planned.contains(success.variable)) {
     throw model_error("the success variable '" + success.variable + "' is assigned; it is what is predicted");
   }
-  if (controllable.empty()) throw model_error("no variable is controllable, so nothing can be changed");
+  if (controllable.empty())
+    throw model_error("no variable is controllable, so nothing can be changed: name at least one");
   for (const auto& name : controllable) {
     static_cast<void>(detail::node_of(network, name));
     if (name == success.variable) throw model_error("the success variable '" + name + "' cannot be controllable");

@@ -39,6 +39,17 @@ struct prevention_options {
 
 namespace detail {
 
+/// Success is a prediction above ε, so ε = 1 could never be reached: refused rather than
+/// reporting the best change as short of ε when it predicts 1.
+inline void check_epsilon(double epsilon) {
+  if (!(epsilon >= 0.0 && epsilon < 1.0)) {
+    throw model_error(
+        "epsilon must be at least 0 and below 1 (success is a prediction above epsilon, and no "
+        "probability exceeds 1), got " +
+        detail::format_double(epsilon));
+  }
+}
+
 inline void check_prevention_inputs(const cpt<double>& table, std::size_t success_state,
                                     std::span<const bool> controllable, const prevention_options& options) {
   if (success_state >= table.child_cardinality()) {
@@ -49,9 +60,7 @@ inline void check_prevention_inputs(const cpt<double>& table, std::size_t succes
     throw model_error("'" + table.child().name() + "' has " + std::to_string(table.parents().size()) +
                       " parents, got " + std::to_string(controllable.size()) + " controllable flags");
   }
-  if (!(options.epsilon >= 0.0 && options.epsilon <= 1.0)) {
-    throw model_error("epsilon must be a probability, got " + detail::format_double(options.epsilon));
-  }
+  check_epsilon(options.epsilon);
 }
 
 /// Per controllable parent, the squared midpoint differences between its states.

@@ -167,7 +167,11 @@ class bif_parser {
     network_structure structure(variables);
     for (const auto& name : order_) {
       const auto& decl = declared_.at(name);
-      for (const auto& parent : decl.table->parents) structure.add_edge(parent, name);
+      try {
+        for (const auto& parent : decl.table->parents) structure.add_edge(parent, name);
+      } catch (const not_a_dag& e) {
+        fail(decl.table->header, "the probability block of '" + name + "' closes a cycle: " + e.what());
+      }
     }
     for (const auto& name : order_) tables.push_back(build_table(declared_.at(name)));
     return bayesian_network(std::move(structure), std::move(tables));
@@ -175,6 +179,7 @@ class bif_parser {
 
  private:
   struct probability_block {
+    bif_token header;  // the child's name in `probability ( child | parents )`
     bif_token where;
     std::vector<std::string> parents;
     std::map<std::vector<std::string>, std::pair<bif_token, std::vector<double>>> rows;
@@ -321,6 +326,7 @@ class bif_parser {
     if (it == declared_.end()) fail(child, "probability block for '" + child.text + "', which is not declared");
     if (it->second.table) fail(child, "'" + child.text + "' has two probability blocks");
     probability_block block;
+    block.header = child;
     block.where = child;
     if (accept_symbol('|')) {
       while (!accept_symbol(')')) {

@@ -4,6 +4,8 @@
 /// estimation with a Dirichlet prior (eq. 6), including the paper's weighted prior (eq. 7/8).
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 #include <type_traits>
 #include <variant>
@@ -39,14 +41,25 @@ std::vector<double> dirichlet_posterior_mean(const count_table& counts, CellAlph
     std::uint64_t total = 0;
     for (auto c : column) total += c;
     const double denominator = column_alpha(u) + static_cast<double>(total);
+    auto where = [&] {
+      std::string text;
+      const auto codes = counts.parent_radix().decode(u);
+      for (std::size_t i = 0; i < codes.size(); ++i) {
+        text += (i ? ", " : " given ") + counts.parents()[i].name() + "=" + counts.parents()[i].states()[codes[i]];
+      }
+      return text;
+    };
+    // Each pseudo-count alone may be finite while the column's sum is not; the quotient would
+    // then be 0 everywhere, a table that does not sum to 1.
+    if (!std::isfinite(denominator)) {
+      throw model_error("the pseudo-counts and counts of '" + counts.child().name() + "'" + where() +
+                        " add up to more than the largest finite number (" +
+                        format_double(std::numeric_limits<double>::max()) +
+                        "): the pseudo-counts (alpha, the equivalent sample size) must keep that sum finite");
+    }
     if (denominator == 0.0) {
       if (options.empty == empty_configuration::fail) {
-        std::string where;
-        const auto codes = counts.parent_radix().decode(u);
-        for (std::size_t i = 0; i < codes.size(); ++i) {
-          where += (i ? ", " : " given ") + counts.parents()[i].name() + "=" + counts.parents()[i].states()[codes[i]];
-        }
-        throw data_error("no data for '" + counts.child().name() + "'" + where + ", and no prior to fall back on");
+        throw data_error("no data for '" + counts.child().name() + "'" + where() + ", and no prior to fall back on");
       }
       for (std::size_t x = 0; x < j; ++x) values[u * j + x] = 1.0 / static_cast<double>(j);
       continue;

@@ -18,7 +18,26 @@
 
 namespace pgm {
 
-/// Throws model_error for a map entry that names a variable its network lacks.
+/// Throws model_error if the prior node `prior_node` is already the counterpart (same name, `==`
+/// or `~`) of a parent of the target node `target_node`: a node cannot take the table of its own
+/// parent's counterpart. Quantity tags are not compared: transferring between outcomes of different
+/// quantities (`inside=onTop1`, stacking to dropping) is the paper's use. Both names must be in
+/// their networks. `pgm fit` and `pgm transfer` check each pair with it (via check_correspondence).
+inline void check_transferred_pair(const correspondence& map, const std::string& prior_node,
+                                   const network_structure& target, const std::string& target_node) {
+  const auto entry = "map entry '" + target_node + "=" + prior_node + "': ";
+  for (const auto& parent : target.parent_variables(target.id(target_node))) {
+    const auto related = map.related_to(parent.name());
+    if (map.identical_to(parent.name()) == prior_node || (related && *related == prior_node)) {
+      throw model_error(entry + "the prior's '" + prior_node + "' already stands for '" + parent.name() +
+                        "', a parent of '" + target_node + "'; a transferred node needs the prior's counterpart " +
+                        "of itself, e.g. 'onTop2=onTop1'");
+    }
+  }
+}
+
+/// Throws model_error for a map entry that names a variable its network lacks, or a
+/// transferred pair that check_transferred_pair refuses.
 inline void check_correspondence(const correspondence& map, const bayesian_network& prior,
                                  const network_structure& target) {
   auto in_target = [&](const std::string& name, const char* kind) {
@@ -33,6 +52,7 @@ inline void check_correspondence(const correspondence& map, const bayesian_netwo
   for (const auto& [t, p] : map.identical) in_target(t, "identical variable"), in_prior(p, "identical variable");
   for (const auto& [t, p] : map.related) in_target(t, "related variable"), in_prior(p, "related variable");
   for (const auto& [p, pin] : map.pinned) in_prior(p, "pinned variable");
+  for (const auto& [t, p] : map.transferred) check_transferred_pair(map, p, target, t);
 }
 
 /// The transferred prior of every `target=prior` pair of `map`, by target node.
