@@ -59,11 +59,11 @@ void append_little_endian(std::string& out, Unsigned value) {
 
 template <class Unsigned>
 [[nodiscard]] Unsigned read_little_endian(const char* at) {
-  Unsigned value = 0;
+  std::uint64_t value = 0;  // gathered wide: a narrower Unsigned would be promoted to int
   for (std::size_t byte = 0; byte < sizeof(Unsigned); ++byte) {
-    value |= static_cast<Unsigned>(static_cast<unsigned char>(at[byte])) << (8 * byte);
+    value |= std::uint64_t{static_cast<unsigned char>(at[byte])} << (8 * byte);
   }
-  return value;
+  return static_cast<Unsigned>(value);
 }
 
 [[nodiscard]] inline nlohmann::json tags_to_json(const semantic_tags& tags) {
