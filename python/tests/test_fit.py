@@ -188,6 +188,7 @@ def integer_frames():
         "matrix": pd.DataFrame(matrix, columns=list("xyzc")),  # columns of a row-major matrix: strided
         "rare value": pd.DataFrame(rare),
         "negative": pd.DataFrame({**codes, "x": codes["x"] - 2}),
+        "negative matrix": pd.DataFrame(matrix - 2, columns=list("xyzc")),  # strided, the data set's way
         "large": pd.DataFrame({**codes, "y": codes["y"].astype(np.int64) * 100_000}),
     }
 
