@@ -4,7 +4,8 @@
 /// memory-mapped file), without building a data set first. A column's states are the values seen,
 /// ordered as the CSV reader orders them (pgm/data/state_order.hpp), so the counts are those of
 /// count_family on the data set the same values make. All the families are counted in one pass over
-/// the rows, and a family whose columns another family holds too (a parent that is a root, say) is
+/// the rows, by value in the ranges a sample of rows suggests (a second pass when a value lies
+/// beyond), and a family whose columns another family holds too (a parent that is a root, say) is
 /// summed out of that one's counts instead of being counted again.
 ///
 /// This way is for columns of small non-negative values (codes 0..k-1, the usual case): the rows
