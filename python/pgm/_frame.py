@@ -47,8 +47,8 @@ def discrete_column(name, series):
     if pd.api.types.is_bool_dtype(dtype):
         return _coded(name, series)
     if pd.api.types.is_integer_dtype(dtype):
-        if isinstance(dtype, np.dtype):
-            return (name, "int", np.ascontiguousarray(series.to_numpy()), None)
+        if isinstance(dtype, np.dtype):  # read in place, strided or not
+            return (name, "int", series.to_numpy(), None)
         if not series.isna().any():  # a nullable integer column without missing values
             return (name, "int", series.to_numpy(dtype="int64"), None)
         return _coded(name, series)

@@ -247,12 +247,17 @@ std::vector<column_buffer> read_column_buffers(const py::list& columns, std::vec
     column_buffer c;
     c.name = spec[0].cast<std::string>();
     c.kind = spec[1].cast<std::string>();
-    auto array = py::array::ensure(spec[2], py::array::c_style);
+    // An integer column is read in place, whatever its stride; the others as contiguous arrays.
+    auto array = c.kind == "int" ? py::array::ensure(spec[2]) : py::array::ensure(spec[2], py::array::c_style);
     if (!array || array.ndim() != 1) throw data_error("column '" + c.name + "': expected a one-dimensional array");
-    c.data = array.data();
-    c.size = static_cast<std::size_t>(array.size());
     c.type = array.dtype().kind();
     c.item_size = static_cast<std::size_t>(array.itemsize());
+    if (array.size() > 1 && array.strides(0) % array.itemsize() != 0) {
+      array = py::array::ensure(array, py::array::c_style);  // an unaligned view: copied
+    }
+    c.data = array.data();
+    c.size = static_cast<std::size_t>(array.size());
+    c.stride = array.size() > 1 ? array.strides(0) / array.itemsize() : 1;
     if (!spec[3].is_none()) c.labels = spec[3].cast<std::vector<std::string>>();
     keep.push_back(std::move(array));
     result.push_back(std::move(c));
@@ -266,7 +271,13 @@ dataset make_dataset(const std::vector<column_buffer>& columns, const std::strin
     if (c.kind == "float") {
       data.add(float_column(c, source));
     } else if (c.kind == "int") {
-      data.add(visit_integers(c, source, [&](auto values) { return integer_column(c.name, values, source); }));
+      data.add(visit_integers(c, source, [&](auto values) {
+        if (c.stride == 1) return integer_column(c.name, values, source);
+        using value = typename decltype(values)::value_type;
+        std::vector<value> gathered(c.size);
+        for (std::size_t r = 0; r < c.size; ++r) gathered[r] = values.data()[static_cast<std::ptrdiff_t>(r) * c.stride];
+        return integer_column(c.name, std::span<const value>(gathered), source);
+      }));
     } else if (c.kind == "coded") {
       data.add(visit_integers(c, source, [&](auto codes) { return coded_column(c, codes, source); }));
     } else {
@@ -274,6 +285,35 @@ dataset make_dataset(const std::vector<column_buffer>& columns, const std::strin
     }
   }
   return data;
+}
+
+std::optional<value_counts> count_integer_families(const std::vector<column_buffer>& columns,
+                                                   const std::vector<named_edge>& edges, const count_options& options) {
+  std::vector<named_value_column> values;
+  std::vector<std::string> names;
+  for (const auto& c : columns) {
+    const bool named =
+        std::any_of(edges.begin(), edges.end(), [&](const auto& e) { return e.from == c.name || e.to == c.name; });
+    if (c.kind != "int" || !named) return std::nullopt;
+    values.push_back({c.name, visit_integers(c, "DataFrame", [&](auto typed_values) -> value_column {
+                        using value = typename decltype(typed_values)::value_type;
+                        return value_span<value>{typed_values.data(), typed_values.size(), c.stride};
+                      })});
+    names.push_back(c.name);
+  }
+  // The families in the parent order of the network's tables: a graph built as network_structure
+  // builds its own.
+  dag graph(names);
+  for (const auto& e : edges) graph.add_edge(e.from, e.to);
+  std::vector<value_family> families;
+  for (std::size_t i = 0; i < graph.size(); ++i) {
+    value_family family{i, {}};
+    for (const auto parent : graph.parents(variable_id(static_cast<variable_id::rep>(i)))) {
+      family.parents.push_back(parent.value());
+    }
+    families.push_back(std::move(family));
+  }
+  return count_value_families(values, families, options);
 }
 
 void require_columns(const std::vector<std::string>& wanted, const std::vector<std::string>& available,

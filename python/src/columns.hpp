@@ -7,10 +7,13 @@
 #include <pybind11/pybind11.h>
 
 #include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/learn/count_values.hpp"
 
 namespace pgm::python {
 
@@ -24,16 +27,27 @@ struct column_buffer {
   std::size_t size = 0;
   char type = 'i';  ///< NumPy's kind: 'i' signed, 'u' unsigned, 'f' floating
   std::size_t item_size = 0;
+  /// Items from one value to the next: an "int" column may be a strided view (a column of a
+  /// frame made from a row-major matrix); the other kinds are contiguous.
+  std::ptrdiff_t stride = 1;
   std::vector<std::string> labels;
 };
 
 /// The columns pgm/_frame.py hands over as (name, kind, array, labels) tuples. `keep` holds the
-/// (contiguous) arrays the buffers point into; it must outlive them.
+/// arrays the buffers point into; it must outlive them.
 [[nodiscard]] std::vector<column_buffer> read_column_buffers(const pybind11::list& columns,
                                                              std::vector<pybind11::array>& keep);
 
 /// The data set of these columns, in this order, named `source` in messages. Needs no GIL.
 [[nodiscard]] dataset make_dataset(const std::vector<column_buffer>& columns, const std::string& source);
+
+/// The counts of every node's family in the network `edges` make, node i being column i, counted
+/// straight from the integer buffers (pgm/learn/count_values.hpp) without a data set. Needs no
+/// GIL. std::nullopt unless every column is an "int" column named by the edges, of small
+/// non-negative values (codes 0..k-1): make_dataset then takes them.
+[[nodiscard]] std::optional<value_counts> count_integer_families(const std::vector<column_buffer>& columns,
+                                                                 const std::vector<named_edge>& edges,
+                                                                 const count_options& options);
 
 /// Throws data_error naming the first missing column and listing `available`, unless every
 /// name of `wanted` is among them.

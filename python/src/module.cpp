@@ -184,12 +184,26 @@ network_handle fit_frame(const py::list& columns, const std::vector<std::string>
   }
   options.estimation.empty = args.empty == "fail" ? empty_configuration::fail : empty_configuration::uniform;
   options.counting.threads = args.threads;
-  const auto data = make_dataset(buffers, "DataFrame");
-  auto structure = structure_from_data(data, edges);
-  if (args.intervals || args.intervals_file) {
-    structure = with_intervals(std::move(structure), intervals_of(args.intervals, args.intervals_file),
-                               args.intervals_file.value_or("intervals"));
+  const auto add_intervals = [&](network_structure structure) {
+    if (!args.intervals && !args.intervals_file) return structure;
+    return with_intervals(std::move(structure), intervals_of(args.intervals, args.intervals_file),
+                          args.intervals_file.value_or("intervals"));
+  };
+  // Columns of integer codes are counted straight from their buffers, unless a prior model asks
+  // for the data (its transfer looks at the rows).
+  if (!args.prior_model) {
+    if (auto counts = count_integer_families(buffers, edges, options.counting)) {
+      const auto structure = add_intervals(network_structure(std::move(counts->variables), edges));
+      std::vector<count_table> tables;
+      for (std::size_t i = 0; i < structure.size(); ++i) {
+        const variable_id node(static_cast<variable_id::rep>(i));
+        tables.push_back(counts->tables[i].with_variables(structure.at(node), structure.parent_variables(node)));
+      }
+      return {fit(structure, tables, options), std::nullopt, {}};
+    }
   }
+  const auto data = make_dataset(buffers, "DataFrame");
+  const auto structure = add_intervals(structure_from_data(data, edges));
   std::vector<std::string> notes;
   if (args.prior_model) {
     const auto report = add_transferred_priors(options, structure, data, args.prior_model->network, args.transfer);

@@ -166,3 +166,43 @@ def test_empty_configurations_fail_when_asked():
     pgm.fit(frame, "a->c,b->c")
     with pytest.raises(pgm.Error, match="no data"):
         pgm.fit(frame, "a->c,b->c", empty="fail")
+
+
+def integer_frames():
+    """Frames of integer codes as pgm.fit reads them straight from their buffers, and as it takes
+    them the general way (negative or large values), each with `x->c,y->c,z->y` to fit."""
+    random = np.random.default_rng(5)
+    rows = 10_000  # the first look at the rows takes every 4th
+    codes = {
+        "x": random.integers(0, 5, rows),
+        "y": random.choice([3, 7, 12], rows).astype(np.int8),  # gaps, and not from 0
+        "z": random.integers(0, 2, rows).astype(np.uint16),
+        "c": random.integers(0, 2, rows).astype(np.int32),
+    }
+    matrix = np.stack([codes[name] for name in "xyzc"], axis=1).astype(np.int64)
+    rare = {name: values.copy() for name, values in codes.items()}
+    rare["c"] = np.sort(rare["c"])
+    rare["c"][1] = 300  # a value the first look at the rows misses: counted again
+    return {
+        "codes": pd.DataFrame(codes),
+        "matrix": pd.DataFrame(matrix, columns=list("xyzc")),  # columns of a row-major matrix: strided
+        "rare value": pd.DataFrame(rare),
+        "negative": pd.DataFrame({**codes, "x": codes["x"] - 2}),
+        "negative matrix": pd.DataFrame(matrix - 2, columns=list("xyzc")),  # strided, the data set's way
+        "large": pd.DataFrame({**codes, "y": codes["y"].astype(np.int64) * 100_000}),
+    }
+
+
+@pytest.mark.parametrize("name", list(integer_frames()))
+@pytest.mark.parametrize("arguments", [[], ["--estimator", "bayes", "--prior", "k2"]])
+def test_integer_codes_equal_the_programs_to_the_last_bit(program, tmp_path, name, arguments):
+    frame = integer_frames()[name]
+    frame.to_csv(tmp_path / "codes.csv", index=False)
+    edges = "x->c,y->c,z->y"
+    program.run("fit", "--data", tmp_path / "codes.csv", "--edges", edges, "--out", tmp_path / "cli.json", *arguments)
+    kwargs = {"estimator": "bayes", "prior": "k2"} if arguments else {}
+    theirs = pgm.read_network(tmp_path / "cli.json")
+    for threads in (1, 2):
+        assert_same_network(pgm.fit(frame, edges, threads=threads, **kwargs), theirs)
+    # The same values as strings take the general way, with the same states.
+    assert_same_network(pgm.fit(frame.astype(str), edges, **kwargs), theirs)
