@@ -159,8 +159,8 @@ struct count_worker {
   }
 
   partial_impl partial;
-  std::vector<code_vector> block;   // per column: the provisional ids of the rows not counted yet
-  std::vector<std::uint32_t*> ids;  // per column: where `block` holds them (a move keeps the buffers)
+  std::vector<code_vector> block;           // per column: the provisional ids of the rows not counted yet
+  std::vector<std::uint32_t*> ids;          // per column: where `block` holds them (a move keeps the buffers)
   std::vector<std::uint8_t> block_missing;  // per column: the block holds a missing id
   std::size_t filled = 0;
   std::vector<detail::csv_field> fields;
@@ -227,30 +227,28 @@ std::uint32_t provisional_id(const counted_column& column, partial_impl& partial
 std::size_t count_piece(const counter_impl& plan, count_worker& worker, std::string_view text, std::size_t chunk) {
   try {
     const bool drop = plan.missing.policy == missing_policy::drop;
-    return detail::for_each_record(text, plan.delimiter, worker.fields,
-                                   [&](const std::vector<detail::csv_field>& fields) {
-                                     if (fields.size() != plan.width) detail::fail_width(fields, plan.width);
-                                     // Dropped rows are checked first, so that their labels add no states.
-                                     if (drop && std::any_of(plan.positions.begin(), plan.positions.end(),
-                                                             [&](std::size_t p) {
-                                                               return plan.missing.is_missing(fields[p].text);
-                                                             })) {
-                                       ++worker.partial.dropped;
-                                       return;
-                                     }
-                                     for (std::size_t c = 0; c < plan.columns.size(); ++c) {
-                                       const auto& column = plan.columns[c];
-                                       const auto& field = fields[column.position];
-                                       auto id = known_label_id(column, worker.partial, c, field);
-                                       if (id == detail::label_dictionary::none) {
-                                         id = provisional_id(column, worker.partial, c, field, chunk, plan.missing);
-                                         if (id == detail::missing_id) worker.block_missing[c] = 1;
-                                       }
-                                       worker.ids[c][worker.filled] = id;
-                                     }
-                                     ++worker.partial.rows;
-                                     if (++worker.filled == block_rows) count_block(plan, worker);
-                                   });
+    return detail::for_each_record(
+        text, plan.delimiter, worker.fields, [&](const std::vector<detail::csv_field>& fields) {
+          if (fields.size() != plan.width) detail::fail_width(fields, plan.width);
+          // Dropped rows are checked first, so that their labels add no states.
+          if (drop && std::any_of(plan.positions.begin(), plan.positions.end(),
+                                  [&](std::size_t p) { return plan.missing.is_missing(fields[p].text); })) {
+            ++worker.partial.dropped;
+            return;
+          }
+          for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+            const auto& column = plan.columns[c];
+            const auto& field = fields[column.position];
+            auto id = known_label_id(column, worker.partial, c, field);
+            if (id == detail::label_dictionary::none) {
+              id = provisional_id(column, worker.partial, c, field, chunk, plan.missing);
+              if (id == detail::missing_id) worker.block_missing[c] = 1;
+            }
+            worker.ids[c][worker.filled] = id;
+          }
+          ++worker.partial.rows;
+          if (++worker.filled == block_rows) count_block(plan, worker);
+        });
   } catch (const detail::csv_failure& failure) {
     throw detail::chunk_failure{chunk, failure};
   }

@@ -347,7 +347,8 @@ struct missing_rule {
 /// reads them; fails where the policy is `error`, and for an empty field that is no missing token.
 [[nodiscard]] inline bool field_missing(const csv_field& field, const std::string& column, const missing_rule& rule) {
   if (!rule.is_missing(field.text)) {
-    if (field.text.empty()) fail_field(field, column, "the value is empty (the empty field is not a missing token here)");
+    if (field.text.empty())
+      fail_field(field, column, "the value is empty (the empty field is not a missing token here)");
     return false;
   }
   if (rule.policy == missing_policy::error) fail_missing(field, column);

@@ -114,7 +114,8 @@ struct csv_data {
 };
 
 /// Parses CSV text; see parse_csv. Tells how many rows were dropped.
-[[nodiscard]] csv_data parse_csv_data(std::string_view text, const std::string& source, const csv_options& options = {});
+[[nodiscard]] csv_data parse_csv_data(std::string_view text, const std::string& source,
+                                      const csv_options& options = {});
 
 /// Reads a CSV file; see read_csv. Tells how many rows were dropped.
 [[nodiscard]] csv_data read_csv_data(const std::filesystem::path& path, const csv_options& options = {});
