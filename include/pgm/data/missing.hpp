@@ -8,7 +8,7 @@
 /// largest value of the column's code type, which a column with missing values never uses for
 /// a state) and a missing continuous value is NaN. Counting skips a row for a family (or an
 /// independence test) when any of its variables is missing there: available-case analysis, as
-/// pgmpy and bnlearn count.
+/// pgmpy counts.
 
 #include <cstdint>
 #include <limits>

@@ -185,7 +185,7 @@ struct ci_result {
 namespace detail {
 
 /// Counts the table (x | given..., y) into `counts` (resized and zeroed) over all rows where
-/// none of them is missing (test-wise deletion, as pgmpy's and bnlearn's tests count).
+/// none of them is missing (test-wise deletion, as pgmpy's tests count).
 /// The layout is the one test_independence reads: x fastest, then y, then the strata of
 /// `given` (its last column fastest). With `threads` > 1 (0: every hardware thread) the rows
 /// are counted on up to that many threads, each into a private table, summed: the counts are
