@@ -158,6 +158,12 @@ void add_missing(const column_plan& plan, column_part& part) {
 void add_value(const column_plan& plan, column_part& part, const detail::csv_field& field, std::size_t chunk,
                const detail::missing_rule& missing) {
   if (plan.mode == column_mode::skip) return;
+  if (plan.mode == column_mode::labels) {  // a label seen before is no missing token: the common case first
+    if (const auto id = part.labels.find(field.text); id != detail::label_dictionary::none) {
+      part.codes.push_back(id);
+      return;
+    }
+  }
   if (detail::field_missing(field, plan.name, missing)) {
     add_missing(plan, part);
     return;

@@ -323,6 +323,43 @@ std::size_t for_each_record(std::string_view text, char delimiter, std::vector<c
   return "'" + std::string(text) + "' is not a finite number (NaN and infinities are not supported)";
 }
 
+/// Whether a field's text is one of the missing tokens, in one table look-up for most texts
+/// (a code such as "3" never starts like "NA" or "?").
+class missing_matcher {
+ public:
+  explicit missing_matcher(const std::vector<std::string>& tokens) {
+    for (auto& f : first_) f = false;
+    for (const auto& token : tokens) {
+      if (token.empty()) {
+        empty_ = true;
+        continue;
+      }
+      first_[static_cast<unsigned char>(token.front())] = true;
+      tokens_.push_back(token);
+    }
+  }
+
+  [[nodiscard]] bool operator()(std::string_view text) const noexcept {
+    if (text.empty()) return empty_;
+    if (!first_[static_cast<unsigned char>(text.front())]) return false;  // small enough to inline
+    return is_token(text);
+  }
+
+  [[nodiscard]] bool empty_is_missing() const noexcept { return empty_; }
+
+ private:
+  [[nodiscard]] bool is_token(std::string_view text) const noexcept {
+    for (const auto& token : tokens_) {
+      if (text == token) return true;
+    }
+    return false;
+  }
+
+  bool empty_ = false;
+  bool first_[256];
+  std::vector<std::string> tokens_;
+};
+
 /// The provisional id of a missing value in a column's ids (never a label's id).
 inline constexpr std::uint32_t missing_id = missing_code<std::uint32_t>;
 

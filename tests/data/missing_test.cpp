@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "data/csv_engine.hpp"
 #include "pgm/data/bin_columns.hpp"
 #include "pgm/data/csv.hpp"
 #include "pgm/data/csv_counts.hpp"

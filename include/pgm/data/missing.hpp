@@ -46,40 +46,4 @@ struct missing_values {
 template <class Code>
 inline constexpr Code missing_code = std::numeric_limits<Code>::max();
 
-namespace detail {
-
-/// Whether a field's text is one of the missing tokens, in one table look-up for most texts
-/// (a code such as "3" never starts like "NA" or "?").
-class missing_matcher {
- public:
-  explicit missing_matcher(const std::vector<std::string>& tokens) {
-    for (auto& f : first_) f = false;
-    for (const auto& token : tokens) {
-      if (token.empty()) {
-        empty_ = true;
-        continue;
-      }
-      first_[static_cast<unsigned char>(token.front())] = true;
-      tokens_.push_back(token);
-    }
-  }
-
-  [[nodiscard]] bool operator()(std::string_view text) const noexcept {
-    if (text.empty()) return empty_;
-    if (!first_[static_cast<unsigned char>(text.front())]) return false;
-    for (const auto& token : tokens_) {
-      if (text == token) return true;
-    }
-    return false;
-  }
-
-  [[nodiscard]] bool empty_is_missing() const noexcept { return empty_; }
-
- private:
-  bool empty_ = false;
-  bool first_[256];
-  std::vector<std::string> tokens_;
-};
-
-}  // namespace detail
 }  // namespace pgm
