@@ -79,6 +79,55 @@ void count_families(benchmark::State& state) {
   set_bytes_and_rows(state, text.size(), million);
 }
 
+/// codes_csv with every 20th row's xOff2 missing ("NA").
+const std::string& codes_csv_with_na(std::size_t rows) {
+  static std::map<std::size_t, std::string> cache;
+  auto [it, fresh] = cache.try_emplace(rows);
+  if (!fresh) return it->second;
+  const auto& text = codes_csv(rows);
+  auto& out = it->second;
+  std::size_t row = 0;
+  for (std::size_t at = 0, end; at < text.size(); at = end + 1, ++row) {
+    end = text.find('\n', at);
+    const auto line = std::string_view(text).substr(at, end - at);
+    if (row > 0 && row % 20 == 0) {
+      out += std::string(line.substr(0, 4)) + "NA" + std::string(line.substr(5));  // the third field
+    } else {
+      out += line;
+    }
+    out += '\n';
+  }
+  return out;
+}
+
+// The counter under a missing-value policy on data with 5% of the rows missing a value:
+// range(0) 0 = drop, 1 = available (each family over its present rows).
+void count_families_missing(benchmark::State& state) {
+  const auto& text = codes_csv_with_na(million);
+  pgm::csv_count_request request;
+  request.columns = {"xOff1", "yOff1", "xOff2", "yOff2", "onTop1", "onTop2"};
+  request.families = {{"onTop1", {"xOff1", "yOff1"}}, {"onTop2", {"xOff1", "yOff1", "xOff2", "yOff2"}}};
+  request.threads = 1;
+  request.missing.policy = state.range(0) == 0 ? pgm::missing_policy::drop : pgm::missing_policy::available;
+  pgm::csv_counts counts;
+  for (auto _ : state) {
+    pgm::csv_reader input(text, "bench.csv");
+    counts = pgm::count_csv(input, request);
+    benchmark::DoNotOptimize(counts);
+  }
+  // The result: onTop1 counts every row either way, onTop2 only the 95% present.
+  const auto total = [](const pgm::count_table& t) {
+    std::uint64_t n = 0;
+    for (auto c : t.counts()) n += c;
+    return n;
+  };
+  const std::uint64_t expected_top1 = state.range(0) == 0 ? million - million / 20 : million;
+  if (total(counts.families[0]) != expected_top1 || total(counts.families[1]) != million - million / 20) {
+    state.SkipWithError("wrong counts");
+  }
+  set_bytes_and_rows(state, text.size(), million);
+}
+
 // The simple approach: a line at a time, split into strings, configurations counted in a map.
 void count_families_naive(benchmark::State& state) {
   const auto& text = codes_csv(million);
@@ -105,6 +154,7 @@ void count_families_naive(benchmark::State& state) {
 BENCHMARK(copy_bytes)->Unit(benchmark::kMillisecond);
 BENCHMARK(parse_dataset)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(count_families)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(count_families_missing)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(count_families_naive)->Unit(benchmark::kMillisecond);
 
 }  // namespace

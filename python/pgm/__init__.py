@@ -173,6 +173,7 @@ def fit(
     success=None,
     match=None,
     threads=0,
+    missing="error",
 ):
     """Estimates every table of the network `edges` describe from `data`, as `pgm fit`.
 
@@ -183,11 +184,15 @@ def fit(
     `strategy` ("minimal", the default, "direct", "cross" or a registered one) through the
     correspondence `map` ("onTop2=onTop1,xOff2~xOff1" or "auto"), weighted by `w_prior` (a
     number, 5 by default, or "auto"). intervals: the interval edges the columns' codes stand
-    for ({name: edges} from pgm.discretize, or an edges file), kept with the model.
+    for ({name: edges} from pgm.discretize, or an edges file), kept with the model. missing:
+    what a missing value (NaN, None, pd.NA) does, as `--missing`: "error" (the default), "drop"
+    (rows with one are left out, with a warning) or "available" (each table counted over the
+    rows where its family is present).
     """
     names = _frame.column_names(data)
     pairs = _edge_pairs(edges)
     wanted = {name for pair in pairs for name in pair}
+    data = _frame.with_missing(data, wanted, missing)
     columns = _frame.columns_of(data, wanted)
     interval_edges, interval_file = _edges_argument(intervals, "intervals")
     if prior_model is None:
@@ -274,11 +279,15 @@ def prevent(network, assign, controllable=None, epsilon=0.8, success=None, dista
     )
 
 
-def learn_structure(data, test="g2", alpha=0.01, tiers=None, forbid=None, require=None, *, max_cond=3, threads=0):
+def learn_structure(
+    data, test="g2", alpha=0.01, tiers=None, forbid=None, require=None, *, max_cond=3, threads=0, missing="error"
+):
     """PC-stable on the frame's columns (all discrete), as `pgm learn-structure`: the edges of
     one DAG of the learned equivalence class, as (parent, child) pairs. tiers: "a,b;c;d" or a
-    list of lists of names, earliest first; forbid and require: edges as for pgm.fit."""
+    list of lists of names, earliest first; forbid and require: edges as for pgm.fit. missing:
+    as for pgm.fit; with "available" each test counts the rows where its variables are present."""
     names = _frame.column_names(data)
+    data = _frame.with_missing(data, names, missing)
     columns = _frame.columns_of(data, names)
 
     def edges_text(edges):
@@ -299,12 +308,13 @@ def learn_structure(data, test="g2", alpha=0.01, tiers=None, forbid=None, requir
     )
 
 
-def discretize(data, bins=5, columns=None, *, method="quantile", edges=None):
+def discretize(data, bins=5, columns=None, *, method="quantile", edges=None, missing="error"):
     """Bins continuous columns, as `pgm discretize`: the named columns, or every numeric column
     with more distinct values than `bins`; by quantile (equal frequency, as in the paper) or
     "width", or by saved `edges` ({name: edges} or an edges file) to bin new data the same
     way. Returns (a copy of the frame with each binned column replaced by its bin codes
-    0..k-1, {name: edges})."""
+    0..k-1, {name: edges}). missing: as for pgm.fit, over the binned columns; with "available"
+    a missing value stays missing (pd.NA in the binned column) and edges are fitted on the rest."""
     names = _frame.column_names(data)
     wanted = [] if columns is None else ([columns] if isinstance(columns, str) else list(columns))
     saved, saved_file = _edges_argument(edges, "edges")
@@ -312,6 +322,7 @@ def discretize(data, bins=5, columns=None, *, method="quantile", edges=None):
         convert = set(wanted)
     else:  # only numbers can be binned: other columns need not cross
         convert = {n for n in names if _frame.is_number_column(data[n])} | set(saved or {})
+    data = _frame.with_missing(data, convert, missing)
     specs = [_frame.numeric_column(name, data[name]) for name in names if name in convert]
     binned, fitted = _core.discretize(specs, names, int(bins), wanted, method, saved, saved_file)
     result = data.copy()

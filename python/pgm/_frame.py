@@ -53,7 +53,13 @@ def discrete_column(name, series):
             return (name, "int", series.to_numpy(dtype="int64"), None)
         return _coded(name, series)
     if pd.api.types.is_float_dtype(dtype):
-        return (name, "float", series.to_numpy(dtype="float64"), None)
+        values = series.to_numpy(dtype="float64", na_value=np.nan)
+        present = values[~np.isnan(values)]
+        if len(present) < len(values) and np.all(np.floor(present) == present):
+            # An integer column with a missing value, which pandas stores as floats: its states
+            # are the integers, as a CSV file gives them.
+            return _coded(name, series.astype("Int64"))
+        return (name, "float", values, None)
     return _coded(name, series)
 
 
@@ -71,6 +77,48 @@ def numeric_column(name, series):
             return (name, "float", np.ascontiguousarray(series.to_numpy()), None)
         return (name, "float", series.to_numpy(dtype="float64", na_value=np.nan), None)
     return discrete_column(name, series)
+
+
+_MISSING = ("error", "drop", "available")
+
+
+def with_missing(data, names, missing):
+    """The frame under the missing-value rule of the CLI's --missing, over the columns `names`:
+    "error" raises naming the first missing value's row and column, "drop" leaves out the rows
+    with one (and says how many), "available" keeps them (each family, or test, is then counted
+    over the rows where its variables are present). NaN, None and pd.NA are missing."""
+    from . import Error  # the package's error type, from pgm._core
+
+    if missing not in _MISSING:
+        raise Error(f"missing must be one of {', '.join(_MISSING)}, got {missing!r}")
+    if missing == "available":
+        return data
+    wanted = set(names)
+    # NumPy integer and boolean columns hold no missing value: they are not looked at (no copy).
+    read = [
+        name
+        for name in column_names(data)
+        if name in wanted and not (isinstance(data[name].dtype, np.dtype) and data[name].dtype.kind in "iub")
+    ]
+    read = [name for name in read if data[name].isna().any()]
+    if not read:
+        return data
+    absent = data[read].isna()
+    if missing == "error":
+        rows = absent.any(axis=1).to_numpy().nonzero()[0]
+        row = int(rows[0])
+        column = next(name for name in read if absent[name].iat[row])
+        raise Error(
+            f"DataFrame: column '{column}': the value at position {row} is missing (index {data.index[row]!r}; "
+            'choose missing="drop" or missing="available" to read incomplete rows)'
+        )
+    kept = data[~absent.any(axis=1).to_numpy()]
+    if len(kept) == 0:
+        raise Error(f"DataFrame: every one of the {len(data)} rows has a missing value, so dropping them leaves none")
+    import warnings
+
+    warnings.warn(f"pgm: dropped {len(data) - len(kept)} of {len(data)} rows with a missing value", stacklevel=3)
+    return kept
 
 
 def columns_of(data, names, kind=discrete_column):
@@ -95,6 +143,14 @@ def series_of(kind, array, labels):
     if kind == "float":
         return array
     values = _as_integers(labels)
+    missing = array >= len(labels)  # pgm's code of a missing value (missing="available")
+    if missing.any():
+        present = np.where(missing, 0, array)
+        if values is not None:
+            result = pd.array(values[present], dtype="Int64")
+            result[missing] = pd.NA
+            return result
+        return pd.Categorical.from_codes(np.where(missing, -1, array).astype(np.int32), categories=labels)
     if values is not None:
         return values[array]
     return pd.Categorical.from_codes(array.astype(np.int32, copy=False), categories=labels)

@@ -174,12 +174,13 @@ template <class T>
 discrete_column coded_column(const column_buffer& c, std::span<const T> codes, const std::string& source) {
   const auto labels = c.labels.size();
   std::vector<std::uint8_t> seen(labels, 0);
+  std::size_t missing = 0;  // code -1; pgm/_frame.py has applied the missing-value rule already
   for (std::size_t r = 0; r < codes.size(); ++r) {
     const auto k = static_cast<std::int64_t>(codes[r]);
     if (k < 0 || static_cast<std::uint64_t>(k) >= labels) {
       if (k == -1) {
-        throw data_error(where(source, c.name) + ": the value at position " + std::to_string(r) +
-                         " is missing (missing values are not supported)");
+        ++missing;
+        continue;
       }
       throw data_error(where(source, c.name) + ": code " + std::to_string(k) + " at position " + std::to_string(r) +
                        " is not one of the " + std::to_string(labels) + " labels");
@@ -201,16 +202,23 @@ discrete_column coded_column(const column_buffer& c, std::span<const T> codes, c
   if (order.non_finite) {
     const auto& bad = texts[*order.non_finite];
     std::size_t r = 0;
-    while (r < codes.size() && c.labels[static_cast<std::size_t>(codes[r])] != bad) ++r;
+    while (r < codes.size() && (codes[r] < 0 || c.labels[static_cast<std::size_t>(codes[r])] != bad)) ++r;
     throw data_error(where(source, c.name) + ": the value at position " + std::to_string(r) + ", '" + bad +
                      "', is not a finite number (NaN and infinities are not supported)");
   }
   std::vector<std::uint32_t> state(labels, 0);
   for (std::size_t k = 0; k < labels; ++k) state[k] = order.state_of[label_text[k]];
   const auto cardinality = order.states.size();
-  auto stored =
-      fill_codes(cardinality, codes.size(), [&](std::size_t r) { return state[static_cast<std::size_t>(codes[r])]; });
-  return {variable(c.name, std::move(order.states)), std::move(stored), std::in_place};
+  auto stored = make_code_vector(cardinality + (missing ? 1 : 0), codes.size());
+  std::visit(
+      [&](auto& out) {
+        using code = typename std::decay_t<decltype(out)>::value_type;
+        for (std::size_t r = 0; r < codes.size(); ++r) {
+          out[r] = codes[r] < 0 ? missing_code<code> : static_cast<code>(state[static_cast<std::size_t>(codes[r])]);
+        }
+      },
+      stored);
+  return {variable(c.name, std::move(order.states)), std::move(stored), std::in_place, missing};
 }
 
 continuous_column float_column(const column_buffer& c, const std::string& source) {

@@ -78,6 +78,61 @@ def test_missing_values_are_an_error_naming_column_and_position():
             states_in_python(column)
 
 
+def incomplete_frame():
+    # Row 1 lacks b, row 3 lacks c, row 4 lacks a (None, NaN and pd.NA alike).
+    return pd.DataFrame(
+        {
+            "a": ["x", "x", "y", "y", None, "x"],
+            "b": pd.array([0, None, 1, 0, 1, 1], dtype="Int64"),
+            "c": pd.array([1, 0, 1, None, 0, 1], dtype="Int64"),
+        }
+    )
+
+
+def test_missing_values_follow_the_missing_keyword_as_the_cli_does(program, tmp_path):
+    frame = incomplete_frame()
+    with pytest.raises(pgm.Error, match=r"column 'b': the value at position 1 is missing"):
+        pgm.fit(frame, "b->a,a->c")
+    with pytest.raises(pgm.Error, match=r"missing must be one of error, drop, available"):
+        pgm.fit(frame, "b->a,a->c", missing="pairwise")
+    frame.to_csv(tmp_path / "m.csv", index=False)  # missing values become empty fields
+    for missing in ("drop", "available"):
+        out = tmp_path / f"{missing}.json"
+        program.run("fit", "--data", tmp_path / "m.csv", "--edges", "b->a,a->c", "--missing", missing, "--out", out)
+        by_cli = pgm.read_network(out)
+        if missing == "drop":
+            with pytest.warns(UserWarning, match="dropped 3 of 6 rows with a missing value"):
+                fitted = pgm.fit(frame, "b->a,a->c", missing=missing)
+        else:
+            fitted = pgm.fit(frame, "b->a,a->c", missing=missing)
+        for node in ("a", "b", "c"):
+            assert fitted.states(node) == by_cli.states(node), (missing, node)
+            assert fitted.cpt(node).equals(by_cli.cpt(node)), (missing, node)
+    # By hand: c | a over the rows where both are present (0, 1, 2, 5).
+    table = pgm.fit(frame, "b->a,a->c", missing="available").cpt("c")
+    assert list(table["1"]) == [2 / 3, 1.0]
+    # Whole numbers and NaN in a float column (pandas' integer column with a gap) read as integers.
+    floats = frame.assign(c=[1.0, 0.0, 1.0, np.nan, 0.0, 1.0])
+    fitted = pgm.fit(floats, "b->a,a->c", missing="available")
+    assert fitted.states("c") == ["0", "1"]
+    assert fitted.cpt("c").equals(pgm.fit(frame, "b->a,a->c", missing="available").cpt("c"))
+
+
+def test_missing_values_in_structure_learning_and_discretization():
+    frame = incomplete_frame()
+    with pytest.raises(pgm.Error, match=r"column 'c': the value at position 3 is missing"):
+        pgm.learn_structure(frame[["a", "c"]])
+    edges = pgm.learn_structure(frame, missing="available")  # each test over its present rows
+    assert all(parent in frame.columns and child in frame.columns for parent, child in edges)
+    raw = pd.DataFrame({"u": [0.5, np.nan, 2.5, 1.5, 3.5, 0.1, 0.2], "v": [0, 1, 0, 1, 0, 1, 0]})
+    with pytest.raises(pgm.Error, match=r"column 'u': the value at position 1 is missing"):
+        pgm.discretize(raw, bins=2, columns="u")
+    binned, edges = pgm.discretize(raw, bins=2, columns="u", missing="available")
+    assert list(edges["u"]) == [0.1, 1.0, 3.5]
+    assert binned["u"].isna().tolist() == [False, True, False, False, False, False, False]
+    assert binned["u"].dropna().tolist() == [0, 1, 1, 1, 0, 0]
+
+
 def test_numbers_that_are_not_finite_are_an_error():
     with pytest.raises(pgm.Error, match=r"position 1, 'inf', is not a finite number"):
         states_in_python(np.array(["1", "inf"], dtype=object))

@@ -51,12 +51,39 @@ void note_many_states(const variable& v, std::size_t rows) {
 
 }  // namespace
 
+void note_dropped(std::size_t dropped, std::size_t rows) {
+  if (dropped == 0) return;
+  note("dropped " + std::to_string(dropped) + " of " + std::to_string(dropped + rows) +
+       " rows with a missing value (--missing drop)");
+}
+
+void add_missing_options(CLI::App& cmd, missing_arguments& args) {
+  cmd.add_option("--na", args.na,
+                 "The texts read as missing values, comma-separated; an empty entry (as in the default) is the "
+                 "empty field")
+      ->capture_default_str();
+  cmd.add_option("--missing", args.policy,
+                 "What a missing value does: error (naming its line and column), drop (leave out the rows that "
+                 "have one, with a note) or available (count each family, or each independence test, over the "
+                 "rows where its variables are present)")
+      ->check(CLI::IsMember({"error", "drop", "available"}))
+      ->capture_default_str();
+}
+
+missing_values missing_of(const missing_arguments& args) {
+  missing_values missing;
+  missing.tokens = args.na.empty() ? std::vector<std::string>{""} : detail::split(args.na, ',');
+  missing.policy = missing_policy_named(args.policy);
+  return missing;
+}
+
 csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>& columns, const data_plan& plan,
                                std::vector<csv_family> families, unsigned threads) {
   csv_count_request request;
   request.columns = columns;
   request.families = std::move(families);
   request.threads = threads;
+  request.missing = plan.missing;
   if (plan.known) {
     for (const auto& v : *plan.known) request.variables.emplace(v.name(), v);
   }
@@ -68,6 +95,15 @@ csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>
     }
   }
   auto counts = count_csv(input, request);
+  note_dropped(counts.dropped, counts.rows);
+  for (const auto& table : counts.families) {
+    std::uint64_t counted = 0;
+    for (auto n : table.counts()) counted += n;
+    if (counted < counts.rows) {
+      note("'" + table.child().name() + "' is counted over the " + std::to_string(counted) + " of " +
+           std::to_string(counts.rows) + " rows where it and its parents are present");
+    }
+  }
   for (const auto& [name, outside] : counts.outside) {
     note_outside(name, outside, counts.rows, request.intervals.at(name));
   }
@@ -80,6 +116,7 @@ dataset read_discrete_data(const std::filesystem::path& path, const std::vector<
   csv_options options;
   options.columns = columns;
   options.default_kind = column_kind::discrete;
+  options.missing = plan.missing;
   if (plan.known) {
     for (const auto& v : *plan.known) options.variables.emplace(v.name(), v);
   }
@@ -90,7 +127,8 @@ dataset read_discrete_data(const std::filesystem::path& path, const std::vector<
       options.kinds[name] = column_kind::continuous;
     }
   }
-  auto data = read_csv(path, options);
+  auto [data, dropped] = read_csv_data(path, options);
+  note_dropped(dropped, data.rows());
   if (plan.raw_intervals) {
     discretization used;
     for (const auto& [name, intervals] : *plan.raw_intervals) {
@@ -98,7 +136,8 @@ dataset read_discrete_data(const std::filesystem::path& path, const std::vector<
       used.emplace(name, intervals);
       const auto& edges = intervals.edges();
       std::size_t outside = 0;
-      for (double v : data.continuous(name).values()) outside += v < edges.front() || v > edges.back();
+      for (double v : data.continuous(name).values())
+        outside += v < edges.front() || v > edges.back();  // NaN (missing) never is
       note_outside(name, outside, data.rows(), intervals);
     }
     data = apply_discretization(data, used);

@@ -14,6 +14,7 @@
 #include "pgm/data/csv_counts.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/discretizer.hpp"
+#include "pgm/data/missing.hpp"
 
 namespace pgm::cli {
 
@@ -24,21 +25,40 @@ std::vector<std::string> split_list(std::string_view text, const std::string& wh
 /// that a command fails before doing any work.
 void require_extension(const std::filesystem::path& path, const std::vector<std::string>& extensions);
 
+/// --na and --missing, as typed.
+struct missing_arguments {
+  std::string na = "NA,,?";
+  std::string policy = "error";
+};
+
+/// Adds --na and --missing (the texts read as missing, and what happens to them) to `cmd`.
+void add_missing_options(CLI::App& cmd, missing_arguments& args);
+
+/// Notes "dropped N of M rows with a missing value" when the policy drop left rows out.
+void note_dropped(std::size_t dropped, std::size_t rows_kept);
+
+/// The missing values --na and --missing ask for.
+[[nodiscard]] missing_values missing_of(const missing_arguments& args);
+
 /// How the columns of a model's variables are to be read from a CSV file.
 struct data_plan {
   /// Discretize these raw numeric columns with these edges.
   const discretization* raw_intervals = nullptr;
   /// Take the states of these variables as given (from a model).
   const std::vector<variable>* known = nullptr;
+  /// What a missing value is and what happens to it.
+  missing_values missing = {};
 };
 
 /// Reads `columns` of a CSV file as discrete data, discretizing raw columns as planned.
-/// "-" reads standard input; gzip data (.csv.gz) is inflated.
+/// "-" reads standard input; gzip data (.csv.gz) is inflated. Notes the rows dropped for a
+/// missing value.
 dataset read_discrete_data(const std::filesystem::path& path, const std::vector<std::string>& columns,
                            const data_plan& plan);
 
 /// Counts `families` of the rest of `input`, reading `columns` as read_discrete_data would
-/// (the same checks, states and notes) but without holding the data in memory.
+/// (the same checks, states and notes) but without holding the data in memory; notes each
+/// family counted over fewer rows than were read (missing values, policy available).
 csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>& columns, const data_plan& plan,
                                std::vector<csv_family> families, unsigned threads);
 

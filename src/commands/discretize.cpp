@@ -23,6 +23,7 @@ struct discretize_arguments {
   std::string out;
   std::string edges_out;
   std::string edges_in;
+  missing_arguments missing;
 };
 
 std::string describe(const variable& v) {
@@ -53,10 +54,12 @@ void run_discretize(const discretize_arguments& args) {
   // error at its own line and column instead of a vague complaint about the whole column.
   const auto wanted = args.columns.empty() ? std::vector<std::string>{} : split_list(args.columns, "--columns");
   csv_options options;
+  options.missing = missing_of(args.missing);
   if (args.method != "edges") {
     for (const auto& name : wanted) options.kinds.emplace(name, column_kind::continuous);
   }
-  const auto data = read_csv(args.in, options);
+  const auto [data, dropped] = read_csv_data(args.in, options);
+  note_dropped(dropped, data.rows());
   column_binning request;
   request.columns = wanted;
   request.method = args.method == "quantile" ? binning::quantile : binning::equal_width;
@@ -73,7 +76,7 @@ void run_discretize(const discretize_arguments& args) {
   const auto& binned = result.data;
   // Both outputs are complete in memory before either file is written.
   std::ostringstream csv_text;
-  write_csv(binned, csv_text);
+  write_csv(binned, csv_text, ',', options.missing.tokens.front());  // missing stays missing
   const auto edges_text = to_json(fitted).dump(2) + "\n";
   detail::write_file_atomically(args.out, [&](std::ostream& out) { out << csv_text.str(); });
   if (!args.edges_out.empty()) {
@@ -104,9 +107,13 @@ void add_discretize_command(CLI::App& app) {
   cmd->add_option("--columns", args->columns,
                   "Columns to bin, e.g. \"xOff1,yOff1\" (default: every numeric column with more distinct "
                   "values than bins)");
-  cmd->add_option("--out", args->out, "Discretized CSV; each binned value becomes its bin index 0..bins-1")->required();
+  cmd->add_option("--out", args->out,
+                  "Discretized CSV; each binned value becomes its bin index 0..bins-1, a missing value "
+                  "(--missing available) the first --na text")
+      ->required();
   cmd->add_option("--edges-out", args->edges_out, "Where to save the fitted edges (JSON)");
   cmd->add_option("--edges-in", args->edges_in, "Saved edges to apply, with --method edges");
+  add_missing_options(*cmd, args->missing);
   cmd->callback([args] { run_discretize(*args); });
 }
 

@@ -36,6 +36,7 @@ struct fit_arguments {
   unsigned threads = 0;
   std::string out;
   transfer_arguments transfer;
+  missing_arguments missing;
 };
 
 /// Sets the weighted prior (eq. 8) of every node the map transfers to, choosing w from the
@@ -90,8 +91,9 @@ void run_fit(const fit_arguments& args) {
     std::vector<std::string> columns;
     for (const auto& v : structure.variables()) columns.push_back(v.name());
     csv_reader input(args.data);
-    counted = count_discrete_data(input, columns, {raw_intervals ? &*raw_intervals : nullptr, &structure.variables()},
-                                  families_of(structure), args.threads);
+    counted = count_discrete_data(
+        input, columns, {raw_intervals ? &*raw_intervals : nullptr, &structure.variables(), missing_of(args.missing)},
+        families_of(structure), args.threads);
   } else {
     const auto edges = parse_edge_list(args.edges);
     std::vector<std::string> columns;
@@ -119,7 +121,8 @@ void run_fit(const fit_arguments& args) {
         structure_error = std::current_exception();
       }
     }
-    counted = count_discrete_data(input, columns, {raw_intervals ? &*raw_intervals : nullptr, nullptr},
+    counted = count_discrete_data(input, columns,
+                                  {raw_intervals ? &*raw_intervals : nullptr, nullptr, missing_of(args.missing)},
                                   std::move(families), args.threads);
     if (structure_error) std::rethrow_exception(structure_error);
     structure = network_structure(counted.variables, edges);
@@ -187,6 +190,7 @@ void add_fit_command(CLI::App& app) {
       ->check(whole_number(0, 1024))
       ->capture_default_str();
   cmd->add_option("--out", args->out, "The fitted network, .bif or .json")->required();
+  add_missing_options(*cmd, args->missing);
   add_transfer_options(*cmd, args->transfer, true);
   cmd->callback([args] {
     if (args->edges.empty() && args->model.empty()) throw error("give the structure with --edges or --model");

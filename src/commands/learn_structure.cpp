@@ -29,6 +29,7 @@ struct learn_structure_arguments {
   unsigned threads = 0;
   bool explain = false;
   std::string out;
+  missing_arguments missing;
 };
 
 std::string format_set(const cpdag& graph, const std::vector<variable_id>& given) {
@@ -50,7 +51,7 @@ void run_learn_structure(const learn_structure_arguments& args) {
   if (!args.forbid.empty()) options.knowledge.forbidden = parse_edge_list(args.forbid);
   if (!args.require.empty()) options.knowledge.required = parse_edge_list(args.require);
 
-  const auto data = read_discrete_data(args.data, {}, {});
+  const auto data = read_discrete_data(args.data, {}, {.missing = missing_of(args.missing)});
   if (data.size() < 2) throw data_error("'" + args.data + "' has fewer than two columns; nothing to learn");
   const auto result = pc_stable(data, options);
   const auto& graph = result.graph;
@@ -159,6 +160,7 @@ void add_learn_structure_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_flag("--explain", args->explain, "Also print the test that removed each absent edge");
   cmd->add_option("--out", args->out, "The learned structure, a .json model without tables")->required();
+  add_missing_options(*cmd, args->missing);
   cmd->callback([args] { run_learn_structure(*args); });
 }
 

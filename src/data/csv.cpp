@@ -123,6 +123,7 @@ struct column_plan {
 
 /// One column's values in one chunk.
 struct column_part {
+  std::size_t missing = 0;  // values kept as missing (policy available)
   std::vector<double> numbers;
   bool text_seen = false;  // an automatic column met a value that is not a number
   std::optional<detail::csv_place> first_non_finite;
@@ -133,12 +134,40 @@ struct column_part {
 
 struct chunk_part {
   std::size_t rows = 0;
+  std::size_t dropped = 0;  // rows left out for a missing value (policy drop)
   std::size_t lines = 0;
   std::vector<column_part> columns;
 };
 
-void add_value(const column_plan& plan, column_part& part, const detail::csv_field& field, std::size_t chunk) {
-  detail::check_present(field, plan.name);
+void add_missing(const column_plan& plan, column_part& part) {
+  ++part.missing;
+  switch (plan.mode) {
+    case column_mode::continuous:
+    case column_mode::automatic:
+      if (!part.text_seen) part.numbers.push_back(std::numeric_limits<double>::quiet_NaN());
+      return;
+    case column_mode::labels:
+    case column_mode::known:
+      part.codes.push_back(detail::missing_id);
+      return;
+    case column_mode::skip:
+      return;
+  }
+}
+
+void add_value(const column_plan& plan, column_part& part, const detail::csv_field& field, std::size_t chunk,
+               const detail::missing_rule& missing) {
+  if (plan.mode == column_mode::skip) return;
+  if (plan.mode == column_mode::labels) {  // a label seen before is no missing token: the common case first
+    if (const auto id = part.labels.find(field.text); id != detail::label_dictionary::none) {
+      part.codes.push_back(id);
+      return;
+    }
+  }
+  if (detail::field_missing(field, plan.name, missing)) {
+    add_missing(plan, part);
+    return;
+  }
   switch (plan.mode) {
     case column_mode::continuous:
       part.numbers.push_back(detail::continuous_value(field, plan.name));
@@ -180,8 +209,23 @@ void add_value(const column_plan& plan, column_part& part, const detail::csv_fie
   }
 }
 
+/// Which fields decide whether a record is dropped (policy drop): those of every column read.
+struct drop_rule {
+  const detail::missing_rule* missing;
+  std::vector<std::size_t> positions;
+};
+
+/// Whether the policy drops this record: a column read holds a missing value.
+[[nodiscard]] bool dropped(const drop_rule& rule, const std::vector<detail::csv_field>& record) {
+  if (rule.missing->policy != missing_policy::drop) return false;
+  for (auto position : rule.positions) {
+    if (rule.missing->is_missing(record[position].text)) return true;
+  }
+  return false;
+}
+
 chunk_part parse_chunk(std::string_view text, char delimiter, std::size_t width, const std::vector<column_plan>& plans,
-                       std::size_t chunk) {
+                       std::size_t chunk, const drop_rule& rule) {
   chunk_part part;
   part.columns.resize(plans.size());
   for (std::size_t c = 0; c < plans.size(); ++c) {
@@ -192,8 +236,12 @@ chunk_part parse_chunk(std::string_view text, char delimiter, std::size_t width,
   try {
     part.lines = detail::for_each_record(text, delimiter, fields, [&](const std::vector<detail::csv_field>& record) {
       if (record.size() != width) detail::fail_width(record, width);
+      if (dropped(rule, record)) {
+        ++part.dropped;
+        return;
+      }
       for (std::size_t c = 0; c < plans.size(); ++c) {
-        add_value(plans[c], part.columns[c], record[plans[c].position], chunk);
+        add_value(plans[c], part.columns[c], record[plans[c].position], chunk, *rule.missing);
       }
       ++part.rows;
     });
@@ -205,15 +253,15 @@ chunk_part parse_chunk(std::string_view text, char delimiter, std::size_t width,
 
 /// Parses every chunk of `text` in parallel; chunk k's result goes to parts[k].
 void parse_chunks(std::string_view text, const std::vector<std::size_t>& bounds, char delimiter, std::size_t width,
-                  const std::vector<column_plan>& plans, unsigned threads, const std::string& source,
-                  std::size_t first_line, std::vector<chunk_part>& parts) {
+                  const std::vector<column_plan>& plans, const drop_rule& rule, unsigned threads,
+                  const std::string& source, std::size_t first_line, std::vector<chunk_part>& parts) {
   const std::size_t chunks = bounds.size() - 1;
   parts.assign(chunks, {});
   std::vector<std::size_t> lines(chunks, 0);
   detail::rethrow_located(source, first_line, lines, [&] {
     detail::parallel_for(chunks, {.threads = threads}, [&](detail::item_range items) {
       for (auto k = items.begin; k < items.end; ++k) {
-        parts[k] = parse_chunk(text.substr(bounds[k], bounds[k + 1] - bounds[k]), delimiter, width, plans, k);
+        parts[k] = parse_chunk(text.substr(bounds[k], bounds[k + 1] - bounds[k]), delimiter, width, plans, k, rule);
         lines[k] = parts[k].lines;
       }
     });
@@ -226,7 +274,9 @@ void fill_codes(std::vector<Code>& out, const std::vector<chunk_part>& parts, st
   std::size_t row = 0;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const auto& map = state_of[k];
-    for (auto code : parts[k].columns[column].codes) out[row++] = static_cast<Code>(map.empty() ? code : map[code]);
+    for (auto code : parts[k].columns[column].codes) {
+      out[row++] = code == detail::missing_id ? missing_code<Code> : static_cast<Code>(map.empty() ? code : map[code]);
+    }
   }
 }
 
@@ -235,10 +285,13 @@ discrete_column finish_labels(const column_plan& plan, std::size_t column, const
                               const std::vector<std::size_t>& first_lines, std::size_t rows,
                               const std::string& source) {
   std::vector<std::vector<std::uint32_t>> state_of(parts.size());
+  std::size_t missing = 0;
+  for (const auto& part : parts) missing += part.columns[column].missing;
+  const std::size_t spare = missing ? 1 : 0;  // a code width with room for missing_code
   if (plan.mode == column_mode::known) {
-    auto codes = make_code_vector(plan.known->cardinality(), rows);
+    auto codes = make_code_vector(plan.known->cardinality() + spare, rows);
     std::visit([&](auto& out) { fill_codes(out, parts, column, state_of); }, codes);
-    return discrete_column(*plan.known, std::move(codes), std::in_place);
+    return discrete_column(*plan.known, std::move(codes), std::in_place, missing);
   }
   // Every chunk's labels in order: labels in order of first appearance in the file.
   detail::label_dictionary all;
@@ -267,9 +320,9 @@ discrete_column finish_labels(const column_plan& plan, std::size_t column, const
     for (auto id : global_of[k]) state_of[k].push_back(order.state_of[id]);
   }
   variable var(plan.name, std::move(order.states));
-  auto codes = make_code_vector(var.cardinality(), rows);
+  auto codes = make_code_vector(var.cardinality() + spare, rows);
   std::visit([&](auto& out) { fill_codes(out, parts, column, state_of); }, codes);
-  return discrete_column(std::move(var), std::move(codes), std::in_place);
+  return discrete_column(std::move(var), std::move(codes), std::in_place, missing);
 }
 
 continuous_column finish_numbers(const column_plan& plan, std::size_t column, const std::vector<chunk_part>& parts,
@@ -291,7 +344,7 @@ continuous_column finish_numbers(const column_plan& plan, std::size_t column, co
   return continuous_column(plan.name, std::move(values));
 }
 
-dataset read_dataset(csv_reader::impl& input, const csv_options& options) {
+csv_data read_dataset(csv_reader::impl& input, const csv_options& options) {
   auto& bytes = *input.bytes;
   bytes.fetch(std::numeric_limits<std::size_t>::max());  // all of it: the data set is in memory anyway
   const auto text = bytes.available();
@@ -321,16 +374,26 @@ dataset read_dataset(csv_reader::impl& input, const csv_options& options) {
     plans.push_back(plan);
   }
 
+  const detail::missing_rule missing(options.missing);
+  drop_rule rule{&missing, {}};
+  for (const auto& plan : plans) rule.positions.push_back(plan.position);
+
   const auto chunks = detail::record_chunks(
       text, input.delimiter, options.chunk_bytes ? options.chunk_bytes : dataset_chunk_bytes, text.size(), true);
   std::vector<chunk_part> parts;
-  parse_chunks(text, chunks, input.delimiter, header.size(), plans, options.threads, input.source, input.first_line,
-               parts);
+  parse_chunks(text, chunks, input.delimiter, header.size(), plans, rule, options.threads, input.source,
+               input.first_line, parts);
   std::size_t rows = 0;
+  std::size_t dropped = 0;
   std::vector<std::size_t> lines;
   for (const auto& part : parts) {
     rows += part.rows;
+    dropped += part.dropped;
     lines.push_back(part.lines);
+  }
+  if (rows == 0 && dropped > 0 && !options.allow_empty) {
+    throw data_error(input.source + ": every one of the " + std::to_string(dropped) +
+                     " data rows has a missing value, so dropping them leaves none");
   }
   if (rows == 0 && !options.allow_empty) throw data_error(input.source + ": there are no data rows after the header");
   const auto first_lines = detail::chunk_first_lines(input.first_line, lines);
@@ -346,7 +409,7 @@ dataset read_dataset(csv_reader::impl& input, const csv_options& options) {
   }
   if (any_text) {
     std::vector<chunk_part> text_parts;
-    parse_chunks(text, chunks, input.delimiter, header.size(), text_plans, options.threads, input.source,
+    parse_chunks(text, chunks, input.delimiter, header.size(), text_plans, rule, options.threads, input.source,
                  input.first_line, text_parts);
     for (std::size_t c = 0; c < plans.size(); ++c) {
       if (text_plans[c].mode == column_mode::skip) continue;
@@ -365,24 +428,32 @@ dataset read_dataset(csv_reader::impl& input, const csv_options& options) {
     }
     for (auto& part : parts) part.columns[c] = {};  // give the memory back column by column
   }
-  return result;
+  return {std::move(result), dropped};
 }
 
 }  // namespace
 
-dataset parse_csv(std::string_view text, const std::string& source, const csv_options& options) {
+csv_data parse_csv_data(std::string_view text, const std::string& source, const csv_options& options) {
   csv_reader input(text, source, options.delimiter);
   return read_dataset(detail::csv_access::of(input), options);
 }
 
-dataset read_csv(const std::filesystem::path& path, const csv_options& options) {
+csv_data read_csv_data(const std::filesystem::path& path, const csv_options& options) {
   csv_reader input(path, options.delimiter);
   return read_dataset(detail::csv_access::of(input), options);
 }
 
+dataset parse_csv(std::string_view text, const std::string& source, const csv_options& options) {
+  return parse_csv_data(text, source, options).data;
+}
+
+dataset read_csv(const std::filesystem::path& path, const csv_options& options) {
+  return read_csv_data(path, options).data;
+}
+
 // ---- writing -------------------------------------------------------------------------
 
-void write_csv(const dataset& data, std::ostream& out, char delimiter) {
+void write_csv(const dataset& data, std::ostream& out, char delimiter, std::string_view missing) {
   const auto& columns = data.columns();
   std::string line;
   for (std::size_t c = 0; c < columns.size(); ++c) {
@@ -396,14 +467,18 @@ void write_csv(const dataset& data, std::ostream& out, char delimiter) {
       for (const auto& state : d->var().states()) escaped_labels[c].push_back(detail::csv_escape(state, delimiter));
     }
   }
+  // Missing values: the code past the states, or NaN.
+  const auto escaped_missing = detail::csv_escape(missing, delimiter);
   std::string buffer;
   for (std::size_t row = 0; row < data.rows(); ++row) {
     for (std::size_t c = 0; c < columns.size(); ++c) {
       if (c) buffer += delimiter;
       if (const auto* d = std::get_if<discrete_column>(&columns[c])) {
-        buffer += escaped_labels[c][d->code(row)];
+        const auto code = d->code(row);
+        buffer += code < escaped_labels[c].size() ? escaped_labels[c][code] : escaped_missing;
       } else {
-        buffer += detail::format_double(std::get<continuous_column>(columns[c]).values()[row]);
+        const double value = std::get<continuous_column>(columns[c]).values()[row];
+        buffer += std::isnan(value) ? escaped_missing : detail::format_double(value);
       }
     }
     buffer += '\n';
@@ -415,8 +490,8 @@ void write_csv(const dataset& data, std::ostream& out, char delimiter) {
   out << buffer;
 }
 
-void write_csv(const dataset& data, const std::filesystem::path& path, char delimiter) {
-  detail::write_file_atomically(path, [&](std::ostream& out) { write_csv(data, out, delimiter); });
+void write_csv(const dataset& data, const std::filesystem::path& path, char delimiter, std::string_view missing) {
+  detail::write_file_atomically(path, [&](std::ostream& out) { write_csv(data, out, delimiter, missing); });
 }
 
 }  // namespace pgm

@@ -97,6 +97,8 @@ struct csv_counter::impl {
   std::size_t width = 0;
   std::vector<counted_column> columns;  // in file order
   std::vector<std::vector<std::size_t>> families;
+  detail::missing_rule missing;
+  std::vector<std::size_t> positions;  // of the columns read, for the policy drop
   unsigned threads = 0;
   std::size_t chunk_bytes = detail::count_chunk_bytes;
   std::size_t window_bytes = detail::count_window_bytes;
@@ -105,6 +107,7 @@ struct csv_counter::impl {
 struct csv_partial_counts::impl {
   const csv_counter::impl* plan = nullptr;  // the counter these counts belong to
   std::size_t rows = 0;
+  std::size_t dropped = 0;
   std::size_t lines = 0;
   std::vector<detail::label_dictionary> labels;  // per column: the labels (known: the states)
   std::vector<std::uint64_t> outside;            // per binned column
@@ -152,11 +155,13 @@ struct count_worker {
   explicit count_worker(const counter_impl& plan) : partial(empty_partial(plan)) {
     for (std::size_t c = 0; c < plan.columns.size(); ++c) block.emplace_back(std::vector<std::uint32_t>(block_rows));
     for (auto& column : block) ids.push_back(std::get<std::vector<std::uint32_t>>(column).data());
+    block_missing.assign(plan.columns.size(), 0);
   }
 
   partial_impl partial;
-  std::vector<code_vector> block;   // per column: the provisional ids of the rows not counted yet
-  std::vector<std::uint32_t*> ids;  // per column: where `block` holds them (a move keeps the buffers)
+  std::vector<code_vector> block;           // per column: the provisional ids of the rows not counted yet
+  std::vector<std::uint32_t*> ids;          // per column: where `block` holds them (a move keeps the buffers)
+  std::vector<std::uint8_t> block_missing;  // per column: the block holds a missing id
   std::size_t filled = 0;
   std::vector<detail::csv_field> fields;
 };
@@ -168,9 +173,18 @@ void count_block(const counter_impl& plan, count_worker& worker) {
     fit_layout(plan, worker.partial, family);
     if (family.too_large) continue;
     columns.clear();
-    for (auto column : family.members) columns.push_back(&worker.block[column]);
-    detail::count_rows(columns, family.strides, 0, worker.filled, family.counts.data());
+    bool missing = false;
+    for (auto column : family.members) {
+      columns.push_back(&worker.block[column]);
+      missing = missing || worker.block_missing[column];
+    }
+    if (missing) {  // missing_id is the missing code of the uint32 ids: those rows are left out
+      detail::count_present_rows(columns, family.strides, 0, worker.filled, family.counts.data());
+    } else {
+      detail::count_rows(columns, family.strides, 0, worker.filled, family.counts.data());
+    }
   }
+  std::fill(worker.block_missing.begin(), worker.block_missing.end(), std::uint8_t{0});
   worker.filled = 0;
 }
 
@@ -181,8 +195,8 @@ void count_block(const counter_impl& plan, count_worker& worker) {
 }
 
 std::uint32_t provisional_id(const counted_column& column, partial_impl& partial, std::size_t c,
-                             const detail::csv_field& field, std::size_t chunk) {
-  detail::check_present(field, column.name);
+                             const detail::csv_field& field, std::size_t chunk, const detail::missing_rule& missing) {
+  if (detail::field_missing(field, column.name, missing)) return detail::missing_id;
   switch (column.mode) {
     case count_mode::labels: {
       auto& labels = partial.labels[c];
@@ -212,20 +226,29 @@ std::uint32_t provisional_id(const counted_column& column, partial_impl& partial
 /// ends it consumed.
 std::size_t count_piece(const counter_impl& plan, count_worker& worker, std::string_view text, std::size_t chunk) {
   try {
-    return detail::for_each_record(text, plan.delimiter, worker.fields,
-                                   [&](const std::vector<detail::csv_field>& fields) {
-                                     if (fields.size() != plan.width) detail::fail_width(fields, plan.width);
-                                     for (std::size_t c = 0; c < plan.columns.size(); ++c) {
-                                       const auto& column = plan.columns[c];
-                                       const auto& field = fields[column.position];
-                                       auto id = known_label_id(column, worker.partial, c, field);
-                                       if (id == detail::label_dictionary::none)
-                                         id = provisional_id(column, worker.partial, c, field, chunk);
-                                       worker.ids[c][worker.filled] = id;
-                                     }
-                                     ++worker.partial.rows;
-                                     if (++worker.filled == block_rows) count_block(plan, worker);
-                                   });
+    const bool drop = plan.missing.policy == missing_policy::drop;
+    return detail::for_each_record(
+        text, plan.delimiter, worker.fields, [&](const std::vector<detail::csv_field>& fields) {
+          if (fields.size() != plan.width) detail::fail_width(fields, plan.width);
+          // Dropped rows are checked first, so that their labels add no states.
+          if (drop && std::any_of(plan.positions.begin(), plan.positions.end(),
+                                  [&](std::size_t p) { return plan.missing.is_missing(fields[p].text); })) {
+            ++worker.partial.dropped;
+            return;
+          }
+          for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+            const auto& column = plan.columns[c];
+            const auto& field = fields[column.position];
+            auto id = known_label_id(column, worker.partial, c, field);
+            if (id == detail::label_dictionary::none) {
+              id = provisional_id(column, worker.partial, c, field, chunk, plan.missing);
+              if (id == detail::missing_id) worker.block_missing[c] = 1;
+            }
+            worker.ids[c][worker.filled] = id;
+          }
+          ++worker.partial.rows;
+          if (++worker.filled == block_rows) count_block(plan, worker);
+        });
   } catch (const detail::csv_failure& failure) {
     throw detail::chunk_failure{chunk, failure};
   }
@@ -236,6 +259,7 @@ std::size_t count_piece(const counter_impl& plan, count_worker& worker, std::str
 void merge(const counter_impl& plan, partial_impl& into, partial_impl& other,
            const std::vector<std::size_t>* first_lines) {
   into.rows += other.rows;
+  into.dropped += other.dropped;
   into.lines += other.lines;
   std::vector<std::vector<std::uint32_t>> id_of(plan.columns.size());
   for (std::size_t c = 0; c < plan.columns.size(); ++c) {
@@ -313,6 +337,7 @@ csv_partial_counts::~csv_partial_counts() = default;
 csv_partial_counts::csv_partial_counts(csv_partial_counts&&) noexcept = default;
 csv_partial_counts& csv_partial_counts::operator=(csv_partial_counts&&) noexcept = default;
 std::size_t csv_partial_counts::rows() const noexcept { return impl_->rows; }
+std::size_t csv_partial_counts::dropped() const noexcept { return impl_->dropped; }
 std::size_t csv_partial_counts::lines() const noexcept { return impl_->lines; }
 
 // ---- csv_counter ---------------------------------------------------------------------
@@ -325,6 +350,7 @@ csv_counter::csv_counter(std::string source, std::vector<std::string> header, co
   plan.delimiter = delimiter;
   plan.width = header.size();
   plan.threads = request.threads;
+  plan.missing = detail::missing_rule(request.missing);
   if (request.chunk_bytes) plan.chunk_bytes = request.chunk_bytes;
   if (request.window_bytes) plan.window_bytes = request.window_bytes;
   for (auto position : detail::column_positions(header, request.columns, plan.source)) {
@@ -342,6 +368,7 @@ csv_counter::csv_counter(std::string source, std::vector<std::string> header, co
       column.var = known->second;
     }
     plan.columns.push_back(std::move(column));
+    plan.positions.push_back(position);
   }
   auto index_of = [&](const std::string& name) {
     for (std::size_t c = 0; c < plan.columns.size(); ++c) {
@@ -382,9 +409,14 @@ csv_partial_counts& csv_partial_counts::operator+=(csv_partial_counts&& other) {
 csv_counts csv_counter::finish(const csv_partial_counts& counts) const {
   const auto& plan = *impl_;
   const auto& partial = detail::csv_access::of(counts);
+  if (partial.rows == 0 && partial.dropped > 0) {
+    throw data_error(plan.source + ": every one of the " + std::to_string(partial.dropped) +
+                     " data rows has a missing value, so dropping them leaves none");
+  }
   if (partial.rows == 0) throw data_error(plan.source + ": there are no data rows after the header");
   csv_counts result;
   result.rows = partial.rows;
+  result.dropped = partial.dropped;
   // Each column's variable and the state of each provisional id.
   std::vector<std::vector<std::uint32_t>> state_of(plan.columns.size());
   for (std::size_t c = 0; c < plan.columns.size(); ++c) {

@@ -20,6 +20,7 @@
 
 #include "pgm/core/error.hpp"
 #include "pgm/data/csv.hpp"
+#include "pgm/data/missing.hpp"
 #include "pgm/data/state_order.hpp"
 #include "pgm/detail/text.hpp"
 
@@ -322,10 +323,73 @@ std::size_t for_each_record(std::string_view text, char delimiter, std::vector<c
   return "'" + std::string(text) + "' is not a finite number (NaN and infinities are not supported)";
 }
 
-/// Missing values: today an empty field is an error. This is the one place that decides what
-/// a field without a value is (issue 18 adds NA and `?` and what to do with them).
-inline void check_present(const csv_field& field, const std::string& column) {
-  if (field.text.empty()) fail_field(field, column, "the value is empty (missing values are not supported)");
+/// Whether a field's text is one of the missing tokens, in one table look-up for most texts
+/// (a code such as "3" never starts like "NA" or "?").
+class missing_matcher {
+ public:
+  explicit missing_matcher(const std::vector<std::string>& tokens) {
+    for (auto& f : first_) f = false;
+    for (const auto& token : tokens) {
+      if (token.empty()) {
+        empty_ = true;
+        continue;
+      }
+      first_[static_cast<unsigned char>(token.front())] = true;
+      tokens_.push_back(token);
+    }
+  }
+
+  [[nodiscard]] bool operator()(std::string_view text) const noexcept {
+    if (text.empty()) return empty_;
+    if (!first_[static_cast<unsigned char>(text.front())]) return false;  // small enough to inline
+    return is_token(text);
+  }
+
+  [[nodiscard]] bool empty_is_missing() const noexcept { return empty_; }
+
+ private:
+  [[nodiscard]] bool is_token(std::string_view text) const noexcept {
+    for (const auto& token : tokens_) {
+      if (text == token) return true;
+    }
+    return false;
+  }
+
+  bool empty_ = false;
+  bool first_[256];
+  std::vector<std::string> tokens_;
+};
+
+/// The provisional id of a missing value in a column's ids (never a label's id).
+inline constexpr std::uint32_t missing_id = missing_code<std::uint32_t>;
+
+/// How a reader treats missing values: which texts are missing and what to do with them.
+struct missing_rule {
+  missing_rule() : missing_rule(missing_values{}) {}
+  explicit missing_rule(const missing_values& missing) : is_missing(missing.tokens), policy(missing.policy) {}
+  missing_matcher is_missing;
+  missing_policy policy;
+};
+
+/// A missing value under the policy `error`: its place, and how to read such data instead.
+[[noreturn]] inline void fail_missing(const csv_field& field, const std::string& column) {
+  fail_field(field, column,
+             (field.text.empty() ? std::string("the value is empty, a missing value")
+                                 : "'" + std::string(field.text) + "' is a missing value") +
+                 " (missing values are refused by default: choose the missing-value policy drop or available to "
+                 "read incomplete rows)");
+}
+
+/// Whether a field is missing: false for a value, true for a missing one where the policy
+/// reads them; fails where the policy is `error`, and for an empty field that is no missing token.
+[[nodiscard]] inline bool field_missing(const csv_field& field, const std::string& column, const missing_rule& rule) {
+  if (!rule.is_missing(field.text)) {
+    if (field.text.empty())
+      fail_field(field, column, "the value is empty (the empty field is not a missing token here)");
+    return false;
+  }
+  if (rule.policy == missing_policy::error) fail_missing(field, column);
+  return true;
 }
 
 /// A field's number for a continuous column: fails on text and on NaN or an infinity.

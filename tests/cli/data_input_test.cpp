@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "pgm/io/network_file.hpp"
 #include "support/program_test.hpp"
 #include "support/random_csv.hpp"
 
@@ -112,6 +113,80 @@ TEST_F(data_input_test, broken_gzip_is_an_error_naming_the_file_and_writes_nothi
                  "big.csv" + message, path("f.json"));
   expect_failure("fit --data - --edges \"a->b\" --out " + path("f.json").string() + " < " + path("big.csv.gz").string(),
                  "<stdin>" + message, path("f.json"));
+}
+
+// Missing values (issue 18): NA, empty and ? by default; row 2 lacks b, row 4 c, row 5 a.
+constexpr const char* incomplete = "a,b,c\nx,0,1\nx,NA,0\ny,1,1\ny,0,\n?,1,0\nx,1,1\n";
+
+TEST_F(data_input_test, missing_values_are_an_error_by_default_naming_line_and_column) {
+  const auto data = file("m.csv", incomplete).string();
+  const auto out = path("f.json");
+  expect_failure("fit --data " + data + " --edges \"b->a,a->c\" --out " + out.string(),
+                 "m.csv:3:3: column 'b': 'NA' is a missing value", out);
+  expect_failure("learn-structure --data " + data + " --out " + out.string(),
+                 "m.csv:3:3: column 'b': 'NA' is a missing value", out);
+  expect_failure("discretize --in " + data + " --out " + path("o.csv").string(), "m.csv:3:3: column 'b'",
+                 path("o.csv"));
+  // Only the empty field is missing: NA and ? are states, and the empty field an error at row 4.
+  const auto r = run("fit --data " + data + " --edges \"b->a,a->c\" --na '' --out " + out.string());
+  EXPECT_NE(r.code, 0);
+  EXPECT_THAT(r.err, HasSubstr("m.csv:5:5: column 'c': the value is empty, a missing value"));
+  expect_failure("fit --data " + data + " --edges \"b->a\" --missing pairwise --out " + out.string(),
+                 "--missing: pairwise not in {error,drop,available}", out);
+}
+
+TEST_F(data_input_test, missing_values_dropped_with_a_note) {
+  const auto data = file("m.csv", incomplete).string();
+  const auto r = run("fit --data " + data + " --edges \"b->a,a->c\" --missing drop --out " + path("f.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("pgm: note: dropped 3 of 6 rows with a missing value (--missing drop)"));
+  EXPECT_THAT(r.out, HasSubstr("from 3 rows"));
+  // Rows 1, 3 and 6: a | b is x | 0, y | 1, x | 1.
+  const auto net = read_network(path("f.json"));
+  EXPECT_DOUBLE_EQ(net.table("a").probability("x", {"1"}), 0.5);
+  EXPECT_DOUBLE_EQ(net.table("a").probability("x", {"0"}), 1.0);
+  // The same rows for learn-structure and discretize.
+  const auto l = run("learn-structure --data " + data + " --missing drop --out " + path("l.json").string());
+  ASSERT_EQ(l.code, 0) << l.err;
+  EXPECT_THAT(l.err, HasSubstr("dropped 3 of 6 rows"));
+  EXPECT_THAT(l.out, HasSubstr("PC-stable on 3 rows"));
+}
+
+TEST_F(data_input_test, missing_values_available_count_each_family_over_its_rows) {
+  const auto data = file("m.csv", incomplete).string();
+  const auto r =
+      run("fit --data " + data + " --edges \"b->a,a->c\" --missing available --out " + path("f.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("'c' is counted over the 4 of 6 rows where it and its parents are present"));
+  // By hand: c | a over rows 1, 2, 3, 6: a = x gives c = 1, 0, 1; a = y gives c = 1.
+  const auto net = read_network(path("f.json"));
+  EXPECT_DOUBLE_EQ(net.table("c").probability("1", {"x"}), 2.0 / 3);
+  EXPECT_DOUBLE_EQ(net.table("c").probability("1", {"y"}), 1.0);
+  // b over its five present rows: 0, 1, 0, 1, 1.
+  EXPECT_DOUBLE_EQ(net.table("b").probability("1", {}), 3.0 / 5);
+  // Standard input and gzip alike.
+  ASSERT_EQ(std::system(("gzip -k " + data).c_str()), 0);
+  const auto z = run("fit --data - --edges \"b->a,a->c\" --missing available --out " + path("z.json").string() + " < " +
+                     data + ".gz");
+  ASSERT_EQ(z.code, 0) << z.err;
+  EXPECT_EQ(slurp(path("z.json")), slurp(path("f.json")));
+}
+
+TEST_F(data_input_test, discretize_keeps_missing_values_missing_as_the_first_na_text) {
+  const auto data = file("d.csv", "u,v\n0.5,a\nNA,b\n2.5,a\n1.5,b\n3.5,a\n0.1,b\n0.2,a\n").string();
+  const auto r =
+      run("discretize --in " + data + " --columns u --bins 2 --missing available --out " + path("o.csv").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(slurp(path("o.csv")), "u,v\n0,a\nNA,b\n1,a\n1,b\n1,a\n0,b\n0,a\n");
+  const auto dash = run("discretize --in " + data + " --columns u --bins 2 --missing available --na '-,NA' --out " +
+                        path("p.csv").string());
+  ASSERT_EQ(dash.code, 0) << dash.err;
+  EXPECT_EQ(slurp(path("p.csv")), "u,v\n0,a\n-,b\n1,a\n1,b\n1,a\n0,b\n0,a\n");
+  // Read back with the same policy, the output gives the same bins.
+  const auto again = run("fit --data " + path("o.csv").string() + " --edges \"u->v\" --missing available --out " +
+                         path("f.json").string());
+  ASSERT_EQ(again.code, 0) << again.err;
+  EXPECT_THAT(again.err, HasSubstr("'v' is counted over the 6 of 7 rows"));
 }
 
 }  // namespace

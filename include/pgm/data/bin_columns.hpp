@@ -6,6 +6,7 @@
 /// width — or by edges saved from an earlier run, so that new data is binned the same way.
 
 #include <algorithm>
+#include <cmath>
 #include <optional>
 #include <set>
 #include <string>
@@ -62,6 +63,7 @@ struct binned_columns {
         if (!values) continue;
         std::set<double> distinct;
         for (double v : values->values()) {
+          if (std::isnan(v)) continue;  // missing
           if (distinct.insert(v).second && distinct.size() > request.bins) break;
         }
         if (distinct.size() > request.bins) {

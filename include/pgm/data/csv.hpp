@@ -22,6 +22,7 @@
 
 #include "pgm/core/variable.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/data/missing.hpp"
 
 namespace pgm {
 
@@ -42,6 +43,10 @@ struct csv_options {
   /// Discrete columns whose variable is known already (from a model): their values must be
   /// its state labels, and the codes follow its state order.
   std::map<std::string, variable, std::less<>> variables;
+  /// Which texts are missing values (`NA`, empty, `?` by default) and what happens to a row
+  /// with one in a column read: an error (the default), the row dropped, or the value kept as
+  /// missing (missing_code in a discrete column, NaN in a continuous one). See pgm/data/missing.hpp.
+  missing_values missing;
   /// A header with no rows is an error unless this is set.
   bool allow_empty = false;
   /// Parsing threads; 0 uses every hardware thread. The result is the same for any number.
@@ -102,6 +107,19 @@ class csv_scanner {
 
 }  // namespace detail
 
+/// A data set read from CSV, and how many rows the missing-value policy `drop` left out.
+struct csv_data {
+  dataset data;
+  std::size_t dropped = 0;
+};
+
+/// Parses CSV text; see parse_csv. Tells how many rows were dropped.
+[[nodiscard]] csv_data parse_csv_data(std::string_view text, const std::string& source,
+                                      const csv_options& options = {});
+
+/// Reads a CSV file; see read_csv. Tells how many rows were dropped.
+[[nodiscard]] csv_data read_csv_data(const std::filesystem::path& path, const csv_options& options = {});
+
 /// Parses CSV text. `source` names it in error messages.
 [[nodiscard]] dataset parse_csv(std::string_view text, const std::string& source, const csv_options& options = {});
 
@@ -111,10 +129,11 @@ class csv_scanner {
 [[nodiscard]] dataset read_csv(const std::filesystem::path& path, const csv_options& options = {});
 
 /// Writes a data set as CSV: discrete columns by state label, continuous ones as the
-/// shortest decimal text that reads back to the same double.
-void write_csv(const dataset& data, std::ostream& out, char delimiter = ',');
+/// shortest decimal text that reads back to the same double, a missing value as `missing`.
+void write_csv(const dataset& data, std::ostream& out, char delimiter = ',', std::string_view missing = "NA");
 
 /// Writes a data set to a CSV file atomically (see write_csv).
-void write_csv(const dataset& data, const std::filesystem::path& path, char delimiter = ',');
+void write_csv(const dataset& data, const std::filesystem::path& path, char delimiter = ',',
+               std::string_view missing = "NA");
 
 }  // namespace pgm

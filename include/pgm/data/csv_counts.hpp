@@ -23,6 +23,7 @@
 
 #include "pgm/core/variable.hpp"
 #include "pgm/data/csv.hpp"
+#include "pgm/data/missing.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
@@ -49,6 +50,9 @@ struct csv_count_request {
   std::map<std::string, variable, std::less<>> intervals;
   /// The families to count.
   std::vector<csv_family> families;
+  /// Missing values, as csv_options::missing: an error, rows dropped, or each family counted
+  /// over the rows where its child and parents are present (policy available).
+  missing_values missing;
   /// Counting threads; 0 uses every hardware thread. The counts are the same for any number.
   unsigned threads = 0;
   /// Bytes per chunk (split at a line end) and per window (what is in memory at once); 0
@@ -58,12 +62,16 @@ struct csv_count_request {
 };
 
 struct csv_counts {
-  /// Data rows read.
+  /// Data rows read (those dropped for a missing value not included).
   std::size_t rows = 0;
+  /// Rows left out for a missing value (policy drop).
+  std::size_t dropped = 0;
   /// The columns read, in file order, with their states: the values seen, sorted as
   /// `read_csv` sorts them, or the given variable, or the interval variable.
   std::vector<variable> variables;
-  /// One table per requested family, in request order, over `variables`.
+  /// One table per requested family, in request order, over `variables`. With the policy
+  /// available a table counts only the rows where its family is present, so it may sum to
+  /// less than `rows`.
   std::vector<count_table> families;
   /// For each binned column, how many values lie outside its edges' range.
   std::map<std::string, std::size_t, std::less<>> outside;
@@ -111,6 +119,8 @@ class csv_partial_counts {
 
   /// Records counted.
   [[nodiscard]] std::size_t rows() const noexcept;
+  /// Records left out for a missing value (policy drop).
+  [[nodiscard]] std::size_t dropped() const noexcept;
   /// Line ends consumed (blank lines included): where the next range's lines start.
   [[nodiscard]] std::size_t lines() const noexcept;
 

@@ -19,13 +19,15 @@
 
 #include "pgm/core/error.hpp"
 #include "pgm/core/variable.hpp"
+#include "pgm/data/missing.hpp"
 #include "pgm/detail/text.hpp"
 
 namespace pgm {
 
 using code_vector = std::variant<std::vector<std::uint8_t>, std::vector<std::uint16_t>, std::vector<std::uint32_t>>;
 
-/// The narrowest code width for a variable with `cardinality` states.
+/// The narrowest code width for a variable with `cardinality` states (pass one more when the
+/// column holds missing values, whose code is the width's largest value).
 [[nodiscard]] inline code_vector make_code_vector(std::size_t cardinality, std::size_t rows = 0) {
   if (cardinality <= 256) return std::vector<std::uint8_t>(rows);
   if (cardinality <= 65536) return std::vector<std::uint16_t>(rows);
@@ -54,8 +56,9 @@ class discrete_column {
   }
 
   /// Takes codes already stored at the right width, unchecked: for pgm's own producers.
-  discrete_column(variable var, code_vector codes, std::in_place_t)
-      : variable_(std::move(var)), codes_(std::move(codes)) {}
+  /// `missing` rows hold missing_code (the width then leaves that code free of states).
+  discrete_column(variable var, code_vector codes, std::in_place_t, std::size_t missing = 0)
+      : variable_(std::move(var)), codes_(std::move(codes)), missing_(missing) {}
 
   [[nodiscard]] const variable& var() const noexcept { return variable_; }
   [[nodiscard]] const std::string& name() const noexcept { return variable_.name(); }
@@ -65,7 +68,24 @@ class discrete_column {
   [[nodiscard]] std::uint32_t code(std::size_t row) const {
     return std::visit([row](const auto& c) { return static_cast<std::uint32_t>(c[row]); }, codes_);
   }
-  [[nodiscard]] const std::string& label(std::size_t row) const { return variable_.states()[code(row)]; }
+  /// The state label of a row; throws data_error for a missing value.
+  [[nodiscard]] const std::string& label(std::size_t row) const {
+    const auto c = code(row);
+    if (c >= variable_.cardinality()) {
+      throw data_error("column '" + name() + "' row " + std::to_string(row + 1) + ": the value is missing");
+    }
+    return variable_.states()[c];
+  }
+  /// Rows whose value is missing (their code is missing_code of the code type).
+  [[nodiscard]] std::size_t missing() const noexcept { return missing_; }
+  [[nodiscard]] bool is_missing(std::size_t row) const {
+    return missing_ != 0 && std::visit(
+                                [row](const auto& c) {
+                                  using code_type = typename std::decay_t<decltype(c)>::value_type;
+                                  return c[row] == missing_code<code_type>;
+                                },
+                                codes_);
+  }
   [[nodiscard]] const code_vector& codes() const noexcept { return codes_; }
   /// Bytes per stored code: 1, 2 or 4.
   [[nodiscard]] std::size_t code_width() const noexcept {
@@ -78,19 +98,23 @@ class discrete_column {
       throw model_error("column '" + name() + "' has " + std::to_string(variable_.cardinality()) +
                         " states, the replacement variable " + std::to_string(replacement.cardinality()));
     }
-    return discrete_column(std::move(replacement), codes_, std::in_place);
+    return discrete_column(std::move(replacement), codes_, std::in_place, missing_);
   }
 
   [[nodiscard]] discrete_column select(std::span<const std::size_t> rows) const {
-    return discrete_column(variable_,
-                           std::visit(
-                               [&](const auto& c) -> code_vector {
-                                 std::decay_t<decltype(c)> picked(rows.size());
-                                 for (std::size_t i = 0; i < rows.size(); ++i) picked[i] = c.at(rows[i]);
-                                 return picked;
-                               },
-                               codes_),
-                           std::in_place);
+    std::size_t missing = 0;
+    auto picked = std::visit(
+        [&](const auto& c) -> code_vector {
+          using code_type = typename std::decay_t<decltype(c)>::value_type;
+          std::decay_t<decltype(c)> chosen(rows.size());
+          for (std::size_t i = 0; i < rows.size(); ++i) {
+            chosen[i] = c.at(rows[i]);
+            missing += chosen[i] == missing_code<code_type> && missing_ != 0;
+          }
+          return chosen;
+        },
+        codes_);
+    return discrete_column(variable_, std::move(picked), std::in_place, missing);
   }
 
   friend bool operator==(const discrete_column&, const discrete_column&) = default;
@@ -98,6 +122,7 @@ class discrete_column {
  private:
   variable variable_;
   code_vector codes_;
+  std::size_t missing_ = 0;
 };
 
 class continuous_column {
@@ -109,8 +134,13 @@ class continuous_column {
 
   [[nodiscard]] const std::string& name() const noexcept { return name_; }
   [[nodiscard]] std::size_t size() const noexcept { return values_.size(); }
+  /// The values; a missing one is NaN.
   [[nodiscard]] std::span<const double> values() const noexcept { return values_; }
   [[nodiscard]] const semantic_tags& tags() const noexcept { return tags_; }
+  /// Rows whose value is missing (NaN).
+  [[nodiscard]] std::size_t missing() const noexcept {
+    return static_cast<std::size_t>(std::count_if(values_.begin(), values_.end(), [](double v) { return v != v; }));
+  }
 
   [[nodiscard]] continuous_column select(std::span<const std::size_t> rows) const {
     std::vector<double> picked(rows.size());
@@ -118,7 +148,12 @@ class continuous_column {
     return continuous_column(name_, std::move(picked), tags_);
   }
 
-  friend bool operator==(const continuous_column&, const continuous_column&) = default;
+  /// Equal names, tags and values, a missing value (NaN) equal to a missing one.
+  friend bool operator==(const continuous_column& a, const continuous_column& b) {
+    return a.name_ == b.name_ && a.tags_ == b.tags_ &&
+           std::equal(a.values_.begin(), a.values_.end(), b.values_.begin(), b.values_.end(),
+                      [](double x, double y) { return x == y || (x != x && y != y); });
+  }
 
  private:
   std::string name_;

@@ -23,9 +23,10 @@ namespace pgm {
 
 namespace detail {
 
+/// Fails on an infinity; NaN is a missing value, which binning leaves missing.
 inline void check_finite(std::span<const double> values, const std::string& name) {
   for (std::size_t row = 0; row < values.size(); ++row) {
-    if (!std::isfinite(values[row])) {
+    if (std::isinf(values[row])) {
       throw data_error("column '" + name + "' row " + std::to_string(row + 1) +
                        ": cannot discretize a value that is not finite");
     }
@@ -42,17 +43,28 @@ inline std::vector<double> distinct_edges(std::vector<double> edges, const std::
   return edges;
 }
 
+/// The values that are present (not NaN), as pandas' quantiles skip missing values.
+[[nodiscard]] inline std::vector<double> present_values(std::span<const double> values) {
+  std::vector<double> present;
+  present.reserve(values.size());
+  for (double v : values) {
+    if (!std::isnan(v)) present.push_back(v);
+  }
+  return present;
+}
+
 }  // namespace detail
 
 /// Edges of `bins` equal-frequency bins: the minimum, the k/bins quantiles (linear
 /// interpolation between order statistics, NumPy's default) and the maximum. Bins that would
-/// be empty because of ties are merged, so fewer than `bins` may come back.
+/// be empty because of ties are merged, so fewer than `bins` may come back. Missing values
+/// (NaN) are left out.
 [[nodiscard]] inline std::vector<double> quantile_edges(std::span<const double> values, std::size_t bins,
                                                         const std::string& name = "values") {
   if (bins == 0) throw data_error("the number of bins must be positive");
-  if (values.empty()) throw data_error("column '" + name + "' has no values to discretize");
   detail::check_finite(values, name);
-  std::vector<double> sorted(values.begin(), values.end());
+  auto sorted = detail::present_values(values);
+  if (sorted.empty()) throw data_error("column '" + name + "' has no values to discretize");
   std::sort(sorted.begin(), sorted.end());
   const auto n = sorted.size();
   std::vector<double> edges;
@@ -66,13 +78,15 @@ inline std::vector<double> distinct_edges(std::vector<double> edges, const std::
   return detail::distinct_edges(std::move(edges), name);
 }
 
-/// Edges of `bins` bins of equal width between the minimum and the maximum.
+/// Edges of `bins` bins of equal width between the minimum and the maximum (of the values
+/// present: NaN is missing).
 [[nodiscard]] inline std::vector<double> equal_width_edges(std::span<const double> values, std::size_t bins,
                                                            const std::string& name = "values") {
   if (bins == 0) throw data_error("the number of bins must be positive");
-  if (values.empty()) throw data_error("column '" + name + "' has no values to discretize");
   detail::check_finite(values, name);
-  const auto [lo, hi] = std::minmax_element(values.begin(), values.end());
+  const auto present = detail::present_values(values);
+  if (present.empty()) throw data_error("column '" + name + "' has no values to discretize");
+  const auto [lo, hi] = std::minmax_element(present.begin(), present.end());
   std::vector<double> edges;
   for (std::size_t k = 0; k <= bins; ++k) {
     edges.push_back(k == bins ? *hi : *lo + (*hi - *lo) * static_cast<double>(k) / static_cast<double>(bins));
@@ -98,23 +112,24 @@ enum class binning { quantile, equal_width };
   return result;
 }
 
-/// The codes of `values` in the intervals of `intervals`.
+/// The codes of `values` in the intervals of `intervals`; a missing value (NaN) stays missing.
 [[nodiscard]] inline discrete_column discretize(const continuous_column& values, const variable& intervals) {
   if (!intervals.has_intervals()) {
     throw model_error("variable '" + intervals.name() + "' has no interval edges to bin values by");
   }
   detail::check_finite(values.values(), values.name());
-  auto codes = make_code_vector(intervals.cardinality(), values.size());
+  const auto missing = values.missing();
+  auto codes = make_code_vector(intervals.cardinality() + (missing ? 1 : 0), values.size());
   std::visit(
       [&](auto& stored) {
         using code = typename std::decay_t<decltype(stored)>::value_type;
         const auto v = values.values();
         for (std::size_t row = 0; row < v.size(); ++row) {
-          stored[row] = static_cast<code>(intervals.bin(v[row]).value());
+          stored[row] = std::isnan(v[row]) ? missing_code<code> : static_cast<code>(intervals.bin(v[row]).value());
         }
       },
       codes);
-  return discrete_column(intervals, std::move(codes), std::in_place);
+  return discrete_column(intervals, std::move(codes), std::in_place, missing);
 }
 
 /// `data` with every continuous column named in `d` replaced by its discretized form.

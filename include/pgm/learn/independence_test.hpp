@@ -184,7 +184,8 @@ struct ci_result {
 
 namespace detail {
 
-/// Counts the table (x | given..., y) into `counts` (resized and zeroed) over all rows.
+/// Counts the table (x | given..., y) into `counts` (resized and zeroed) over all rows where
+/// none of them is missing (test-wise deletion, as pgmpy's tests count).
 /// The layout is the one test_independence reads: x fastest, then y, then the strata of
 /// `given` (its last column fastest). With `threads` > 1 (0: every hardware thread) the rows
 /// are counted on up to that many threads, each into a private table, summed: the counts are
@@ -214,8 +215,10 @@ inline void count_ci_table(const discrete_column& x, const discrete_column& y,
   add(y);
   for (std::size_t k = given.size(); k-- > 0;) add(*given[k]);
   counts.assign(stride, 0);
+  bool skip_missing = x.missing() != 0 || y.missing() != 0;
+  for (const auto* c : given) skip_missing = skip_missing || c->missing() != 0;
   // Below ~64k rows per thread, starting a thread costs more than it saves.
-  count_rows_parallel(columns, strides, 0, x.size(), counts, threads, std::size_t{1} << 16);
+  count_rows_parallel(columns, strides, 0, x.size(), counts, threads, std::size_t{1} << 16, skip_missing);
 }
 
 }  // namespace detail

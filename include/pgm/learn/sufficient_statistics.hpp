@@ -23,6 +23,7 @@
 #include "pgm/core/strong_index.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/data/missing.hpp"
 #include "pgm/detail/parallel_for.hpp"
 
 namespace pgm {
@@ -166,25 +167,50 @@ inline void count_rows(std::span<const code_vector* const> columns, std::span<co
   }
 }
 
+/// Adds the counts of rows [begin, end) into `counts`, leaving out every row where a column
+/// holds its missing code: the slower loop for columns with missing values.
+inline void count_present_rows(std::span<const code_vector* const> columns, std::span<const std::uint32_t> strides,
+                               std::size_t begin, std::size_t end, std::uint64_t* counts) {
+  std::uint32_t index[count_block_rows];
+  std::uint8_t present[count_block_rows];
+  for (std::size_t first = begin; first < end; first += count_block_rows) {
+    const std::size_t n = std::min(count_block_rows, end - first);
+    block_cells(columns, strides, first, n, index);  // a missing row's cell is never touched
+    std::fill_n(present, n, std::uint8_t{1});
+    for (const auto* column : columns) {
+      std::visit(
+          [&](const auto& codes) {
+            using code_type = typename std::decay_t<decltype(codes)>::value_type;
+            const auto* c = codes.data() + first;
+            for (std::size_t i = 0; i < n; ++i) present[i] &= c[i] != missing_code<code_type>;
+          },
+          *column);
+    }
+    for (std::size_t i = 0; i < n; ++i) counts[present[i] ? index[i] : 0] += present[i];
+  }
+}
+
 /// Adds the counts of rows [begin, end) into `counts` on up to `threads` threads (0: every one),
 /// each with at least `min_rows_per_thread` rows: every thread counts its chunks into a private
-/// table and the tables are summed, which gives the same counts for any split.
+/// table and the tables are summed, which gives the same counts for any split. With
+/// `skip_missing`, rows where a column holds its missing code are left out.
 inline void count_rows_parallel(std::span<const code_vector* const> columns, std::span<const std::uint32_t> strides,
                                 std::size_t begin, std::size_t end, std::span<std::uint64_t> counts, unsigned threads,
-                                std::size_t min_rows_per_thread) {
+                                std::size_t min_rows_per_thread, bool skip_missing = false) {
+  const auto count = skip_missing ? count_present_rows : count_rows;
   const std::size_t rows = end > begin ? end - begin : 0;
   parallel_options options{.threads = threads, .min_items_per_thread = min_rows_per_thread};
   // About four chunks per thread, so that a thread slowed by others on the machine is helped out.
   const std::size_t per_thread = rows / std::max<std::size_t>(1, worker_count(rows, options));
   options.chunk = std::clamp<std::size_t>(per_thread / 4, count_block_rows, count_chunk_rows);
   if (worker_count(rows, options) <= 1) {
-    count_rows(columns, strides, begin, end, counts.data());
+    count(columns, strides, begin, end, counts.data());
     return;
   }
   const auto partial = parallel_for(
       rows, options, [&] { return std::vector<std::uint64_t>(counts.size()); },
       [&](std::vector<std::uint64_t>& mine, item_range chunk) {
-        count_rows(columns, strides, begin + chunk.begin, begin + chunk.end, mine.data());
+        count(columns, strides, begin + chunk.begin, begin + chunk.end, mine.data());
       });
   for (const auto& part : partial) {
     for (std::size_t i = 0; i < counts.size(); ++i) counts[i] += part[i];
@@ -220,7 +246,8 @@ struct family_columns {
 
 }  // namespace detail
 
-/// Counts the family (child | parents) over rows `rows` of the given columns.
+/// Counts the family (child | parents) over rows `rows` of the given columns; a row where the
+/// child or a parent is missing is left out (available-case counting).
 [[nodiscard]] inline count_table count_family(const discrete_column& child,
                                               std::span<const discrete_column* const> parents,
                                               const count_options& options = {}, row_range rows = {}) {
@@ -230,8 +257,10 @@ struct family_columns {
   const auto family = detail::columns_of(table, child, parents);
   const std::size_t end = std::min(rows.end, child.size());
   const std::size_t begin = std::min(rows.begin, end);
+  bool skip_missing = child.missing() != 0;
+  for (const auto* p : parents) skip_missing = skip_missing || p->missing() != 0;
   detail::count_rows_parallel(family.columns, family.strides, begin, end, table.counts(), options.threads,
-                              options.min_rows_per_thread);
+                              options.min_rows_per_thread, skip_missing);
   return table;
 }
 
