@@ -52,7 +52,7 @@ void note_many_states(const variable& v, std::size_t rows) {
 }  // namespace
 
 csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>& columns, const data_plan& plan,
-                               std::vector<csv_family> families, unsigned threads) {
+                               std::vector<csv_family> families, unsigned threads, detail::process_group& group) {
   csv_count_request request;
   request.columns = columns;
   request.families = std::move(families);
@@ -67,7 +67,7 @@ csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>
       request.intervals.emplace(name, intervals);
     }
   }
-  auto counts = count_csv(input, request);
+  auto counts = count_csv(input, request, group);
   for (const auto& [name, outside] : counts.outside) {
     note_outside(name, outside, counts.rows, request.intervals.at(name));
   }

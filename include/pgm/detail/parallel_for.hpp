@@ -232,10 +232,13 @@ void parallel_for_on(process_group& group, std::size_t n, const parallel_options
 /// Collective: brings the slots [0, n) that each process filled for its share of a job
 /// (parallel_for_on with the same n) to process 0, in item order. `write(writer, item)` puts
 /// one slot's value into a byte_writer and `read(reader, item)` takes it back on process 0.
+/// Like every collective step here it starts with an agreement (see agree), so a process that
+/// failed before meets the others there.
 template <class Write, class Read>
   requires std::invocable<Write&, byte_writer&, std::size_t> && std::invocable<Read&, byte_reader&, std::size_t>
 void gather_slots(process_group& group, std::size_t n, Write&& write, Read&& read) {
   if (group.size() == 1) return;
+  agree(group, nullptr);
   const process_share mine{group.rank(), group.size()};
   byte_writer writer;
   const auto owned = mine.of(n);
@@ -249,9 +252,12 @@ void gather_slots(process_group& group, std::size_t n, Write&& write, Read&& rea
   }
 }
 
-/// Collective: replaces `values` with their sum over all processes (count tables).
+/// Collective: replaces `values` with their sum over all processes (count tables), after an
+/// agreement that no process failed.
 inline void sum_over_processes(process_group& group, std::span<std::uint64_t> values) {
-  if (group.size() > 1) group.sum(values);
+  if (group.size() == 1) return;
+  agree(group, nullptr);
+  group.sum(values);
 }
 
 }  // namespace pgm::detail
