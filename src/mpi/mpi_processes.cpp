@@ -79,8 +79,7 @@ class world_group final : public detail::process_group {
   void sum(std::span<std::uint64_t> values) override {
     for (std::size_t at = 0; at < values.size(); at += piece) {
       const auto n = static_cast<int>(std::min<std::size_t>(piece, values.size() - at));
-      check(MPI_Allreduce(MPI_IN_PLACE, values.data() + at, n, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD),
-            "MPI_Allreduce");
+      check(MPI_Allreduce(MPI_IN_PLACE, values.data() + at, n, MPI_UINT64_T, MPI_SUM, MPI_COMM_WORLD), "MPI_Allreduce");
     }
   }
 

@@ -184,7 +184,7 @@ TEST(process_group_test, every_process_throws_the_failure_of_the_lowest_item) {
   const auto outcomes = run_group(4, [](process_group& group) {
     parallel_for_on(group, 200, {.threads = 2}, [](item_range items) {
       for (auto i = items.begin; i < items.end; ++i) {
-        if (i == 130 || i == 170) throw parse_error("bad item " + std::to_string(i));
+        if (i == 130 || i == 170) throw data_error("bad item " + std::to_string(i));
       }
     });
   });
@@ -209,7 +209,11 @@ TEST(process_group_test, a_process_failing_before_a_job_meets_the_others_at_its_
         } catch (...) {
           failure = std::current_exception();
         }
-        if (!group.failed()) agree(group, failure);
+        if (!group.failed()) {
+          agree(group, failure);
+        } else if (failure) {
+          std::rethrow_exception(failure);
+        }
       },
       &steps);
   for (const auto& o : outcomes) EXPECT_THAT(o.message, HasSubstr("cannot open 'data.csv'"));

@@ -107,8 +107,7 @@ class csv_reader {
 /// memory (standard input, compressed data) or that holds quotes (a quoted field may span
 /// lines) is counted whole by process 0. A failure is agreed on by all processes
 /// (pgm::detail::agree): the first in the file wins.
-[[nodiscard]] csv_counts count_csv(csv_reader& input, const csv_count_request& request,
-                                   detail::process_group& group);
+[[nodiscard]] csv_counts count_csv(csv_reader& input, const csv_count_request& request, detail::process_group& group);
 
 /// Counts of some of a file's records, over provisional ids: add up those of one counter with
 /// `+=` (in any order) and turn them into tables with csv_counter::finish. They refer to their

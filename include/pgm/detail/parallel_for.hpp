@@ -215,8 +215,8 @@ template <StateFactory MakeState, ChunkBody<state_of<MakeState>> Body>
     failure = std::current_exception();
   }
   // A failure outside the body (a state's construction, progress) counts at the share's start.
-  const std::size_t item = failed_at.load() == std::numeric_limits<std::size_t>::max() ? options.share.of(n).begin
-                                                                                       : failed_at.load();
+  const std::size_t item =
+      failed_at.load() == std::numeric_limits<std::size_t>::max() ? options.share.of(n).begin : failed_at.load();
   agree(group, failure, item);
   return states;
 }
@@ -235,7 +235,7 @@ void parallel_for_on(process_group& group, std::size_t n, const parallel_options
 /// Like every collective step here it starts with an agreement (see agree), so a process that
 /// failed before meets the others there.
 template <class Write, class Read>
-  requires std::invocable<Write&, byte_writer&, std::size_t> && std::invocable<Read&, byte_reader&, std::size_t>
+requires std::invocable<Write&, byte_writer&, std::size_t> && std::invocable<Read&, byte_reader&, std::size_t>
 void gather_slots(process_group& group, std::size_t n, Write&& write, Read&& read) {
   if (group.size() == 1) return;
   agree(group, nullptr);

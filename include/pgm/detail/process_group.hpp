@@ -107,7 +107,7 @@ class remote_error : public error {
 class byte_writer {
  public:
   template <class T>
-    requires std::is_trivially_copyable_v<T>
+  requires std::is_trivially_copyable_v<T>
   void put(const T& value) {
     const auto* bytes = reinterpret_cast<const char*>(&value);
     bytes_.append(bytes, sizeof(T));
@@ -117,7 +117,7 @@ class byte_writer {
     bytes_.append(text);
   }
   template <class T>
-    requires std::is_trivially_copyable_v<T>
+  requires std::is_trivially_copyable_v<T>
   void put_all(std::span<const T> values) {
     bytes_.append(reinterpret_cast<const char*>(values.data()), values.size_bytes());
   }
@@ -132,7 +132,7 @@ class byte_reader {
  public:
   explicit byte_reader(std::string_view bytes) noexcept : bytes_(bytes) {}
   template <class T>
-    requires std::is_trivially_copyable_v<T>
+  requires std::is_trivially_copyable_v<T>
   [[nodiscard]] T get() {
     T value;
     std::memcpy(&value, take(sizeof(T)).data(), sizeof(T));
@@ -140,7 +140,7 @@ class byte_reader {
   }
   [[nodiscard]] std::string get_string() { return std::string(take(get<std::uint64_t>())); }
   template <class T>
-    requires std::is_trivially_copyable_v<T>
+  requires std::is_trivially_copyable_v<T>
   void get_all(std::span<T> values) {
     const auto bytes = take(values.size_bytes());
     if (!bytes.empty()) std::memcpy(values.data(), bytes.data(), bytes.size());

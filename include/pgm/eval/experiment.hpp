@@ -145,77 +145,77 @@ struct prepared_target {
   std::exception_ptr failure;
   std::size_t failed_job = 0;
   try {
-  if (share.empty() && group.rank() != 0) throw detail::nothing_to_prepare{};
-  // The prior: fitted once, by MLE, on D′.
-  const auto prior_facts = source.facts(s.prior_task, s.prior_node);
-  const auto prior_family =
-      read_family(source.data(s.prior_task, s.prior_rows, detail::mix_seed(base_seed, detail::seed_of(s.prior_task))),
-                  s.prior_node, prior_facts.parents, s.bins, prior_facts.tags);
-  for (const auto& n : prior_family.notes) note("prior: " + n);
-  const auto prior_network = prior_family.fit_all();
-  const auto map = parse_correspondence(s.map);
+    if (share.empty() && group.rank() != 0) throw detail::nothing_to_prepare{};
+    // The prior: fitted once, by MLE, on D′.
+    const auto prior_facts = source.facts(s.prior_task, s.prior_node);
+    const auto prior_family =
+        read_family(source.data(s.prior_task, s.prior_rows, detail::mix_seed(base_seed, detail::seed_of(s.prior_task))),
+                    s.prior_node, prior_facts.parents, s.bins, prior_facts.tags);
+    for (const auto& n : prior_family.notes) note("prior: " + n);
+    const auto prior_network = prior_family.fit_all();
+    const auto map = parse_correspondence(s.map);
 
-  // Only the targets of this process's jobs.
-  const std::size_t first_target = share.empty() ? 0 : share.begin / repetitions;
-  const std::size_t end_target = share.empty() ? 0 : (share.end - 1) / repetitions + 1;
-  for (std::size_t index = first_target; index < end_target; ++index) {
-    const auto& t = s.targets[index];
-    failed_job = index * repetitions;
-    noting = index + 1;
-    const auto facts = source.facts(t.task, s.target_node);
-    detail::prepared_target target{t.task,
-                                   read_family(source.data(t.task, t.train_rows + t.ground_truth_rows,
-                                                           detail::mix_seed(base_seed, detail::seed_of(t.task))),
-                                               s.target_node, facts.parents, s.bins, facts.tags),
-                                   t.train_rows,
-                                   nullptr,
-                                   0,
-                                   {},
-                                   {}};
-    for (const auto& n : target.family.notes) note(t.task + ": " + n);
-    const auto& parents = target.family.parents;
-    target.controllable = std::make_unique<bool[]>(parents.size());
-    for (std::size_t p = 0; p < parents.size(); ++p)
-      target.controllable[p] = facts.controllable.contains(parents[p].name());
-    target.success_state = target.family.child.state("1").value();
-    const auto structure = target.family.structure();
-    for (const auto& strategy : s.strategies) {
-      auto priors = transfer_priors(prior_network, structure, map, transfer_registry::instance().at(strategy));
-      target.priors.emplace(strategy, std::move(priors.at(s.target_node)));
-    }
-    if (options.automatic_lines) {
-      // The proposed map, with the scenario's last strategy (its best in the paper).
-      try {
-        correspondence pinned;
-        pinned.pinned = map.pinned;
-        pinned.transferred = map.transferred;
-        const auto proposal =
-            propose_correspondence({&structure, nullptr}, {&prior_network.structure(), &prior_network}, pinned);
-        note(t.task + ": proposed map " + to_string(proposal) +
-             (to_string(proposal) == to_string(map) ? " (the scenario's)" : " (the scenario's: " + s.map + ")"));
-        auto priors =
-            transfer_priors(prior_network, structure, proposal, transfer_registry::instance().at(s.strategies.back()));
-        target.priors.emplace(s.strategies.back() + "+auto-map", std::move(priors.at(s.target_node)));
-      } catch (const error& e) {
-        note(t.task + ": no line for the proposed map: " + e.what());
+    // Only the targets of this process's jobs.
+    const std::size_t first_target = share.empty() ? 0 : share.begin / repetitions;
+    const std::size_t end_target = share.empty() ? 0 : (share.end - 1) / repetitions + 1;
+    for (std::size_t index = first_target; index < end_target; ++index) {
+      const auto& t = s.targets[index];
+      failed_job = index * repetitions;
+      noting = index + 1;
+      const auto facts = source.facts(t.task, s.target_node);
+      detail::prepared_target target{t.task,
+                                     read_family(source.data(t.task, t.train_rows + t.ground_truth_rows,
+                                                             detail::mix_seed(base_seed, detail::seed_of(t.task))),
+                                                 s.target_node, facts.parents, s.bins, facts.tags),
+                                     t.train_rows,
+                                     nullptr,
+                                     0,
+                                     {},
+                                     {}};
+      for (const auto& n : target.family.notes) note(t.task + ": " + n);
+      const auto& parents = target.family.parents;
+      target.controllable = std::make_unique<bool[]>(parents.size());
+      for (std::size_t p = 0; p < parents.size(); ++p)
+        target.controllable[p] = facts.controllable.contains(parents[p].name());
+      target.success_state = target.family.child.state("1").value();
+      const auto structure = target.family.structure();
+      for (const auto& strategy : s.strategies) {
+        auto priors = transfer_priors(prior_network, structure, map, transfer_registry::instance().at(strategy));
+        target.priors.emplace(strategy, std::move(priors.at(s.target_node)));
       }
-    }
-    target.lines.push_back({"mle", "0", nullptr, 0, false});
-    double smallest_weight = INFINITY;
-    for (double w : s.weights) {
-      if (w > 0) smallest_weight = std::min(smallest_weight, w);
-    }
-    for (const auto& [name, prior] : target.priors) {
-      const bool auto_map = name.find("+auto-map") != std::string::npos;
+      if (options.automatic_lines) {
+        // The proposed map, with the scenario's last strategy (its best in the paper).
+        try {
+          correspondence pinned;
+          pinned.pinned = map.pinned;
+          pinned.transferred = map.transferred;
+          const auto proposal =
+              propose_correspondence({&structure, nullptr}, {&prior_network.structure(), &prior_network}, pinned);
+          note(t.task + ": proposed map " + to_string(proposal) +
+               (to_string(proposal) == to_string(map) ? " (the scenario's)" : " (the scenario's: " + s.map + ")"));
+          auto priors = transfer_priors(prior_network, structure, proposal,
+                                        transfer_registry::instance().at(s.strategies.back()));
+          target.priors.emplace(s.strategies.back() + "+auto-map", std::move(priors.at(s.target_node)));
+        } catch (const error& e) {
+          note(t.task + ": no line for the proposed map: " + e.what());
+        }
+      }
+      target.lines.push_back({"mle", "0", nullptr, 0, false});
+      double smallest_weight = INFINITY;
       for (double w : s.weights) {
-        // The proposed map at the smallest weight only, to keep the plots readable.
-        if (w == 0 || (auto_map && w != smallest_weight)) continue;
-        target.lines.push_back({name, detail::format_short(w), &prior.table(), w, false});
+        if (w > 0) smallest_weight = std::min(smallest_weight, w);
       }
-      if (options.automatic_lines && !auto_map) target.lines.push_back({name, "auto", &prior.table(), 0, true});
+      for (const auto& [name, prior] : target.priors) {
+        const bool auto_map = name.find("+auto-map") != std::string::npos;
+        for (double w : s.weights) {
+          // The proposed map at the smallest weight only, to keep the plots readable.
+          if (w == 0 || (auto_map && w != smallest_weight)) continue;
+          target.lines.push_back({name, detail::format_short(w), &prior.table(), w, false});
+        }
+        if (options.automatic_lines && !auto_map) target.lines.push_back({name, "auto", &prior.table(), 0, true});
+      }
+      targets[index].emplace(std::move(target));
     }
-    targets[index].emplace(std::move(target));
-  }
   } catch (const detail::nothing_to_prepare&) {
   } catch (...) {
     failure = std::current_exception();
