@@ -4,8 +4,11 @@
 /// the few collective steps pgm needs: the smallest of a number, a broadcast, a gather to
 /// process 0 in rank order and a sum of integers. One process, as started without a launcher,
 /// is the default and does no communication; the program installs an MPI group when mpirun or
-/// srun started it (src/mpi). Only pgm/detail/parallel_for.hpp and the commands' start and end
-/// use it: jobs split their items there, and nowhere else learns about ranks.
+/// srun started it (src/mpi). Jobs are split into blocks of items in pgm/detail/parallel_for.hpp
+/// (parallel_for_on, gather_slots, sum_over_processes); the drivers that scale out (sim/run.hpp,
+/// eval/experiment.hpp and run_scenarios.hpp) only choose the group and agree on their phases,
+/// and count_csv over processes gathers its partial counts itself (their label ids differ by
+/// process, so they are merged, not summed element-wise).
 ///
 /// Failures are agreed on, not aborted: after each phase every process calls `agree` with its
 /// failure (or none), which is itself a collective step, so a process that failed before a
