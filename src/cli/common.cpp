@@ -78,7 +78,7 @@ missing_values missing_of(const missing_arguments& args) {
 }
 
 csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>& columns, const data_plan& plan,
-                               std::vector<csv_family> families, unsigned threads) {
+                               std::vector<csv_family> families, unsigned threads, detail::process_group& group) {
   csv_count_request request;
   request.columns = columns;
   request.families = std::move(families);
@@ -94,7 +94,7 @@ csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>
       request.intervals.emplace(name, intervals);
     }
   }
-  auto counts = count_csv(input, request);
+  auto counts = count_csv(input, request, group);
   note_dropped(counts.dropped, counts.rows);
   for (const auto& table : counts.families) {
     std::uint64_t counted = 0;

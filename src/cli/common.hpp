@@ -58,9 +58,11 @@ dataset read_discrete_data(const std::filesystem::path& path, const std::vector<
 
 /// Counts `families` of the rest of `input`, reading `columns` as read_discrete_data would
 /// (the same checks, states and notes) but without holding the data in memory; notes each
-/// family counted over fewer rows than were read (missing values, policy available).
+/// family counted over fewer rows than were read (missing values, policy available). Over several
+/// processes (`group`), each counts a part of the file and process 0 alone gets the counts.
 csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>& columns, const data_plan& plan,
-                               std::vector<csv_family> families, unsigned threads);
+                               std::vector<csv_family> families, unsigned threads,
+                               detail::process_group& group = detail::lone_process());
 
 /// What --data and --in say about the input files they accept.
 inline constexpr const char* data_file_help = " ('-' reads standard input; a .csv.gz is read compressed)";

@@ -41,6 +41,7 @@ void run_experiment_command(const experiment_arguments& args) {
   options.experiment.repetitions = args.repetitions;
   options.experiment.threads = args.threads;
   options.experiment.automatic_lines = !args.no_automatic;
+  options.experiment.across_processes = true;  // under mpirun, the jobs are split over the processes
   options.experiment.prevention.metric =
       args.distance == "units" ? prevention_options::distance::units : prevention_options::distance::steps;
   // One bar per scenario, ended when its last repetition is done so that the next notes start a line.

@@ -14,6 +14,7 @@
 #include "cli/transfer_arguments.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/data/csv_counts.hpp"
+#include "pgm/detail/process_group.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/estimator_choice.hpp"
@@ -72,6 +73,9 @@ std::vector<csv_family> families_of(const network_structure& structure) {
 
 void run_fit(const fit_arguments& args) {
   require_extension(args.out, network_extensions);
+  if (args.data == "-" && detail::processes().size() > 1) {
+    throw error("--data -: standard input reaches one process only; under mpirun give a file every process can read");
+  }
   fit_options options;
   options.prior = prior_of({args.estimator, args.prior, args.alpha, args.ess});
   options.estimation.empty = args.empty == "fail" ? empty_configuration::fail : empty_configuration::uniform;
@@ -93,7 +97,8 @@ void run_fit(const fit_arguments& args) {
     csv_reader input(args.data);
     counted = count_discrete_data(
         input, columns, {raw_intervals ? &*raw_intervals : nullptr, &structure.variables(), missing_of(args.missing)},
-        families_of(structure), args.threads);
+        families_of(structure), args.threads, detail::processes());
+    if (detail::processes().rank() != 0) return;  // process 0 has the counts, fits and writes
   } else {
     const auto edges = parse_edge_list(args.edges);
     std::vector<std::string> columns;
@@ -123,7 +128,8 @@ void run_fit(const fit_arguments& args) {
     }
     counted = count_discrete_data(input, columns,
                                   {raw_intervals ? &*raw_intervals : nullptr, nullptr, missing_of(args.missing)},
-                                  std::move(families), args.threads);
+                                  std::move(families), args.threads, detail::processes());
+    if (detail::processes().rank() != 0) return;  // process 0 has the counts, fits and writes
     if (structure_error) std::rethrow_exception(structure_error);
     structure = network_structure(counted.variables, edges);
   }

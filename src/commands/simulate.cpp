@@ -9,6 +9,7 @@
 #include "cli/progress.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/data/csv.hpp"
+#include "pgm/detail/process_group.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task_lookup.hpp"
@@ -43,10 +44,12 @@ void run_simulate(const simulate_arguments& args) {
   options.rows = args.rows;
   options.seed = args.seed;
   options.threads = args.threads;
+  options.across_processes = true;  // under mpirun, each process simulates a block of rows
   progress_bar bar("simulating");
   options.progress = [&bar, rows = args.rows](std::size_t done) { bar.update(done, rows); };
   const auto data = sim::simulate(task, options);
   bar.finish();
+  if (detail::processes().rank() != 0) return;  // process 0 has the data and writes it
   write_csv(data, std::filesystem::path(args.out));
   const auto& success = data.discrete(task.success);
   std::size_t successes = 0;

@@ -4,6 +4,7 @@
 #include "pgm/data/csv_counts.hpp"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <numeric>
 #include <stdexcept>
@@ -501,6 +502,126 @@ csv_counts count_csv(csv_reader& input, const csv_count_request& request) {
       continue;
     }
     bytes.consume(consumed);
+  }
+  return counter.finish(total);
+}
+
+// ---- over processes -------------------------------------------------------------------
+
+namespace {
+
+/// The bytes of partial counts, for process 0 to add up (pgm::detail::byte_writer's form).
+[[nodiscard]] std::string to_bytes(const partial_impl& partial) {
+  detail::byte_writer out;
+  out.put<std::uint64_t>(partial.rows);
+  out.put<std::uint64_t>(partial.dropped);
+  out.put<std::uint64_t>(partial.lines);
+  for (std::size_t c = 0; c < partial.labels.size(); ++c) {
+    out.put<std::uint64_t>(partial.outside[c]);
+    out.put<std::uint64_t>(partial.labels[c].size());
+    for (const auto& entry : partial.labels[c].entries()) {
+      out.put(entry.text);
+      out.put(entry.first);
+    }
+  }
+  for (const auto& family : partial.families) {
+    out.put<std::uint8_t>(family.too_large ? 1 : 0);
+    out.put_all(std::span<const std::uint32_t>(family.cards));
+    out.put_all(std::span<const std::uint32_t>(family.strides));
+    out.put<std::uint64_t>(family.counts.size());
+    out.put_all(std::span<const std::uint64_t>(family.counts));
+  }
+  return out.take();
+}
+
+[[nodiscard]] partial_impl from_bytes(const counter_impl& plan, std::string_view bytes) {
+  auto partial = empty_partial(plan);
+  detail::byte_reader in(bytes);
+  partial.rows = in.get<std::uint64_t>();
+  partial.dropped = in.get<std::uint64_t>();
+  partial.lines = in.get<std::uint64_t>();
+  for (std::size_t c = 0; c < partial.labels.size(); ++c) {
+    partial.outside[c] = in.get<std::uint64_t>();
+    detail::label_dictionary labels;  // a known column's states come again, in their order
+    for (auto n = in.get<std::uint64_t>(); n > 0; --n) {
+      auto text = in.get_string();
+      labels.add(text, in.get<detail::csv_place>());
+    }
+    partial.labels[c] = std::move(labels);
+  }
+  for (auto& family : partial.families) {
+    family.too_large = in.get<std::uint8_t>() != 0;
+    in.get_all(std::span<std::uint32_t>(family.cards));
+    in.get_all(std::span<std::uint32_t>(family.strides));
+    family.counts.resize(in.get<std::uint64_t>());
+    in.get_all(std::span<std::uint64_t>(family.counts));
+  }
+  if (!in.at_end()) throw std::logic_error("partial counts from another process do not fit their counter");
+  return partial;
+}
+
+/// The start of the record that holds byte `at` of `text`, or the next one: `at` itself when
+/// a line ends just before it.
+[[nodiscard]] std::size_t record_start(std::string_view text, std::size_t at) {
+  if (at == 0 || at >= text.size()) return std::min(at, text.size());
+  const auto end = text.find('\n', at - 1);
+  return end == std::string_view::npos ? text.size() : end + 1;
+}
+
+}  // namespace
+
+csv_counts count_csv(csv_reader& input, const csv_count_request& request, detail::process_group& group) {
+  if (group.size() == 1) return count_csv(input, request);
+  auto& reader = detail::csv_access::of(input);
+  const csv_counter counter(reader.source, reader.header, request, reader.delimiter);
+  const auto& plan = detail::csv_access::of(counter);
+  auto& bytes = *reader.bytes;
+  const std::size_t ranks = group.size();
+  const std::size_t rank = group.rank();
+
+  // This process's byte range, its line ends and whether it holds a quote, made known to all
+  // by one sum: slot r holds rank r's line ends, the last slot the ranks that cannot split.
+  bytes.fetch(0);
+  const bool whole = bytes.at_end();
+  const auto text = whole ? bytes.available() : std::string_view();
+  const auto raw = detail::process_share{rank, ranks}.of(text.size());
+  const std::string_view mine =
+      text.substr(record_start(text, raw.begin), record_start(text, raw.end) - record_start(text, raw.begin));
+  std::vector<std::uint64_t> facts(ranks + 1, 0);
+  facts[rank] = static_cast<std::uint64_t>(std::count(mine.begin(), mine.end(), '\n'));
+  facts[ranks] = !whole || mine.find('"') != std::string_view::npos ? 1 : 0;
+  detail::sum_over_processes(group, facts);
+  const bool split = facts[ranks] == 0;
+
+  csv_partial_counts partial;
+  std::exception_ptr failure;
+  std::size_t failed_at = 0;
+  try {
+    if (split) {
+      std::size_t first_line = reader.first_line;
+      for (std::size_t r = 0; r < rank; ++r) first_line += facts[r];
+      failed_at = raw.begin;
+      partial = counter.count(mine, first_line);
+    } else if (rank == 0) {
+      return count_csv(input, request);
+    }
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  if (!split) {
+    // Process 0 counted alone; its failure, if any, is met at the program's end.
+    if (failure) std::rethrow_exception(failure);
+    return {};
+  }
+  detail::agree(group, failure, failed_at);
+  const auto parts = group.gather(to_bytes(detail::csv_access::of(partial)));
+  if (rank != 0) return {};
+  csv_partial_counts total;
+  auto& sum = detail::csv_access::of(total);
+  sum = empty_partial(plan);
+  for (const auto& part : parts) {
+    auto theirs = from_bytes(plan, part);
+    merge(plan, sum, theirs, nullptr);
   }
   return counter.finish(total);
 }

@@ -17,6 +17,7 @@
 #include "pgm/data/discretizer.hpp"
 #include "support/folder_test.hpp"
 #include "support/random_csv.hpp"
+#include "support/thread_processes.hpp"
 
 namespace pgm {
 namespace {
@@ -282,6 +283,41 @@ TEST_F(csv_input_test, corrupt_and_truncated_gzip_are_errors_naming_the_file) {
   write_gzip(path("two.gz"), "3,4\n");
   std::ofstream(path("both.csv.gz"), std::ios::binary) << slurp(path("one.gz")) << slurp(path("two.gz"));
   EXPECT_EQ(read_csv(path("both.csv.gz")).rows(), 2u);
+}
+
+// ---- over processes (threads play them) --------------------------------------------------
+
+TEST(csv_counts_test, counts_over_processes_equal_one_process) {
+  for (bool quotes : {false, true}) {  // with quotes process 0 counts alone
+    const auto csv = testing::make_random_csv(21, {.rows = 400, .quotes = quotes});
+    const auto data = parse_csv(csv.text, "r.csv", discrete_options());
+    for (std::size_t ranks = 1; ranks <= 6; ++ranks) {
+      std::vector<csv_counts> results(ranks);
+      testing::run_group(ranks, [&](detail::process_group& group) {
+        csv_reader input(csv.text, "r.csv");
+        results[group.rank()] = count_csv(input, request_for(random_families, 1, 64), group);
+      });
+      const std::string context = std::to_string(ranks) + " processes, quotes " + std::to_string(quotes);
+      expect_counts_of(results[0], data, random_families, context);
+      csv_reader input(csv.text, "r.csv");
+      const auto alone = count_csv(input, request_for(random_families));
+      EXPECT_EQ(results[0].variables, alone.variables) << context;
+      for (std::size_t r = 1; r < ranks; ++r) EXPECT_EQ(results[r].rows, 0U) << "only process 0 gets the counts";
+    }
+  }
+}
+
+TEST(csv_counts_test, a_bad_record_over_processes_is_reported_by_every_process_with_its_line) {
+  std::string text = "a,b\n";
+  for (int row = 0; row < 200; ++row) text += row == 150 ? "1\n" : std::to_string(row % 3) + ",x\n";
+  csv_count_request request;
+  request.columns = {"a", "b"};
+  request.families = {{"a", {"b"}}};
+  const auto outcomes = testing::run_group(4, [&](detail::process_group& group) {
+    csv_reader input(text, "bad.csv");
+    static_cast<void>(count_csv(input, request, group));
+  });
+  for (const auto& o : outcomes) EXPECT_THAT(o.message, HasSubstr("bad.csv:152:")) << o.message;
 }
 
 }  // namespace

@@ -24,6 +24,7 @@
 #include "pgm/core/variable.hpp"
 #include "pgm/data/csv.hpp"
 #include "pgm/data/missing.hpp"
+#include "pgm/detail/process_group.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
@@ -106,6 +107,15 @@ class csv_reader {
 /// Reads the rest of `input` and counts the requested families. Errors are those `read_csv`
 /// reports for the same columns (file:line:column), plus "no data rows" for an empty body.
 [[nodiscard]] csv_counts count_csv(csv_reader& input, const csv_count_request& request);
+
+/// As above, with the records split over the processes of `group` (pgm::detail::processes()
+/// under mpirun), every one of which opened the same file: each counts its own byte range, cut
+/// at line ends, and process 0 adds up the partial counts in file order and returns the same
+/// counts as one process would; the others return empty counts. Input that is not all in
+/// memory (standard input, compressed data) or that holds quotes (a quoted field may span
+/// lines) is counted whole by process 0. A failure is agreed on by all processes
+/// (pgm::detail::agree): the first in the file wins.
+[[nodiscard]] csv_counts count_csv(csv_reader& input, const csv_count_request& request, detail::process_group& group);
 
 /// Counts of some of a file's records, over provisional ids: add up those of one counter with
 /// `+=` (in any order) and turn them into tables with csv_counter::finish. They refer to their

@@ -15,29 +15,34 @@
 /// threads.
 ///
 /// Processes (the scale-out issue): `process_share` names the contiguous block of every job's
-/// items that this process runs; today one process owns them all. Under MPI, rank r of R will
-/// run only [n·r/R, n·(r+1)/R) with its threads; results in item slots are then gathered to rank
-/// 0 in item order, per-worker sums (count tables) are summed over ranks by one reduction, and
-/// the failure rethrown is the one at the lowest item over all ranks (a reduction of the failing
-/// index), so every rank reports the same message. Items keep their global indices on every
-/// rank, which is why seeds and slots never depend on how the work was split. Those steps belong
-/// here and nowhere else.
+/// items that this process runs; by default one process owns them all. `parallel_for_on` runs a
+/// job over a process group (pgm/detail/process_group.hpp): rank r of R runs only
+/// [n·r/R, n·(r+1)/R) with its threads, and the failure rethrown on every rank is the one at the
+/// lowest item over all ranks (a reduction of the failing index), so every rank reports the same
+/// message. Results in item slots are then gathered to rank 0 in item order (`gather_slots`) and
+/// integer sums (count tables) are summed over ranks by one reduction (`sum_over_processes`).
+/// Items keep their global indices on every rank, which is why seeds and slots never depend on
+/// how the work was split. Those steps belong here and nowhere else.
 
 #include <algorithm>
 #include <atomic>
 #include <concepts>
 #include <cstddef>
+#include <cstdint>
 #include <exception>
 #include <functional>
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <span>
+#include <stdexcept>
 #include <thread>
 #include <type_traits>
 #include <utility>
 #include <vector>
 
 #include "pgm/core/assert.hpp"
+#include "pgm/detail/process_group.hpp"
 
 namespace pgm::detail {
 
@@ -180,6 +185,79 @@ void parallel_for(std::size_t n, const parallel_options& options, Body&& body) {
   struct no_state {};
   static_cast<void>(parallel_for(
       n, options, [] { return no_state{}; }, [&body](no_state&, item_range items) { body(items); }));
+}
+
+/// Runs a job over the processes of `group`: this process runs its share of [0, n) (rank r of
+/// R: [n·r/R, n·(r+1)/R)) as parallel_for does, then every process agrees on the failure (see
+/// pgm::detail::agree): the lowest failing item over all processes is rethrown on every one.
+/// Returns this process's states. `options.share` is replaced.
+template <StateFactory MakeState, ChunkBody<state_of<MakeState>> Body>
+[[nodiscard]] std::vector<state_of<MakeState>> parallel_for_on(process_group& group, std::size_t n,
+                                                               parallel_options options, MakeState&& make_state,
+                                                               Body&& body) {
+  options.share = {group.rank(), group.size()};
+  std::atomic<std::size_t> failed_at{std::numeric_limits<std::size_t>::max()};
+  std::vector<state_of<MakeState>> states;
+  std::exception_ptr failure;
+  try {
+    states = parallel_for(n, options, std::forward<MakeState>(make_state),
+                          [&](state_of<MakeState>& state, item_range items) {
+                            try {
+                              body(state, items);
+                            } catch (...) {
+                              std::size_t seen = failed_at.load();
+                              while (items.begin < seen && !failed_at.compare_exchange_weak(seen, items.begin)) {
+                              }
+                              throw;
+                            }
+                          });
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  // A failure outside the body (a state's construction, progress) counts at the share's start.
+  const std::size_t item =
+      failed_at.load() == std::numeric_limits<std::size_t>::max() ? options.share.of(n).begin : failed_at.load();
+  agree(group, failure, item);
+  return states;
+}
+
+/// As above with no per-thread state.
+template <std::invocable<item_range> Body>
+void parallel_for_on(process_group& group, std::size_t n, const parallel_options& options, Body&& body) {
+  struct no_state {};
+  static_cast<void>(parallel_for_on(
+      group, n, options, [] { return no_state{}; }, [&body](no_state&, item_range items) { body(items); }));
+}
+
+/// Collective: brings the slots [0, n) that each process filled for its share of a job
+/// (parallel_for_on with the same n) to process 0, in item order. `write(writer, item)` puts
+/// one slot's value into a byte_writer and `read(reader, item)` takes it back on process 0.
+/// Like every collective step here it starts with an agreement (see agree), so a process that
+/// failed before meets the others there.
+template <class Write, class Read>
+requires std::invocable<Write&, byte_writer&, std::size_t> && std::invocable<Read&, byte_reader&, std::size_t>
+void gather_slots(process_group& group, std::size_t n, Write&& write, Read&& read) {
+  if (group.size() == 1) return;
+  agree(group, nullptr);
+  const process_share mine{group.rank(), group.size()};
+  byte_writer writer;
+  const auto owned = mine.of(n);
+  for (std::size_t item = owned.begin; item < owned.end; ++item) write(writer, item);
+  const auto parts = group.gather(writer.take());
+  for (std::size_t r = 1; r < parts.size(); ++r) {
+    byte_reader reader(parts[r]);
+    const auto theirs = process_share{r, group.size()}.of(n);
+    for (std::size_t item = theirs.begin; item < theirs.end; ++item) read(reader, item);
+    if (!reader.at_end()) throw std::logic_error("a process sent more than its share of a job");
+  }
+}
+
+/// Collective: replaces `values` with their sum over all processes (count tables), after an
+/// agreement that no process failed.
+inline void sum_over_processes(process_group& group, std::span<std::uint64_t> values) {
+  if (group.size() == 1) return;
+  agree(group, nullptr);
+  group.sum(values);
 }
 
 }  // namespace pgm::detail

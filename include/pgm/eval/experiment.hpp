@@ -12,12 +12,19 @@
 /// D_GroundTruth as all rows minus D. Every repetition is seeded by its coordinates and
 /// writes its own slot of the results (pgm/detail/parallel_for.hpp spreads them over
 /// threads), so the results are the same for any number of threads.
+///
+/// With `across_processes` the (target, repetition) jobs are split over the processes pgm runs
+/// in (several under mpirun): each prepares only the targets its block of jobs needs (their
+/// data simulated or read there), and process 0 gathers the points in job order, with the
+/// notes of the targets it did not prepare; the others return none. The points are the same
+/// for any number of processes.
 
 #include <cmath>
 #include <cstdint>
 #include <functional>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <random>
 #include <set>
 #include <string>
@@ -61,6 +68,8 @@ struct experiment_options {
   prevention_options prevention;
   std::function<void(std::size_t done, std::size_t total)> progress;
   std::function<void(const std::string&)> note;
+  /// Split the jobs over pgm::detail::processes() (see the file comment).
+  bool across_processes = false;
 };
 
 /// One measured value: a row of the tidy result table.
@@ -76,6 +85,9 @@ struct experiment_point {
 };
 
 namespace detail {
+
+/// Thrown to skip the preparation of a process that has no jobs.
+struct nothing_to_prepare {};
 
 [[nodiscard]] inline std::uint64_t seed_of(std::string_view text) {
   std::uint64_t h = 1469598103934665603ULL;
@@ -108,88 +120,121 @@ struct prepared_target {
 /// Runs the protocol; the points come in a fixed order (target, repetition, |D|, line, metric).
 [[nodiscard]] inline std::vector<experiment_point> run_experiment(const scenario& s, const task_source& source,
                                                                   const experiment_options& options = {}) {
-  auto note = [&](const std::string& text) {
-    if (options.note) options.note(s.name + ": " + text);
-  };
+  auto& group = options.across_processes ? detail::processes() : detail::lone_process();
   const std::size_t repetitions = options.repetitions ? options.repetitions : s.repetitions;
+  const std::size_t total = s.targets.size() * repetitions;
+  const auto share = detail::process_share{group.rank(), group.size()}.of(total);
+  // Over several processes a target's notes wait for the gather, to come out in target order
+  // on process 0 (slot 0: the prior's; t + 1: target t's).
+  std::vector<std::vector<std::string>> held(s.targets.size() + 1);
+  std::size_t noting = 0;
+  auto note = [&](const std::string& text) {
+    if (group.size() > 1 && noting > 0) {
+      held[noting].push_back(s.name + ": " + text);
+    } else if (options.note) {
+      options.note(s.name + ": " + text);
+    }
+  };
   auto prevention = options.prevention;
   prevention.epsilon = s.epsilon;
   const auto base_seed = detail::mix_seed(options.seed, 0);
 
-  // The prior: fitted once, by MLE, on D′.
-  const auto prior_facts = source.facts(s.prior_task, s.prior_node);
-  const auto prior_family =
-      read_family(source.data(s.prior_task, s.prior_rows, detail::mix_seed(base_seed, detail::seed_of(s.prior_task))),
-                  s.prior_node, prior_facts.parents, s.bins, prior_facts.tags);
-  for (const auto& n : prior_family.notes) note("prior: " + n);
-  const auto prior_network = prior_family.fit_all();
-  const auto map = parse_correspondence(s.map);
+  // Preparation, agreed on by all processes before any job runs: a failure is that of the first
+  // job of the first target that fails (the prior's counts as job 0), as on one process.
+  std::vector<std::optional<detail::prepared_target>> targets(s.targets.size());
+  std::exception_ptr failure;
+  std::size_t failed_job = 0;
+  try {
+    if (share.empty() && group.rank() != 0) throw detail::nothing_to_prepare{};
+    // The prior: fitted once, by MLE, on D′.
+    const auto prior_facts = source.facts(s.prior_task, s.prior_node);
+    const auto prior_family =
+        read_family(source.data(s.prior_task, s.prior_rows, detail::mix_seed(base_seed, detail::seed_of(s.prior_task))),
+                    s.prior_node, prior_facts.parents, s.bins, prior_facts.tags);
+    for (const auto& n : prior_family.notes) note("prior: " + n);
+    const auto prior_network = prior_family.fit_all();
+    const auto map = parse_correspondence(s.map);
 
-  std::vector<detail::prepared_target> targets;
-  for (const auto& t : s.targets) {
-    const auto facts = source.facts(t.task, s.target_node);
-    detail::prepared_target target{t.task,
-                                   read_family(source.data(t.task, t.train_rows + t.ground_truth_rows,
-                                                           detail::mix_seed(base_seed, detail::seed_of(t.task))),
-                                               s.target_node, facts.parents, s.bins, facts.tags),
-                                   t.train_rows,
-                                   nullptr,
-                                   0,
-                                   {},
-                                   {}};
-    for (const auto& n : target.family.notes) note(t.task + ": " + n);
-    const auto& parents = target.family.parents;
-    target.controllable = std::make_unique<bool[]>(parents.size());
-    for (std::size_t p = 0; p < parents.size(); ++p)
-      target.controllable[p] = facts.controllable.contains(parents[p].name());
-    target.success_state = target.family.child.state("1").value();
-    const auto structure = target.family.structure();
-    for (const auto& strategy : s.strategies) {
-      auto priors = transfer_priors(prior_network, structure, map, transfer_registry::instance().at(strategy));
-      target.priors.emplace(strategy, std::move(priors.at(s.target_node)));
-    }
-    if (options.automatic_lines) {
-      // The proposed map, with the scenario's last strategy (its best in the paper).
-      try {
-        correspondence pinned;
-        pinned.pinned = map.pinned;
-        pinned.transferred = map.transferred;
-        const auto proposal =
-            propose_correspondence({&structure, nullptr}, {&prior_network.structure(), &prior_network}, pinned);
-        note(t.task + ": proposed map " + to_string(proposal) +
-             (to_string(proposal) == to_string(map) ? " (the scenario's)" : " (the scenario's: " + s.map + ")"));
-        auto priors =
-            transfer_priors(prior_network, structure, proposal, transfer_registry::instance().at(s.strategies.back()));
-        target.priors.emplace(s.strategies.back() + "+auto-map", std::move(priors.at(s.target_node)));
-      } catch (const error& e) {
-        note(t.task + ": no line for the proposed map: " + e.what());
+    // Only the targets of this process's jobs.
+    const std::size_t first_target = share.empty() ? 0 : share.begin / repetitions;
+    const std::size_t end_target = share.empty() ? 0 : (share.end - 1) / repetitions + 1;
+    for (std::size_t index = first_target; index < end_target; ++index) {
+      const auto& t = s.targets[index];
+      failed_job = index * repetitions;
+      noting = index + 1;
+      const auto facts = source.facts(t.task, s.target_node);
+      detail::prepared_target target{t.task,
+                                     read_family(source.data(t.task, t.train_rows + t.ground_truth_rows,
+                                                             detail::mix_seed(base_seed, detail::seed_of(t.task))),
+                                                 s.target_node, facts.parents, s.bins, facts.tags),
+                                     t.train_rows,
+                                     nullptr,
+                                     0,
+                                     {},
+                                     {}};
+      for (const auto& n : target.family.notes) note(t.task + ": " + n);
+      const auto& parents = target.family.parents;
+      target.controllable = std::make_unique<bool[]>(parents.size());
+      for (std::size_t p = 0; p < parents.size(); ++p)
+        target.controllable[p] = facts.controllable.contains(parents[p].name());
+      target.success_state = target.family.child.state("1").value();
+      const auto structure = target.family.structure();
+      for (const auto& strategy : s.strategies) {
+        auto priors = transfer_priors(prior_network, structure, map, transfer_registry::instance().at(strategy));
+        target.priors.emplace(strategy, std::move(priors.at(s.target_node)));
       }
-    }
-    target.lines.push_back({"mle", "0", nullptr, 0, false});
-    double smallest_weight = INFINITY;
-    for (double w : s.weights) {
-      if (w > 0) smallest_weight = std::min(smallest_weight, w);
-    }
-    for (const auto& [name, prior] : target.priors) {
-      const bool auto_map = name.find("+auto-map") != std::string::npos;
+      if (options.automatic_lines) {
+        // The proposed map, with the scenario's last strategy (its best in the paper).
+        try {
+          correspondence pinned;
+          pinned.pinned = map.pinned;
+          pinned.transferred = map.transferred;
+          const auto proposal =
+              propose_correspondence({&structure, nullptr}, {&prior_network.structure(), &prior_network}, pinned);
+          note(t.task + ": proposed map " + to_string(proposal) +
+               (to_string(proposal) == to_string(map) ? " (the scenario's)" : " (the scenario's: " + s.map + ")"));
+          auto priors = transfer_priors(prior_network, structure, proposal,
+                                        transfer_registry::instance().at(s.strategies.back()));
+          target.priors.emplace(s.strategies.back() + "+auto-map", std::move(priors.at(s.target_node)));
+        } catch (const error& e) {
+          note(t.task + ": no line for the proposed map: " + e.what());
+        }
+      }
+      target.lines.push_back({"mle", "0", nullptr, 0, false});
+      double smallest_weight = INFINITY;
       for (double w : s.weights) {
-        // The proposed map at the smallest weight only, to keep the plots readable.
-        if (w == 0 || (auto_map && w != smallest_weight)) continue;
-        target.lines.push_back({name, detail::format_short(w), &prior.table(), w, false});
+        if (w > 0) smallest_weight = std::min(smallest_weight, w);
       }
-      if (options.automatic_lines && !auto_map) target.lines.push_back({name, "auto", &prior.table(), 0, true});
+      for (const auto& [name, prior] : target.priors) {
+        const bool auto_map = name.find("+auto-map") != std::string::npos;
+        for (double w : s.weights) {
+          // The proposed map at the smallest weight only, to keep the plots readable.
+          if (w == 0 || (auto_map && w != smallest_weight)) continue;
+          target.lines.push_back({name, detail::format_short(w), &prior.table(), w, false});
+        }
+        if (options.automatic_lines && !auto_map) target.lines.push_back({name, "auto", &prior.table(), 0, true});
+      }
+      targets[index].emplace(std::move(target));
     }
-    targets.push_back(std::move(target));
+  } catch (const detail::nothing_to_prepare&) {
+  } catch (...) {
+    failure = std::current_exception();
   }
+  noting = 0;
+  detail::agree(group, failure, failed_job);
 
   // One task per (target, repetition); results land in their own slot, so order is fixed.
-  const std::size_t total = targets.size() * repetitions;
   std::vector<std::vector<experiment_point>> results(total);
   detail::parallel_options parallel{.threads = options.threads};
-  if (options.progress) parallel.progress = [&](std::size_t done) { options.progress(done, total); };
-  detail::parallel_for(total, parallel, [&](detail::item_range jobs) {
+  if (options.progress) {
+    // This process's block stands for the whole.
+    parallel.progress = [&](std::size_t done) {
+      options.progress(done == share.size() ? total : done * total / share.size(), total);
+    };
+  }
+  detail::parallel_for_on(group, total, parallel, [&](detail::item_range jobs) {
     for (std::size_t job = jobs.begin; job < jobs.end; ++job) {
-      const auto& target = targets[job / repetitions];
+      const auto& target = *targets[job / repetitions];
       const std::size_t rep = job % repetitions;
       auto& out = results[job];
       std::mt19937_64 random(
@@ -245,7 +290,44 @@ struct prepared_target {
       }
     }
   });
+  // The first job of a target carries the target's notes to process 0.
+  detail::gather_slots(
+      group, total,
+      [&](detail::byte_writer& out, std::size_t job) {
+        const auto& notes = held[job / repetitions + 1];
+        out.put<std::uint64_t>(job % repetitions == 0 ? notes.size() : 0);
+        if (job % repetitions == 0) {
+          for (const auto& n : notes) out.put(n);
+        }
+        out.put<std::uint64_t>(results[job].size());
+        for (const auto& p : results[job]) {
+          for (const auto* text : {&p.scenario, &p.target, &p.strategy, &p.weight}) out.put(*text);
+          out.put<std::uint64_t>(p.rows);
+          out.put<std::uint64_t>(p.repetition);
+          out.put(p.metric);
+          out.put(p.value);
+        }
+      },
+      [&](detail::byte_reader& in, std::size_t job) {
+        auto& notes = held[job / repetitions + 1];
+        for (auto n = in.get<std::uint64_t>(); n > 0; --n) notes.push_back(in.get_string());
+        auto& out = results[job];
+        out.resize(in.get<std::uint64_t>());
+        for (auto& p : out) {
+          for (auto* text : {&p.scenario, &p.target, &p.strategy, &p.weight}) *text = in.get_string();
+          p.rows = in.get<std::uint64_t>();
+          p.repetition = in.get<std::uint64_t>();
+          p.metric = in.get_string();
+          p.value = in.get<double>();
+        }
+      });
   std::vector<experiment_point> points;
+  if (group.rank() != 0) return points;
+  if (group.size() > 1 && options.note) {
+    for (std::size_t slot = 1; slot < held.size(); ++slot) {
+      for (const auto& text : held[slot]) options.note(text);
+    }
+  }
   for (auto& r : results)
     points.insert(points.end(), std::make_move_iterator(r.begin()), std::make_move_iterator(r.end()));
   return points;

@@ -8,10 +8,12 @@
 #include <cstddef>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/detail/process_group.hpp"
 #include "pgm/eval/experiment.hpp"
 #include "pgm/eval/report_writer.hpp"
 #include "pgm/eval/scenario.hpp"
@@ -45,9 +47,15 @@ struct run_scenarios_options {
 
 /// Runs the scenarios in order into `folder`. The folder is checked before any work and made
 /// once the first scenario is done; an error in a scenario is prefixed with its file.
+/// With `experiment.across_processes`, the jobs are split over the processes and process 0
+/// alone writes (the others return empty report_files).
 inline report_files run_scenarios(const std::vector<scenario>& scenarios, const task_source& source,
                                   const std::filesystem::path& folder, const run_scenarios_options& options = {}) {
-  report_writer writer(folder, {options.render_plots, options.note, options.headline});
+  auto& group = options.experiment.across_processes ? detail::processes() : detail::lone_process();
+  std::optional<report_writer> writer;
+  detail::run_agreed(group, [&] {
+    if (group.rank() == 0) writer.emplace(folder, report_options{options.render_plots, options.note, options.headline});
+  });
   auto experiment = options.experiment;
   experiment.note = options.note;
   for (const auto& s : scenarios) {
@@ -55,9 +63,10 @@ inline report_files run_scenarios(const std::vector<scenario>& scenarios, const 
     if (options.progress) {
       experiment.progress = [&](std::size_t done, std::size_t total) { options.progress(s, done, total); };
     }
-    writer.add(s, run_scenario(s, source, experiment));
+    auto points = run_scenario(s, source, experiment);
+    if (writer) writer->add(s, std::move(points));
   }
-  return writer.finish();
+  return writer ? writer->finish() : report_files{};
 }
 
 }  // namespace pgm

@@ -4,7 +4,9 @@
 /// from the task's distributions, lets a Simulator compute the outcomes, and assembles the
 /// columns. Experiment i always uses the streams keyed by (seed, i) and writes row i, and rows
 /// are spread over threads in chunks (pgm/detail/parallel_for.hpp), so the result is
-/// byte-identical for any thread count.
+/// byte-identical for any thread count. With `across_processes`, each process runs its block of
+/// rows and process 0 gathers them (pgm::detail::parallel_for_on, gather_slots): the same data
+/// for any number of processes.
 
 #include <algorithm>
 #include <cstdint>
@@ -43,8 +45,16 @@ template <Simulator S>
   };
   pgm::detail::parallel_options parallel{.threads = options.threads, .chunk = chunk};
   parallel.progress = options.progress;
-  static_cast<void>(pgm::detail::parallel_for(
-      rows, parallel,
+  auto& group = options.across_processes ? pgm::detail::processes() : pgm::detail::lone_process();
+  if (options.progress && group.size() > 1) {
+    // This process's share stands for the whole: its progress, scaled to all rows.
+    const auto share = pgm::detail::process_share{group.rank(), group.size()}.of(rows).size();
+    parallel.progress = [&options, share, rows](std::size_t done) {
+      options.progress(done == share ? rows : share ? done * rows / share : rows);
+    };
+  }
+  static_cast<void>(pgm::detail::parallel_for_on(
+      group, rows, parallel,
       [&] {
         return worker{std::make_unique<S>(task), std::vector<double>(width)};
       },
@@ -56,6 +66,16 @@ template <Simulator S>
           for (std::size_t k = 0; k < width; ++k) columns[k][row] = w.values[k];
         }
       }));
+  pgm::detail::gather_slots(
+      group, rows,
+      [&](pgm::detail::byte_writer& out, std::size_t row) {
+        for (std::size_t k = 0; k < width; ++k) out.put(columns[k][row]);
+      },
+      [&](pgm::detail::byte_reader& in, std::size_t row) {
+        for (std::size_t k = 0; k < width; ++k) columns[k][row] = in.get<double>();
+      });
+  const std::size_t kept = group.rank() == 0 ? rows : 0;
+  for (auto& column : columns) column.resize(kept);
 
   dataset result(task.name + " (" + std::string(S::name) + ", seed " + std::to_string(options.seed) + ")");
   for (std::size_t k = 0; k < width; ++k) {
@@ -63,8 +83,8 @@ template <Simulator S>
     if (v.kind == variable_kind::continuous) {
       result.add(continuous_column(v.name, std::move(columns[k]), v.tags));
     } else {
-      std::vector<std::uint32_t> codes(rows);
-      for (std::size_t row = 0; row < rows; ++row) codes[row] = static_cast<std::uint32_t>(columns[k][row]);
+      std::vector<std::uint32_t> codes(kept);
+      for (std::size_t row = 0; row < kept; ++row) codes[row] = static_cast<std::uint32_t>(columns[k][row]);
       result.add(discrete_column(v.as_variable(), codes));
     }
   }
