@@ -66,12 +66,12 @@ def test_reading_errors_name_the_file_and_place(tmp_path):
     (tmp_path / "bad.bif").write_text("network x {\n}\nvariable a {\n  type discrete [ 3 ] { 0, 1 };\n}\n")
     with pytest.raises(pgm.Error, match=r"bad\.bif:4:\d+"):
         pgm.read_network(tmp_path / "bad.bif")
-    with pytest.raises(pgm.Error, match=r"expected a \.bif or \.json file"):
+    with pytest.raises(pgm.Error, match=r"expected one of \.bif, \.xml"):
         pgm.read_network(tmp_path / "net.txt")
 
 
 def test_writing_needs_a_known_extension(tmp_path):
-    with pytest.raises(pgm.Error, match=r"expected a \.bif or \.json file"):
+    with pytest.raises(pgm.Error, match=r"expected one of \.bif, \.xml"):
         pgm.read_network(SACHS).write(tmp_path / "net.txt")
     assert not (tmp_path / "net.txt").exists()
 

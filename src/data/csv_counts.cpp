@@ -382,7 +382,16 @@ csv_partial_counts& csv_partial_counts::operator+=(csv_partial_counts&& other) {
 csv_counts csv_counter::finish(const csv_partial_counts& counts) const {
   const auto& plan = *impl_;
   const auto& partial = detail::csv_access::of(counts);
-  if (partial.rows == 0) throw data_error(plan.source + ": there are no data rows after the header");
+  // A header alone is zero rows of data when every column's states are known (a model gives
+  // them): the tables are then their priors. Without rows, states found in data are unknown.
+  if (partial.rows == 0) {
+    for (const auto& column : plan.columns) {
+      if (column.mode == count_mode::labels) {
+        throw data_error(plan.source + ": there are no data rows after the header, so the states of '" + column.name +
+                         "' are unknown (a model that lists them, e.g. fit --model, allows a header alone)");
+      }
+    }
+  }
   csv_counts result;
   result.rows = partial.rows;
   // Each column's variable and the state of each provisional id.
