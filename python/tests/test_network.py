@@ -41,9 +41,9 @@ def test_a_root_table_has_one_row():
     assert len(table) == 1
 
 
-def test_write_and_read_back_both_formats(tmp_path):
+def test_write_and_read_back_every_format(tmp_path):
     net = pgm.read_network(SACHS)
-    for name in ("sachs.json", "sachs.bif"):
+    for name in ("sachs.json", "sachs.bif", "sachs.xml", "sachs.net"):
         net.write(tmp_path / name)
         assert_same_network(pgm.read_network(tmp_path / name), net)
 

@@ -5,11 +5,13 @@
 /// column may sum to 0.9999 or 1.0001: within `tolerance` it is divided by its sum (and a note
 /// says how many columns were), beyond it the file is refused.
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <optional>
 #include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "pgm/core/cpt.hpp"
