@@ -66,6 +66,7 @@ int main(int argc, char** argv) {
   pgm::cli::add_discretize_command(app);
   pgm::cli::add_fit_command(app);
   pgm::cli::add_show_command(app);
+  pgm::cli::add_convert_command(app);
   pgm::cli::add_transfer_command(app);
   pgm::cli::add_correspond_command(app);
   pgm::cli::add_learn_structure_command(app);

@@ -94,7 +94,7 @@ class Network:
         return pd.DataFrame(columns)
 
     def write(self, path):
-        """Writes the network as .bif or .json (by the extension), atomically."""
+        """Writes the network as .bif, .xml (XMLBIF), .net (Hugin) or .json (by the extension), atomically."""
         self._net.write(os.fspath(path))
 
     def to_pgmpy(self):
@@ -111,7 +111,7 @@ class Network:
 
 
 def read_network(path):
-    """Reads a network from a .bif or .json file, as the `pgm` program does."""
+    """Reads a network from a .bif, .xml (XMLBIF), .net (Hugin) or .json file, as the `pgm` program does."""
     return Network(_core.read_network(os.fspath(path)))
 
 

@@ -41,9 +41,9 @@ def test_a_root_table_has_one_row():
     assert len(table) == 1
 
 
-def test_write_and_read_back_both_formats(tmp_path):
+def test_write_and_read_back_every_format(tmp_path):
     net = pgm.read_network(SACHS)
-    for name in ("sachs.json", "sachs.bif"):
+    for name in ("sachs.json", "sachs.bif", "sachs.xml", "sachs.net"):
         net.write(tmp_path / name)
         assert_same_network(pgm.read_network(tmp_path / name), net)
 
@@ -66,12 +66,12 @@ def test_reading_errors_name_the_file_and_place(tmp_path):
     (tmp_path / "bad.bif").write_text("network x {\n}\nvariable a {\n  type discrete [ 3 ] { 0, 1 };\n}\n")
     with pytest.raises(pgm.Error, match=r"bad\.bif:4:\d+"):
         pgm.read_network(tmp_path / "bad.bif")
-    with pytest.raises(pgm.Error, match=r"expected a \.bif or \.json file"):
+    with pytest.raises(pgm.Error, match=r"expected one of \.bif, \.xml"):
         pgm.read_network(tmp_path / "net.txt")
 
 
 def test_writing_needs_a_known_extension(tmp_path):
-    with pytest.raises(pgm.Error, match=r"expected a \.bif or \.json file"):
+    with pytest.raises(pgm.Error, match=r"expected one of \.bif, \.xml"):
         pgm.read_network(SACHS).write(tmp_path / "net.txt")
     assert not (tmp_path / "net.txt").exists()
 

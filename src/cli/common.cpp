@@ -9,6 +9,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/data/csv.hpp"
 #include "pgm/detail/text.hpp"
+#include "pgm/io/network_file.hpp"
 
 namespace pgm::cli {
 
@@ -26,6 +27,22 @@ void require_extension(const std::filesystem::path& path, const std::vector<std:
     if (extension == allowed) return;
   }
   throw io_error("'" + path.string() + "': expected a file ending in " + detail::join(extensions, " or "));
+}
+
+void require_network_extension(const std::filesystem::path& path) { static_cast<void>(format_of(path)); }
+
+model_document read_model_file(const std::filesystem::path& path) {
+  std::vector<std::string> notes;
+  auto document = read_model(path, {.notes = &notes});
+  for (const auto& line : notes) note(line);
+  return document;
+}
+
+bayesian_network read_network_file(const std::filesystem::path& path) {
+  std::vector<std::string> notes;
+  auto network = read_network(path, {.notes = &notes});
+  for (const auto& line : notes) note(line);
+  return network;
 }
 
 namespace {

@@ -15,6 +15,7 @@
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/discretizer.hpp"
 #include "pgm/data/missing.hpp"
+#include "pgm/io/json_model.hpp"
 
 namespace pgm::cli {
 
@@ -67,8 +68,15 @@ csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>
 /// What --data and --in say about the input files they accept.
 inline constexpr const char* data_file_help = " ('-' reads standard input; a .csv.gz is read compressed)";
 
-/// Network files are .bif or .json.
-inline const std::vector<std::string> network_extensions{".bif", ".json"};
+/// Throws io_error, listing the supported extensions, unless `path` names a network format.
+void require_network_extension(const std::filesystem::path& path);
+
+/// A model file of any format (pgm/io/network_file.hpp), printing the reader's notes (tables
+/// normalized within the tolerance for rounded files).
+model_document read_model_file(const std::filesystem::path& path);
+
+/// A fitted network of any format, printing the reader's notes.
+bayesian_network read_network_file(const std::filesystem::path& path);
 
 /// Accepts only a whole number in [lo, hi], so that "-5" is an error rather than 2^64 - 5.
 CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi);
@@ -94,6 +102,7 @@ void add_simulate_command(CLI::App& app);
 void add_calibrate_command(CLI::App& app);
 void add_predict_command(CLI::App& app);
 void add_query_command(CLI::App& app);
+void add_convert_command(CLI::App& app);
 void add_prevent_command(CLI::App& app);
 
 }  // namespace pgm::cli

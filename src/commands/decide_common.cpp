@@ -6,8 +6,11 @@
 namespace pgm::cli {
 
 decision_model read_decision_model(const std::string& path, const std::string& success_text) {
-  require_extension(path, network_extensions);
-  return pgm::read_decision_model(path, success_text);
+  require_network_extension(path);
+  std::vector<std::string> notes;
+  auto model = pgm::read_decision_model(path, success_text, {.notes = &notes});
+  for (const auto& line : notes) note(line);
+  return model;
 }
 
 std::string describe_state(const variable& v, std::size_t state) {
@@ -41,7 +44,7 @@ assignment read_assignment(const std::string& text, const bayesian_network& netw
 }
 
 void add_decision_options(CLI::App& command, decision_arguments& args) {
-  command.add_option("--model", args.model, "The fitted network, .bif or .json")->required();
+  command.add_option("--model", args.model, "The fitted network: .bif, .xml, .net or .json")->required();
   command
       .add_option("--assign", args.assign,
                   "Planned values, e.g. \"xOff1=0.3,yOff1=-1.2,colour=Red\": numbers are binned with an interval "

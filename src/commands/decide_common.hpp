@@ -24,7 +24,7 @@ struct decision_arguments {
 /// Adds --model, --assign, --success and --marginalize to `command`.
 void add_decision_options(CLI::App& command, decision_arguments& args);
 
-/// Reads the model (a .bif or .json file) and settles the success event (pgm::read_decision_model).
+/// Reads the model (any network format) and settles the success event (pgm::read_decision_model).
 decision_model read_decision_model(const std::string& path, const std::string& success_text);
 
 /// "2 [-0.4, 0.4) cm" for an interval state, the label otherwise.

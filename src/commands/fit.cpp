@@ -45,7 +45,7 @@ struct fit_arguments {
 void use_prior_model(const fit_arguments& args, const network_structure& structure,
                      const std::vector<count_table>& counts, fit_options& options) {
   const auto settings = settings_of(args.transfer);
-  const auto prior = read_network(args.transfer.prior_model);
+  const auto prior = read_network_file(args.transfer.prior_model);
   require_map(args.transfer);
   const auto report =
       pgm::add_transferred_priors(options, structure, std::span<const count_table>(counts), prior, settings);
@@ -72,7 +72,7 @@ std::vector<csv_family> families_of(const network_structure& structure) {
 }
 
 void run_fit(const fit_arguments& args) {
-  require_extension(args.out, network_extensions);
+  require_network_extension(args.out);
   if (args.data == "-" && detail::processes().size() > 1) {
     throw error("--data -: standard input reaches one process only; under mpirun give a file every process can read");
   }
@@ -88,7 +88,7 @@ void run_fit(const fit_arguments& args) {
   network_structure structure;
   csv_counts counted;
   if (!args.model.empty()) {
-    structure = read_model_json(args.model).structure;
+    structure = read_model_file(args.model).structure;
     for (const auto& v : structure.variables()) {
       if (raw_intervals && raw_intervals->contains(v.name())) structure.update_variable(raw_intervals->at(v.name()));
     }
@@ -171,7 +171,7 @@ void add_fit_command(CLI::App& app) {
   auto* edges = cmd->add_option("--edges", args->edges,
                                 "The structure as edges, e.g. \"xOff1->onTop1,yOff1->onTop1\"; "
                                 "states are the values found in the data, sorted (numbers numerically)");
-  auto* model = cmd->add_option("--model", args->model, "The structure from a JSON model file instead");
+  auto* model = cmd->add_option("--model", args->model, "The structure (and states) from a model file instead: .bif, .xml, .net or .json");
   edges->excludes(model);
   model->excludes(edges);
   cmd->add_option("--estimator", args->estimator, "mle (eq. 3) or bayes (eq. 6)")
@@ -195,7 +195,7 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Counting threads (0: all cores)")
       ->check(whole_number(0, 1024))
       ->capture_default_str();
-  cmd->add_option("--out", args->out, "The fitted network, .bif or .json")->required();
+  cmd->add_option("--out", args->out, "The fitted network: .bif, .xml (XMLBIF), .net (Hugin) or .json")->required();
   add_missing_options(*cmd, args->missing);
   add_transfer_options(*cmd, args->transfer, true);
   cmd->callback([args] {

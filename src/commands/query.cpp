@@ -26,7 +26,7 @@ void run_query(const query_arguments& args) {
   const auto variables = parse_query_variables(args.query);
   const auto observed = parse_evidence(args.evidence);
   if (!args.out.empty()) detail::check_output_path(args.out);
-  const auto network = read_network(args.model);
+  const auto network = read_network_file(args.model);
   const auto result = pgm::query(network, variables, observed);
   if (args.out.empty()) {
     write_posterior_table(std::cout, result, observed, options);
@@ -44,7 +44,7 @@ void add_query_command(CLI::App& app) {
                                  "Print P(X | evidence) for every state of the query variables, by variable "
                                  "elimination.\nExample: pgm query --model sachs.bif --query Akt,Erk --evidence "
                                  "PKA=HIGH --digits 17 --format json");
-  cmd->add_option("--model", args->model, "The network, a .bif or .json model")->required();
+  cmd->add_option("--model", args->model, "The network: .bif, .xml, .net or .json")->required();
   cmd->add_option("--query", args->query, "Query variables, e.g. \"X\" or \"X,Y\" (joint distribution)")->required();
   cmd->add_option("--evidence", args->evidence, "Observed states, e.g. \"a=s,b=t\" (default: none)");
   cmd->add_option("--format", args->format, "Output format: csv or json")

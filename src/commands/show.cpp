@@ -88,18 +88,9 @@ void print_table(const cpt<double>& table, int digits, std::ostream& out) {
 }
 
 void run_show(const show_arguments& args) {
-  require_extension(args.model, network_extensions);
-  network_structure structure;
-  std::optional<std::vector<cpt<double>>> tables;
-  if (format_of(args.model) == network_format::bif) {
-    auto network = read_bif(args.model);
-    structure = network.structure();
-    tables = network.tables();
-  } else {
-    auto document = read_model_json(args.model);
-    structure = std::move(document.structure);
-    tables = std::move(document.tables);
-  }
+  auto document = read_model_file(args.model);
+  auto& structure = document.structure;
+  auto& tables = document.tables;
   auto& out = std::cout;
   if (!args.variable.empty()) static_cast<void>(structure.id(args.variable));  // unknown names fail here
   out << args.model << ": " << structure.size() << " variables, " << structure.graph().edge_count() << " edges";
@@ -131,7 +122,7 @@ void run_show(const show_arguments& args) {
 void add_show_command(CLI::App& app) {
   auto args = std::make_shared<show_arguments>();
   auto* cmd = app.add_subcommand("show", "Print a network's variables and tables");
-  cmd->add_option("model", args->model, "Network or structure file (.bif or .json)")->required();
+  cmd->add_option("model", args->model, "Network or structure file (.bif, .xml, .net or .json)")->required();
   cmd->add_option("--variable", args->variable, "Show only this variable and its table");
   cmd->add_option("--digits", args->digits, "Decimals of the probabilities")
       ->check(CLI::Range(0, 17))

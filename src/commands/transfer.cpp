@@ -30,8 +30,7 @@ struct transfer_command_arguments {
 network_structure target_structure(const transfer_command_arguments& args, const bayesian_network& prior,
                                    const correspondence* map) {
   if (!args.model.empty()) {
-    auto structure = read_model_json(args.model).structure;
-    return structure;
+    return read_model_file(args.model).structure;
   }
   const auto edges = parse_edge_list(args.edges);
   std::optional<discretization> intervals;
@@ -70,7 +69,7 @@ void run_transfer(const transfer_command_arguments& args) {
   if (args.transfer.prior_model.empty()) throw error("pgm transfer needs --prior-model");
   if (args.transfer.map.empty()) throw error("pgm transfer needs --map, e.g. --map \"onTop2=onTop1,xOff2~xOff1\"");
   if (args.edges.empty() == args.model.empty()) throw error("give the target structure with --edges or --model");
-  const auto prior = read_network(args.transfer.prior_model);
+  const auto prior = read_network_file(args.transfer.prior_model);
   std::optional<correspondence> given;
   if (!args.transfer.map.empty() && args.transfer.map != "auto") given = parse_correspondence(args.transfer.map);
   const auto target = target_structure(args, prior, given ? &*given : nullptr);
@@ -107,11 +106,7 @@ struct correspond_arguments {
 
 network_view view_of(const std::string& path, std::optional<model_document>& document,
                      std::optional<bayesian_network>& network) {
-  if (format_of(path) == network_format::bif) {
-    network = read_network(path);
-    return {&network->structure(), &*network};
-  }
-  document = read_model_json(path);
+  document = read_model_file(path);
   if (document->tables) {
     network = document->network();
     return {&network->structure(), &*network};
@@ -146,7 +141,7 @@ void add_transfer_command(CLI::App& app) {
       app.add_subcommand("transfer", "Write the prior table a strategy transfers to a target node, without data");
   auto* edges =
       cmd->add_option("--edges", args->edges, "The target structure as edges, e.g. \"xOff1->onTop2,xOff2->onTop2\"");
-  auto* model = cmd->add_option("--model", args->model, "The target structure from a JSON model file instead");
+  auto* model = cmd->add_option("--model", args->model, "The target structure from a model file instead (.bif, .xml, .net or .json)");
   edges->excludes(model);
   model->excludes(edges);
   cmd->add_option("--intervals", args->intervals_file, "Edges file (from pgm discretize) with the target's intervals");
@@ -159,8 +154,8 @@ void add_transfer_command(CLI::App& app) {
 void add_correspond_command(CLI::App& app) {
   auto args = std::make_shared<correspond_arguments>();
   auto* cmd = app.add_subcommand("correspond", "Rank candidate correspondences between a prior and a target network");
-  cmd->add_option("--prior-model", args->prior_model, "The prior task's network (.bif or .json)")->required();
-  cmd->add_option("--target-model", args->target_model, "The target task's network or structure (.bif or .json)")
+  cmd->add_option("--prior-model", args->prior_model, "The prior task's network (.bif, .xml, .net or .json)")->required();
+  cmd->add_option("--target-model", args->target_model, "The target task's network or structure (.bif, .xml, .net or .json)")
       ->required();
   cmd->add_option("--top", args->top, "How many candidates to list")
       ->check(whole_number(1, 1000000))

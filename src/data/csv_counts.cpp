@@ -414,7 +414,16 @@ csv_counts csv_counter::finish(const csv_partial_counts& counts) const {
     throw data_error(plan.source + ": every one of the " + std::to_string(partial.dropped) +
                      " data rows has a missing value, so dropping them leaves none");
   }
-  if (partial.rows == 0) throw data_error(plan.source + ": there are no data rows after the header");
+  // A header alone is zero rows of data when every column's states are known (a model gives
+  // them): the tables are then their priors. Without rows, states found in data are unknown.
+  if (partial.rows == 0) {
+    for (const auto& column : plan.columns) {
+      if (column.mode == count_mode::labels) {
+        throw data_error(plan.source + ": there are no data rows after the header, so the states of '" + column.name +
+                         "' are unknown (a model that lists them, e.g. fit --model, allows a header alone)");
+      }
+    }
+  }
   csv_counts result;
   result.rows = partial.rows;
   result.dropped = partial.dropped;

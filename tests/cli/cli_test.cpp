@@ -37,7 +37,7 @@ constexpr const char* stacking =
 
 TEST_F(cli_test, every_command_has_help) {
   for (const std::string command : {"", "fit ", "discretize ", "show ", "transfer ", "correspond ", "experiment ",
-                                    "report ", "simulate ", "predict ", "prevent ", "learn-structure "}) {
+                                    "report ", "simulate ", "predict ", "prevent ", "learn-structure ", "convert ", "query "}) {
     const auto r = run(command + "--help");
     EXPECT_EQ(r.code, 0) << command;
     EXPECT_THAT(r.out, HasSubstr("Usage")) << command;
@@ -177,7 +177,7 @@ TEST_F(cli_test, usage_errors) {
   r = run("fit --data " + data.string() + " --edges \"xOff1->onTop1\" --prior k2 --out " + path("f.bif").string());
   EXPECT_THAT(r.err, HasSubstr("apply to the bayes estimator"));
   r = run("fit --data " + data.string() + " --edges \"xOff1->onTop1\" --out " + path("f.txt").string());
-  EXPECT_THAT(r.err, HasSubstr("expected a file ending in .bif or .json"));
+  EXPECT_THAT(r.err, HasSubstr("not a network file; expected one of .bif, .xml, .xmlbif, .bifxml, .net, .json"));
   r = run("show " + path("nothing.bif").string());
   EXPECT_THAT(r.err, HasSubstr("cannot open"));
   EXPECT_THAT(r.err, Not(HasSubstr("internal")));

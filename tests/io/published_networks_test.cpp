@@ -9,6 +9,7 @@
 #include "pgm/inference/sampling.hpp"
 #include "pgm/io/bif.hpp"
 #include "pgm/io/json_model.hpp"
+#include "pgm/io/network_file.hpp"
 #include "pgm/learn/fit.hpp"
 
 namespace pgm {
@@ -46,6 +47,19 @@ TEST_P(published_network_test, bif_and_json_round_trips_are_exact) {
   const auto net = read_bif(path());
   EXPECT_EQ(parse_bif(to_bif(net), "again.bif"), net);
   EXPECT_EQ(parse_model_json(to_json(net).dump(), "again.json").network(), net);
+}
+
+TEST_P(published_network_test, round_trips_through_every_format_and_across_them_are_exact) {
+  const auto net = read_bif(path());
+  EXPECT_EQ(parse_xmlbif(to_xmlbif(net), "again.xml"), net);
+  EXPECT_EQ(parse_net(to_net(net), "again.net"), net);
+  // BIF -> XMLBIF -> NET -> JSON -> BIF, each step reading what the previous one wrote.
+  auto step = net;
+  for (const auto format : {network_format::xmlbif, network_format::net, network_format::json, network_format::bif}) {
+    step = parse_network(to_text(step, format), format, "step");
+    EXPECT_EQ(step, net) << name_of(format);
+  }
+  EXPECT_EQ(to_bif(step), to_bif(net));
 }
 
 INSTANTIATE_TEST_SUITE_P(bnlearn_repository, published_network_test,

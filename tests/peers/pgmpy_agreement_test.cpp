@@ -1,6 +1,7 @@
 // Agreement with pgmpy, run only where pgmpy imports (tests/CMakeLists.txt): posteriors on the
 // published sachs network against pgmpy's VariableElimination, and the Yates-corrected
-// chi-square and G² statistics against pgmpy's chi_square and g_sq on a sample of sachs.
+// chi-square and G² statistics against pgmpy's chi_square and g_sq on a sample of sachs, and
+// the BIF and XMLBIF files each side writes read by the other with the same tables.
 // PGM_PYTHON runs tests/peers/pgmpy_oracle.py with PYTHONPATH=PGM_PGMPY_PATH.
 
 #include <gmock/gmock.h>
@@ -20,6 +21,8 @@
 #include "pgm/inference/sampling.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 #include "pgm/io/bif.hpp"
+#include "pgm/io/network_file.hpp"
+#include "pgm/io/xmlbif.hpp"
 #include "pgm/learn/independence_test.hpp"
 #include "support/folder_test.hpp"
 
@@ -111,6 +114,55 @@ TEST_F(pgmpy_agreement_test, yates_statistics_equal_pgmpy_chi_square_and_g_sq) {
   }
   // The cases must exercise the correction, or the comparison shows nothing about it.
   EXPECT_GT(corrected, 0u);
+}
+
+/// Expects pgmpy's reading of a file (one entry of the oracle's "formats" answer) to hold
+/// `net`'s tables exactly: the same parents in order, states and every bit of every value.
+void expect_same_tables(const nlohmann::json& theirs, const bayesian_network& net, const std::string& what) {
+  ASSERT_EQ(theirs.size(), net.size()) << what;
+  for (const auto& cpd : theirs) {
+    const auto& table = net.table(cpd["variable"].get<std::string>());
+    std::vector<std::string> parents;
+    for (const auto& p : table.parents()) parents.push_back(p.name());
+    EXPECT_EQ(cpd["parents"].get<std::vector<std::string>>(), parents) << what;
+    EXPECT_EQ(cpd["states"][table.child().name()].get<std::vector<std::string>>(), table.child().states()) << what;
+    const auto& rows = cpd["values"];
+    ASSERT_EQ(rows.size(), table.configurations()) << what;
+    std::size_t differ = 0;
+    for (std::size_t u = 0; u < table.configurations(); ++u) {
+      const auto column = table.column(config_index(static_cast<config_index::rep>(u)));
+      for (std::size_t x = 0; x < column.size(); ++x) differ += rows[u][x].get<double>() != column[x];
+    }
+    EXPECT_EQ(differ, 0u) << what << ": " << table.child().name();
+  }
+}
+
+TEST_F(pgmpy_agreement_test, files_we_write_pgmpy_reads_and_files_pgmpy_writes_we_read) {
+  const auto water = read_bif(std::filesystem::path(PGM_NETWORKS_DIR) / "water.bif");
+  const auto sachs = read_bif(sachs_path);
+  // Names with '-' and states with punctuation, which BIF writes as they are.
+  const variable a("x-off", {"<=0.5", "a+b", "1e-3"});
+  const variable b("on-top", {"no", "yes"});
+  const auto dashed = bayesian_network::from_tables(
+      {cpt<double>(a, {}, {0.2, 0.3, 0.5}), cpt<double>(b, {a}, {0.1, 0.9, 0.4, 0.6, 0.5, 0.5})});
+  const std::vector<std::pair<std::string, const bayesian_network*>> ours{
+      {"water.bif", &water}, {"water.xml", &water}, {"sachs.xml", &sachs}, {"dashed.bif", &dashed},
+      {"dashed.xml", &dashed}};
+  nlohmann::json request = {{"read", nlohmann::json::array()}};
+  for (const auto& [name, net] : ours) {
+    write_network(*net, path(name));
+    request["read"].push_back(path(name).string());
+  }
+  request["rewrite"] = {{{"in", sachs_path.string()},
+                         {"bif", path("pgmpy.bif").string()},
+                         {"xmlbif", path("pgmpy.xml").string()}}};
+  const auto answers = ask_pgmpy("formats", "-", request);
+  ASSERT_EQ(answers.size(), ours.size());
+  for (std::size_t i = 0; i < ours.size(); ++i) expect_same_tables(answers[i], *ours[i].second, ours[i].first);
+  // pgmpy's BIFWriter and XMLBIFWriter output, read by us: the same network (sachs's states are
+  // letters, which pgmpy's XMLBIFWriter leaves alone; it rewrites others to letters, digits, '_').
+  EXPECT_EQ(read_network(path("pgmpy.bif")), sachs);
+  EXPECT_EQ(read_network(path("pgmpy.xml")), sachs);
 }
 
 }  // namespace

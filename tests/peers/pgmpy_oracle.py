@@ -3,11 +3,17 @@
 
     pgmpy_oracle.py queries NETWORK.bif REQUEST.json   # [{"query": [...], "evidence": {...}}, ...]
     pgmpy_oracle.py ci DATA.csv REQUEST.json           # [{"x": .., "y": .., "z": [...]}, ...]
+    pgmpy_oracle.py formats - REQUEST.json             # {"read": [NET.bif|.xml, ...],
+                                                       #  "rewrite": [{"in": .., "bif": .., "xmlbif": ..}]}
 
 prints JSON on stdout: for queries, per request the list of {"states": {var: state}, "p": value}
 from pgmpy's VariableElimination (joint over the query variables); for ci, per request the
 statistic, p-value and degrees of freedom of pgmpy's chi_square and g_sq (which correct 2 x 2
-strata by Yates through scipy). pgmpy must be importable (PYTHONPATH); it is not part of pgm.
+strata by Yates through scipy); for formats, per file to read (BIFReader or XMLBIFReader by
+extension) per CPD its variable, parents, states and values (one row per parent configuration,
+the last parent fastest, as pgm stores them), after pgmpy has read each "in" file and written
+it again with its BIFWriter and XMLBIFWriter. (One run for all: pgmpy takes long to import.)
+pgmpy must be importable (PYTHONPATH); it is not part of pgm.
 """
 
 import itertools
@@ -52,12 +58,43 @@ def ci(data_path, requests):
     return answers
 
 
+def read_model(network_path):
+    from pgmpy.readwrite import BIFReader, XMLBIFReader
+
+    if network_path.endswith(".bif"):
+        return BIFReader(network_path).get_model()
+    return XMLBIFReader(network_path).get_model()
+
+
+def tables(network_path):
+    model = read_model(network_path)
+    answers = []
+    for cpd in model.get_cpds():
+        values = cpd.get_values()  # child states x parent configurations, the last parent fastest
+        answers.append({"variable": cpd.variable, "parents": list(cpd.variables[1:]),
+                        "states": {v: [str(s) for s in cpd.state_names[v]] for v in cpd.variables},
+                        "values": [[float(values[x][u]) for x in range(values.shape[0])]
+                                   for u in range(values.shape[1])]})
+    return answers
+
+
+def formats(_, request):
+    from pgmpy.readwrite import BIFWriter, XMLBIFWriter
+
+    for entry in request.get("rewrite", []):
+        model = read_model(entry["in"])
+        BIFWriter(model).write_bif(entry["bif"])
+        XMLBIFWriter(model).write_xmlbif(entry["xmlbif"])
+    return [tables(path) for path in request.get("read", [])]
+
+
 def main():
-    if len(sys.argv) != 4 or sys.argv[1] not in ("queries", "ci"):
+    modes = {"queries": queries, "ci": ci, "formats": formats}
+    if len(sys.argv) != 4 or sys.argv[1] not in modes:
         sys.exit(__doc__)
     with open(sys.argv[3], encoding="utf-8") as f:
         requests = json.load(f)
-    answers = queries(sys.argv[2], requests) if sys.argv[1] == "queries" else ci(sys.argv[2], requests)
+    answers = modes[sys.argv[1]](sys.argv[2], requests)
     json.dump(answers, sys.stdout)
 
 

@@ -51,10 +51,12 @@ struct decision_model {
   return default_success_event(network);
 }
 
-/// Reads a .bif or .json network and settles its success event (see choose_success_event).
+/// Reads a network of any format (pgm/io/network_file.hpp) and settles its success event (see
+/// choose_success_event).
 [[nodiscard]] inline decision_model read_decision_model(const std::filesystem::path& path,
-                                                        std::string_view success_text) {
-  auto network = read_network(path);
+                                                        std::string_view success_text,
+                                                        const network_read_options& options = {}) {
+  auto network = read_network(path, options);
   auto success =
       choose_success_event(network, success_text, success_text.empty() ? read_success_metadata(path) : std::nullopt);
   return {std::move(network), std::move(success)};

@@ -24,6 +24,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/detail/text.hpp"
+#include "pgm/io/read_options.hpp"
 
 namespace pgm {
 
@@ -77,10 +78,13 @@ class bif_lexer {
     return token;
   }
 
-  /// Everything up to (not including) the next ';', for property values.
+  /// Everything up to (not including) the next ';' outside double quotes, for property values
+  /// (other tools write `property label = "a; b" ;`).
   std::string raw_until_semicolon() {
     const auto start = pos_;
-    while (pos_ < text_.size() && text_[pos_] != ';') {
+    bool quoted = false;
+    while (pos_ < text_.size() && (quoted || text_[pos_] != ';')) {
+      if (text_[pos_] == '"') quoted = !quoted;
       if (text_[pos_] == '\n') {
         ++line_;
         line_start_ = pos_ + 1;
@@ -138,7 +142,10 @@ class bif_lexer {
 
 class bif_parser {
  public:
-  bif_parser(std::string_view text, std::string source) : lexer_(text, std::move(source)) { advance(); }
+  bif_parser(std::string_view text, std::string source, const network_read_options& options)
+      : lexer_(text, std::move(source)), normalizer_(options.tolerance), notes_(options.notes) {
+    advance();
+  }
 
   bayesian_network parse() {
     while (current_.type != bif_token::kind::end) {
@@ -154,6 +161,19 @@ class bif_parser {
       }
     }
     if (declared_.empty()) fail(current_, "the file declares no variables");
+    // Blocks are matched to declarations only now: pgmpy and bnlearn accept a `probability`
+    // block before its `variable` declaration.
+    for (auto& block : blocks_) {
+      const auto it = declared_.find(block.header.text);
+      if (it == declared_.end()) {
+        fail(block.header, "probability block for '" + block.header.text + "', which is not declared");
+      }
+      if (it->second.table) fail(block.header, "'" + block.header.text + "' has two probability blocks");
+      for (const auto& parent : block.parent_tokens) {
+        if (!declared_.contains(parent.text)) fail(parent, "parent '" + parent.text + "' is not declared");
+      }
+      it->second.table = std::move(block);
+    }
     std::vector<cpt<double>> tables;
     std::vector<variable> variables;
     for (const auto& name : order_) {
@@ -174,6 +194,7 @@ class bif_parser {
       }
     }
     for (const auto& name : order_) tables.push_back(build_table(declared_.at(name)));
+    normalizer_.report(lexer_.source(), notes_);
     return bayesian_network(std::move(structure), std::move(tables));
   }
 
@@ -182,6 +203,7 @@ class bif_parser {
     bif_token header;  // the child's name in `probability ( child | parents )`
     bif_token where;
     std::vector<std::string> parents;
+    std::vector<bif_token> parent_tokens;
     std::map<std::vector<std::string>, std::pair<bif_token, std::vector<double>>> rows;
     std::optional<std::vector<double>> table;
     std::optional<std::vector<double>> fallback;  // `default`
@@ -322,17 +344,14 @@ class bif_parser {
   void parse_probability() {
     expect_symbol('(');
     const auto child = expect_word("the variable's name");
-    const auto it = declared_.find(child.text);
-    if (it == declared_.end()) fail(child, "probability block for '" + child.text + "', which is not declared");
-    if (it->second.table) fail(child, "'" + child.text + "' has two probability blocks");
     probability_block block;
     block.header = child;
     block.where = child;
     if (accept_symbol('|')) {
       while (!accept_symbol(')')) {
         const auto parent = expect_word("a parent's name");
-        if (!declared_.contains(parent.text)) fail(parent, "parent '" + parent.text + "' is not declared");
         block.parents.push_back(parent.text);
+        block.parent_tokens.push_back(parent);
         accept_symbol(',');
       }
     } else {
@@ -365,7 +384,7 @@ class bif_parser {
         fail(keyword, "expected '(', 'table', 'default' or '}', found '" + keyword.text + "'");
       }
     }
-    it->second.table = std::move(block);
+    blocks_.push_back(std::move(block));
   }
 
   cpt<double> build_table(const declaration& decl) {
@@ -425,6 +444,17 @@ class bif_parser {
         std::copy(block.fallback->begin(), block.fallback->end(), values.begin() + static_cast<std::ptrdiff_t>(u * j));
       }
     }
+    if (const auto bad = normalizer_.normalize(values, j)) {
+      auto where = block.where;
+      if (!block.table) {
+        const auto codes = radix.decode(bad->first);
+        std::vector<std::string> labels;
+        for (std::size_t i = 0; i < codes.size(); ++i) labels.push_back(parents[i].states()[codes[i]]);
+        const auto row = block.rows.find(labels);
+        if (row != block.rows.end()) where = row->second.first;
+      }
+      fail(where, normalizer_.refusal(decl.var.name(), bad->second));
+    }
     try {
       return cpt<double>(decl.var, std::move(parents), std::move(values));
     } catch (const model_error& e) {
@@ -434,52 +464,90 @@ class bif_parser {
 
   bif_lexer lexer_;
   bif_token current_;
+  column_normalizer normalizer_;
+  std::vector<std::string>* notes_;
   std::map<std::string, declaration, std::less<>> declared_;
   std::vector<std::string> order_;
+  std::vector<probability_block> blocks_;
 };
 
-inline bool bif_word(std::string_view text) {
-  if (text.empty()) return false;
+/// Why `name` cannot be written as a BIF variable or network name, or nothing. pgmpy reads
+/// letters, digits, '_' and '-' everywhere (and '.' only in `variable` lines); BIF has no quoting
+/// that pgmpy keeps, so nothing else can be written.
+inline std::optional<std::string> bif_name_problem(std::string_view text) {
+  if (text.empty()) return "it is empty";
   for (char c : text) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) return false;
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.')) {
+      return std::string("BIF names hold letters, digits, '_', '-' and '.' only (found '") + c + "')";
+    }
   }
-  return true;
+  return std::nullopt;
+}
+
+/// Why `state` cannot be written as a BIF state, or nothing. pgmpy splits states at spaces,
+/// ',', '(' and ')' and turns '"' into a space; our reader also stops at ';', '|', '[', ']',
+/// '{', '}' and comments.
+inline std::optional<std::string> bif_state_problem(std::string_view text) {
+  if (text.empty()) return "it is empty";
+  for (char c : text) {
+    const auto u = static_cast<unsigned char>(c);
+    if (u <= 32 || u >= 127) return "BIF states cannot hold spaces or characters outside printable ASCII";
+    if (std::string_view("{}()[];,|\"").find(c) != std::string_view::npos) {
+      return std::string("BIF states cannot hold '") + c + "' (pgmpy and bnlearn split states there)";
+    }
+  }
+  if (text.find("//") != std::string_view::npos || text.find("/*") != std::string_view::npos) {
+    return "BIF states cannot hold '//' or '/*' (they start comments)";
+  }
+  return std::nullopt;
 }
 
 }  // namespace detail
 
 /// Parses BIF text; `source` names it in error messages.
-[[nodiscard]] inline bayesian_network parse_bif(std::string_view text, const std::string& source) {
-  return detail::bif_parser(text, source).parse();
+[[nodiscard]] inline bayesian_network parse_bif(std::string_view text, const std::string& source,
+                                                const network_read_options& options = {}) {
+  return detail::bif_parser(text, source, options).parse();
 }
 
-[[nodiscard]] inline bayesian_network read_bif(const std::filesystem::path& path) {
-  return parse_bif(detail::read_file(path), path.string());
+[[nodiscard]] inline bayesian_network read_bif(const std::filesystem::path& path,
+                                               const network_read_options& options = {}) {
+  return parse_bif(detail::read_file(path), path.string(), options);
 }
 
 struct bif_write_options {
   /// Write interval edges and semantic tags as `property` lines.
   bool properties = true;
   std::string network_name = "unknown";
+  /// When set, receives a line for anything written that a peer reads differently (a name
+  /// with '.', which pgmpy 0.1.26 reads in `variable` lines but not in `probability` lines).
+  std::vector<std::string>* notes = nullptr;
 };
 
 /// Writes BIF as pgmpy does: one `(parent states) probabilities;` line per configuration.
-/// Throws model_error for a name or state that BIF cannot express (spaces, punctuation).
+/// Throws model_error, before writing anything, for a name or state that pgmpy or bnlearn
+/// could not read back (spaces, quotes, punctuation); docs/formats.md lists the rules.
 inline void write_bif(const bayesian_network& network, std::ostream& out, const bif_write_options& options = {}) {
-  auto checked = [](const std::string& word, const std::string& what) -> const std::string& {
-    if (!detail::bif_word(word)) {
-      throw model_error(what + " '" + word +
-                        "' cannot be written to BIF (letters, digits, '_', "
-                        "'-' and '.' only)");
+  std::vector<std::string> dotted;
+  auto checked = [&](const std::string& word, const std::string& what) -> const std::string& {
+    if (const auto problem = detail::bif_name_problem(word)) {
+      throw model_error(what + " '" + word + "' cannot be written to BIF: " + *problem);
     }
+    if (word.find('.') != std::string::npos) dotted.push_back(word);
     return word;
+  };
+  auto checked_state = [](const std::string& state, const std::string& variable_name) -> const std::string& {
+    if (const auto problem = detail::bif_state_problem(state)) {
+      throw model_error("state '" + state + "' of '" + variable_name + "' cannot be written to BIF: " + *problem);
+    }
+    return state;
   };
   std::ostringstream text;
   text << "network " << checked(options.network_name, "network name") << " {\n}\n";
   for (const auto& v : network.variables()) {
     text << "variable " << checked(v.name(), "variable name") << " {\n  type discrete [ " << v.cardinality() << " ] { ";
     for (std::size_t s = 0; s < v.cardinality(); ++s) {
-      text << (s ? ", " : "") << checked(v.states()[s], "state of '" + v.name() + "'");
+      text << (s ? ", " : "") << checked_state(v.states()[s], v.name());
     }
     text << " };\n";
     if (options.properties) {
@@ -530,6 +598,11 @@ inline void write_bif(const bayesian_network& network, std::ostream& out, const 
       }
     }
     text << "}\n";
+  }
+  if (options.notes != nullptr && !dotted.empty()) {
+    options.notes->push_back("names with '.' (" + detail::list_for_message(dotted) +
+                             ") are written as they are; pgmpy 0.1.26 cannot read them in 'probability' lines "
+                             "(pgm reads them)");
   }
   out << text.str();
 }

@@ -1,44 +1,173 @@
 #pragma once
 /// \file
-/// Reading and writing a network by file extension: `.bif` or `.json`.
+/// Reading and writing a network in any supported format, chosen by the file's extension:
+/// BIF (`.bif`), XMLBIF (`.xml`, `.xmlbif`, `.bifxml`), Hugin NET (`.net`) and pgm's JSON model
+/// (`.json`). Every command that reads a model reads it through `read_model` or `read_network`,
+/// so every command reads every format. docs/formats.md says what each format carries.
 
+#include <array>
 #include <filesystem>
+#include <optional>
+#include <ostream>
+#include <sstream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/detail/file.hpp"
 #include "pgm/io/bif.hpp"
 #include "pgm/io/json_model.hpp"
+#include "pgm/io/net.hpp"
+#include "pgm/io/read_options.hpp"
+#include "pgm/io/xmlbif.hpp"
 
 namespace pgm {
 
-enum class network_format { bif, json };
+enum class network_format { bif, json, xmlbif, net };
 
-/// The format a path's extension names; throws io_error for any other extension.
+namespace detail {
+
+struct network_format_entry {
+  network_format format;
+  std::string_view name;  // for --to
+  std::string_view extensions[3];
+};
+
+inline constexpr std::array<network_format_entry, 4> network_formats{{
+    {network_format::bif, "bif", {".bif"}},
+    {network_format::xmlbif, "xmlbif", {".xml", ".xmlbif", ".bifxml"}},
+    {network_format::net, "net", {".net"}},
+    {network_format::json, "json", {".json"}},
+}};
+
+}  // namespace detail
+
+/// Every extension a network file may have, in the order the formats are listed.
+[[nodiscard]] inline std::vector<std::string> network_file_extensions() {
+  std::vector<std::string> extensions;
+  for (const auto& entry : detail::network_formats) {
+    for (const auto extension : entry.extensions) {
+      if (!extension.empty()) extensions.emplace_back(extension);
+    }
+  }
+  return extensions;
+}
+
+/// The format's name, as `--to` takes it: bif, xmlbif, net or json.
+[[nodiscard]] inline std::string_view name_of(network_format format) {
+  for (const auto& entry : detail::network_formats) {
+    if (entry.format == format) return entry.name;
+  }
+  return {};
+}
+
+/// The format a name (bif, xmlbif, net, json) stands for; throws error for any other.
+[[nodiscard]] inline network_format network_format_named(std::string_view name) {
+  std::vector<std::string> names;
+  for (const auto& entry : detail::network_formats) {
+    if (entry.name == name) return entry.format;
+    names.emplace_back(entry.name);
+  }
+  throw error("unknown network format '" + std::string(name) + "' (formats: " + detail::join(names) + ")");
+}
+
+/// The format a path's extension names (case-insensitive), or nothing.
+[[nodiscard]] inline std::optional<network_format> find_format_of(const std::filesystem::path& path) {
+  auto extension = path.extension().string();
+  for (auto& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const auto& entry : detail::network_formats) {
+    for (const auto known : entry.extensions) {
+      if (!known.empty() && extension == known) return entry.format;
+    }
+  }
+  return std::nullopt;
+}
+
+/// The format a path's extension names; throws io_error listing the supported extensions.
 [[nodiscard]] inline network_format format_of(const std::filesystem::path& path) {
-  const auto extension = path.extension().string();
-  if (extension == ".bif") return network_format::bif;
-  if (extension == ".json") return network_format::json;
-  throw io_error("'" + path.string() + "': expected a .bif or .json file");
+  if (const auto format = find_format_of(path)) return *format;
+  throw io_error("'" + path.string() + "': not a network file; expected one of " +
+                 detail::join(network_file_extensions()) + " (BIF, XMLBIF, Hugin NET, pgm JSON)");
 }
 
-/// A fitted network from a .bif or .json file.
-[[nodiscard]] inline bayesian_network read_network(const std::filesystem::path& path) {
-  if (format_of(path) == network_format::bif) return read_bif(path);
+/// A fitted network from text in `format`; `source` names it in error messages.
+[[nodiscard]] inline bayesian_network parse_network(std::string_view text, network_format format,
+                                                    const std::string& source,
+                                                    const network_read_options& options = {}) {
+  switch (format) {
+    case network_format::bif:
+      return parse_bif(text, source, options);
+    case network_format::xmlbif:
+      return parse_xmlbif(text, source, options);
+    case network_format::net:
+      return parse_net(text, source, options);
+    case network_format::json:
+      break;
+  }
   try {
-    return read_model_json(path).network();
+    return parse_model_json(text, source).network();
   } catch (const model_error& e) {
-    throw model_error("'" + path.string() + "': " + e.what());
+    throw model_error("'" + source + "': " + e.what());
   }
 }
 
-/// Writes a network as .bif or .json, atomically.
-inline void write_network(const bayesian_network& network, const std::filesystem::path& path) {
-  if (format_of(path) == network_format::bif) {
-    write_bif(network, path);
-  } else {
-    write_model_json(to_json(network), path);
+/// A model file of any format: a structure, with tables unless it is a JSON structure file
+/// (BIF, XMLBIF and NET files always hold tables).
+[[nodiscard]] inline model_document read_model(const std::filesystem::path& path,
+                                               const network_read_options& options = {}) {
+  const auto format = format_of(path);
+  if (format == network_format::json) return read_model_json(path);
+  auto network = parse_network(detail::read_file(path), format, path.string(), options);
+  return model_document{network.structure(), network.tables()};
+}
+
+/// A fitted network from a file of any supported format.
+[[nodiscard]] inline bayesian_network read_network(const std::filesystem::path& path,
+                                                   const network_read_options& options = {}) {
+  const auto format = format_of(path);
+  return parse_network(detail::read_file(path), format, path.string(), options);
+}
+
+struct network_write_options {
+  /// Write interval edges and semantic tags where the format allows (all four do).
+  bool properties = true;
+  /// Receives a line for anything written that a peer would read differently.
+  std::vector<std::string>* notes = nullptr;
+};
+
+/// The text of `network` in `format`; throws model_error for what the format cannot hold.
+[[nodiscard]] inline std::string to_text(const bayesian_network& network, network_format format,
+                                         const network_write_options& options = {}) {
+  switch (format) {
+    case network_format::bif:
+      return to_bif(network, {.properties = options.properties, .notes = options.notes});
+    case network_format::xmlbif:
+      return to_xmlbif(network, {.properties = options.properties});
+    case network_format::net:
+      return to_net(network, {.properties = options.properties});
+    case network_format::json:
+      break;
   }
+  return to_json(network).dump(2) + "\n";
+}
+
+/// Writes a network in `format`, atomically; nothing is written if the format cannot hold it.
+inline void write_network(const bayesian_network& network, const std::filesystem::path& path, network_format format,
+                          const network_write_options& options = {}) {
+  if (format == network_format::json) {
+    write_model_json(to_json(network), path);
+    return;
+  }
+  const auto text = to_text(network, format, options);
+  detail::write_file_atomically(path, [&](std::ostream& out) { out << text; });
+}
+
+/// Writes a network in the format of the path's extension, atomically.
+inline void write_network(const bayesian_network& network, const std::filesystem::path& path,
+                          const network_write_options& options = {}) {
+  write_network(network, path, format_of(path), options);
 }
 
 }  // namespace pgm

@@ -1,0 +1,44 @@
+#pragma once
+/// \file
+/// XMLBIF 0.3, the XML exchange format of pgmpy and aGrUM (and JavaBayes, Weka). Names and
+/// states are XML text, so any name survives; pgm writes a variable's interval edges and
+/// semantic tags as `<PROPERTY>key = value</PROPERTY>` elements, which pgmpy keeps as node
+/// attributes and pgm reads back. Each `<TABLE>` lists, per configuration of the `<GIVEN>`
+/// parents (the last parent changing fastest), the child's probabilities, as pgmpy writes it.
+///
+/// Compiled into the library (src/io/xmlbif.cpp, pgm::formats) so that the XML parser
+/// (pugixml) stays out of the headers. Errors name the file, line and column.
+
+#include <filesystem>
+#include <ostream>
+#include <string>
+#include <string_view>
+
+#include "pgm/core/bayesian_network.hpp"
+#include "pgm/io/read_options.hpp"
+
+namespace pgm {
+
+/// Parses XMLBIF text; `source` names it in error messages (parse_error, model_error).
+[[nodiscard]] bayesian_network parse_xmlbif(std::string_view text, const std::string& source,
+                                            const network_read_options& options = {});
+
+[[nodiscard]] bayesian_network read_xmlbif(const std::filesystem::path& path, const network_read_options& options = {});
+
+struct xmlbif_write_options {
+  /// Write interval edges and semantic tags as `<PROPERTY>` elements.
+  bool properties = true;
+  std::string network_name = "unknown";
+};
+
+/// Writes XMLBIF; throws model_error (before writing anything) for a tag that holds '=',
+/// which pgmpy's property reader splits at.
+void write_xmlbif(const bayesian_network& network, std::ostream& out, const xmlbif_write_options& options = {});
+
+[[nodiscard]] std::string to_xmlbif(const bayesian_network& network, const xmlbif_write_options& options = {});
+
+/// Writes an XMLBIF file atomically.
+void write_xmlbif(const bayesian_network& network, const std::filesystem::path& path,
+                  const xmlbif_write_options& options = {});
+
+}  // namespace pgm

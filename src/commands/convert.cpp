@@ -1,0 +1,64 @@
+// pgm convert: a network from one file format to another (BIF, XMLBIF, Hugin NET, JSON).
+
+#include <iostream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "cli/common.hpp"
+#include "pgm/decide/decision_model.hpp"
+#include "pgm/io/network_file.hpp"
+
+namespace pgm::cli {
+namespace {
+
+struct convert_arguments {
+  std::string in;
+  std::string out;
+  std::string to;
+  bool no_properties = false;
+};
+
+void run_convert(const convert_arguments& args) {
+  const auto from = format_of(args.in);
+  const auto named = find_format_of(args.out);
+  network_format to{};
+  if (!args.to.empty()) {
+    to = network_format_named(args.to);
+    if (named && *named != to) {
+      throw error("'" + args.out + "' names the " + std::string(name_of(*named)) + " format but --to says " + args.to);
+    }
+  } else {
+    to = format_of(args.out);  // fails, listing the extensions, before anything is read
+  }
+  detail::check_output_path(args.out);
+  const auto network = read_model_file(args.in).network();
+  std::vector<std::string> notes;
+  write_network(network, args.out, to, {.properties = !args.no_properties, .notes = &notes});
+  for (const auto& line : notes) note(line);
+  if (from == network_format::json && to != network_format::json && read_success_metadata(args.in)) {
+    note("the success event in the metadata of '" + args.in + "' is not carried by " + std::string(name_of(to)) +
+         "; give it to predict and prevent with --success");
+  }
+  std::cout << "converted " << args.in << " (" << name_of(from) << ") -> " << args.out << " (" << name_of(to)
+            << "): " << network.size() << " variables, " << network.free_parameters() << " free parameters\n";
+}
+
+}  // namespace
+
+void add_convert_command(CLI::App& app) {
+  auto args = std::make_shared<convert_arguments>();
+  auto* cmd = app.add_subcommand(
+      "convert",
+      "Convert a network between BIF (.bif), XMLBIF (.xml, .xmlbif, .bifxml), Hugin NET (.net) and pgm JSON (.json).\n"
+      "Example: pgm convert sachs.bif sachs.net");
+  cmd->add_option("in", args->in, "The network to read; its extension names its format")->required();
+  cmd->add_option("out", args->out, "The file to write, atomically")->required();
+  cmd->add_option("--to", args->to, "The output format (default: from the extension of OUT)")
+      ->check(CLI::IsMember({"bif", "xmlbif", "net", "json"}));
+  cmd->add_flag("--no-properties", args->no_properties,
+                "Leave out pgm's interval edges and semantic tags (properties and attributes other tools ignore)");
+  cmd->callback([args] { run_convert(*args); });
+}
+
+}  // namespace pgm::cli
