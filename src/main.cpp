@@ -32,6 +32,11 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     // --help and --version end here with 0; every usage error exits with 2.
     return app.exit(e) == 0 ? 0 : 2;
+  } catch (const pgm::table_too_large& e) {
+    std::cerr << "pgm: error: " << e.what() << '\n'
+              << "pgm: hint: a variable with that many states is usually a continuous column read as labels; bin it "
+                 "with --discretization (or pgm discretize) first\n";
+    return 1;
   } catch (const pgm::error& e) {
     std::cerr << "pgm: error: " << e.what() << '\n';
     return 1;
