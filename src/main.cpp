@@ -27,6 +27,11 @@ namespace {
 int report(const std::exception_ptr& failure) {
   try {
     std::rethrow_exception(failure);
+  } catch (const pgm::table_too_large& e) {
+    std::cerr << "pgm: error: " << e.what() << '\n'
+              << "pgm: hint: a variable with that many states is usually a continuous column read as labels; bin it "
+                 "with --discretization (or pgm discretize) first\n";
+    return 1;
   } catch (const pgm::error& e) {
     std::cerr << "pgm: error: " << e.what() << '\n';
     return 1;

@@ -4,7 +4,9 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <iostream>
+#include <limits>
 
 #include "pgm/core/error.hpp"
 #include "pgm/data/csv.hpp"
@@ -176,7 +178,8 @@ CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
         std::uint64_t value = 0;
         const auto [end, failure] = std::from_chars(text.data(), text.data() + text.size(), value);
         if (text.empty() || failure != std::errc() || end != text.data() + text.size()) {
-          return "expected a whole number from " + range + ", got '" + text + "'";
+          // Digits only: "-0", "+5", "1e3", "0x10" and "1,000" are refused rather than read otherwise.
+          return "expected a whole number from " + range + " (digits only), got " + detail::quoted_number(text);
         }
         if (value < lo || value > hi) return "expected a whole number from " + range + ", got " + text;
         return {};
@@ -184,14 +187,30 @@ CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
       "INT in " + range);
 }
 
-CLI::Validator non_negative_number() {
+CLI::Validator non_negative_number() { return number_between(0, std::numeric_limits<double>::infinity(), false, true); }
+
+CLI::Validator number_between(double lo, double hi, bool lo_open, bool hi_open) {
+  const bool unbounded = std::isinf(hi);
+  const std::string range = unbounded ? std::string(lo_open ? "> " : "≥ ") + detail::format_short(lo)
+                                      : std::string(lo_open ? "(" : "[") + detail::format_short(lo) + ", " +
+                                            detail::format_short(hi) + (hi_open ? ")" : "]");
+  const std::string expected = unbounded ? "expected a finite number " + range : "expected a number in " + range;
   return CLI::Validator(
-      [](std::string& text) -> std::string {
-        const auto value = detail::parse_double(text);
-        if (!value || !std::isfinite(*value) || *value < 0) return "expected a finite number ≥ 0, got '" + text + "'";
+      [=](std::string& text) -> std::string {
+        const auto read = detail::parse_double(text);
+        if (!read || !std::isfinite(*read)) return expected + ", got " + detail::quoted_number(text);
+        const double value = *read;
+        const bool above_lo = lo_open ? value > lo : value >= lo;
+        const bool below_hi = hi_open ? value < hi : value <= hi;
+        if (!above_lo || !below_hi) return expected + ", got " + text;
+        // CLI11 converts the text again (strtold, then to double): hand it the value pgm read,
+        // written exactly (a hex float, "-0" as 0), so that no other reading or rounding happens.
+        char exact[40];
+        std::snprintf(exact, sizeof exact, "%a", value == 0 ? 0.0 : value);
+        text = exact;
         return {};
       },
-      "NUMBER ≥ 0");
+      "NUMBER " + range);
 }
 
 }  // namespace pgm::cli

@@ -81,8 +81,13 @@ bayesian_network read_network_file(const std::filesystem::path& path);
 /// Accepts only a whole number in [lo, hi], so that "-5" is an error rather than 2^64 - 5.
 CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi);
 
-/// Accepts only a finite number ≥ 0.
+/// Accepts only a finite number ≥ 0 (docs/limits.md, "Numbers").
 CLI::Validator non_negative_number();
+
+/// Accepts only a finite number between `lo` and `hi` (each bound excluded when open; `hi` may
+/// be infinite), written as docs/limits.md says ("1,5", "0x1p-3", "nan" and "1e400" are refused
+/// with the reason); "-0" is passed on as 0.
+CLI::Validator number_between(double lo, double hi, bool lo_open, bool hi_open);
 
 /// Prints "pgm: note: …" to stderr, for what the user should know but need not act on.
 void note(const std::string& text);

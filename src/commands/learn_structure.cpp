@@ -136,7 +136,7 @@ void add_learn_structure_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--alpha", args->alpha,
                   "Significance level, strictly between 0 and 1: an edge goes when a test has p > alpha")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(number_between(0, 1, true, true))
       ->capture_default_str();
   cmd->add_option("--correction", args->correction,
                   "Continuity correction of 2x2 strata: none, or yates as pgmpy applies it")

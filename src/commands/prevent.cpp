@@ -97,6 +97,7 @@ void add_prevent_command(CLI::App& app) {
   cmd->add_option("--controllable", args->controllable,
                   "Variables the robot may change, e.g. xOff1,yOff1 (default: every parent of the success variable)");
   cmd->add_option("--epsilon", args->epsilon, "Success threshold, 0 ≤ epsilon < 1: a prediction above it succeeds")
+      ->check(number_between(0, 1, false, true))
       ->capture_default_str();
   cmd->add_option("--distance", args->distance,
                   "Nearness: steps (bins moved) or units (Euclidean distance between interval midpoints)")

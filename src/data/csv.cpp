@@ -72,6 +72,7 @@ void read_header(csv_reader::impl& input) {
       detail::throw_at(input.source, 0, failure);
     }
     if (status == detail::csv_record::incomplete) {
+      if (text.size() > csv_max_record_bytes) throw parse_error(input.source, 1, 1, detail::record_too_long_message());
       want = std::max(want, text.size()) * 2;
       continue;
     }
@@ -185,7 +186,7 @@ void add_value(const column_plan& plan, column_part& part, const detail::csv_fie
         part.first_non_finite = detail::csv_place{field.line, field.column, chunk};
         part.first_non_finite_text = std::string(field.text);
       }
-      part.numbers.push_back(*value);
+      part.numbers.push_back(*value + 0.0);  // -0 is 0
       return;
     }
     case column_mode::labels: {
@@ -346,7 +347,19 @@ continuous_column finish_numbers(const column_plan& plan, std::size_t column, co
 
 csv_data read_dataset(csv_reader::impl& input, const csv_options& options) {
   auto& bytes = *input.bytes;
-  bytes.fetch(std::numeric_limits<std::size_t>::max());  // all of it: the data set is in memory anyway
+  // All of it (the data set is in memory anyway), in growing steps, so that a stream whose last
+  // line runs past the limit of a record is refused there rather than read to its end.
+  for (std::size_t want = header_fetch_bytes; !bytes.at_end(); want *= 2) {
+    bytes.fetch(want);
+    const auto text = bytes.available();
+    const auto last_end = text.find_last_of("\n\r");
+    const auto open = last_end == std::string_view::npos ? text.size() : text.size() - last_end - 1;
+    if (open > csv_max_record_bytes) {
+      const auto lines = std::count(text.begin(), text.end() - static_cast<std::ptrdiff_t>(open), '\n');
+      throw parse_error(input.source, input.first_line + static_cast<std::size_t>(lines), 1,
+                        detail::record_too_long_message());
+    }
+  }
   const auto text = bytes.available();
   const auto& header = input.header;
   const auto wanted = detail::column_positions(header, options.columns, input.source);

@@ -21,7 +21,9 @@ constexpr std::size_t count_window_bytes = std::size_t{16} << 20;
 // Rows parsed before their ids are counted: the counting kernel then runs over a block of
 // codes per column, as it does over a data set.
 constexpr std::size_t block_rows = 4 * detail::count_block_rows;
-constexpr std::uint64_t max_cells = std::numeric_limits<std::uint32_t>::max();
+// Counting stops laying out a family's cells past pgm's limit of a table (pgm/core/limits.hpp);
+// the tables are then refused by count_table with the limit's message.
+constexpr std::uint64_t max_cells = max_table_cells;
 
 enum class count_mode { labels, known, binned };
 
@@ -460,12 +462,9 @@ csv_counts csv_counter::finish(const csv_partial_counts& counts) const {
     const auto& members = plan.families[f];
     std::vector<variable> parents;
     for (std::size_t m = 1; m < members.size(); ++m) parents.push_back(result.variables[members[m]]);
-    count_table table(result.variables[members[0]], std::move(parents));
+    count_table table(result.variables[members[0]], std::move(parents));  // throws past max_table_cells
     const auto& family = partial.families[f];
-    if (family.too_large || table.counts().size() > max_cells) {
-      throw model_error("the table of '" + table.child().name() + "' has " + std::to_string(table.counts().size()) +
-                        " cells, more than pgm can count (2^32)");
-    }
+    PGM_ASSERT(!family.too_large, "a family too large to count has a table within the limit");
     // Final strides: the child's state, then each parent's state times its stride in the table.
     std::vector<std::size_t> strides{1};
     for (std::size_t m = 1; m < members.size(); ++m) {
@@ -506,7 +505,9 @@ csv_counts count_csv(csv_reader& input, const csv_count_request& request) {
     const auto consumed = count_window(plan, sum, text, plan.window_bytes, bytes.at_end(), line);
     line += sum.lines - lines_before;
     if (consumed == 0) {
-      if (bytes.at_end()) break;     // only blank space was left
+      if (bytes.at_end()) break;  // only blank space was left
+      if (text.size() > csv_max_record_bytes)
+        throw parse_error(reader.source, line, 1, detail::record_too_long_message());
       bytes.fetch(text.size() * 2);  // a record longer than what is here
       continue;
     }

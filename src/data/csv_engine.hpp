@@ -15,10 +15,12 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/data/csv.hpp"
 #include "pgm/data/missing.hpp"
 #include "pgm/data/state_order.hpp"
@@ -34,6 +36,16 @@ struct csv_failure {
   std::size_t column;
   std::string what;
 };
+
+/// The messages of the CSV limits (pgm/core/limits.hpp), one wording for every reader.
+[[nodiscard]] inline std::string too_many_columns_message() {
+  return "more than " + std::to_string(csv_max_columns) +
+         " fields in a record, pgm's limit of CSV columns (docs/limits.md)";
+}
+[[nodiscard]] inline std::string record_too_long_message() {
+  return "a record longer than " + std::to_string(csv_max_record_bytes >> 20) +
+         " MiB, pgm's limit of a CSV record (docs/limits.md)";
+}
 
 enum class csv_record {
   complete,    // a record was read
@@ -74,6 +86,10 @@ class csv_record_reader {
       csv_field field;
       if (!read_field(field)) return give_up();
       fields.push_back(field);
+      if (fields.size() > csv_max_columns) throw csv_failure{field.line, field.column, too_many_columns_message()};
+      if (cursor_.pos - start.pos > csv_max_record_bytes) {
+        throw csv_failure{record_line_, start.pos - start.line_start + 1, record_too_long_message()};
+      }
       if (cursor_.pos >= text_.size()) return final_ ? csv_record::complete : give_up();
       const char c = text_[cursor_.pos];
       if (c == delimiter_) {
@@ -150,6 +166,8 @@ class csv_record_reader {
         throw csv_failure{line, column, "a quoted field is never closed"};
       }
       const char c = text_[cursor_.pos++];
+      // Not a byte more than the limit of a record is copied into one field.
+      if (cursor_.pos - quote > csv_max_record_bytes) throw csv_failure{line, column, record_too_long_message()};
       if (c == '"') {
         if (cursor_.pos >= text_.size() && !final_) return false;  // "" may be split
         if (cursor_.pos < text_.size() && text_[cursor_.pos] == '"') {
@@ -214,6 +232,7 @@ class csv_plain_reader {
       ++line_;
       line_start_ = pos_;
     }
+    const std::size_t record_start = pos_;
     while (true) {
       const std::size_t start = pos_;
       std::size_t p = start;
@@ -223,6 +242,11 @@ class csv_plain_reader {
       while (first < last && (text[first] == ' ' || text[first] == '\t')) ++first;
       while (last > first && (text[last - 1] == ' ' || text[last - 1] == '\t')) --last;
       fields.push_back({text_.substr(first, last - first), line_, start - line_start_ + 1});
+      if (fields.size() > csv_max_columns)
+        throw csv_failure{line_, start - line_start_ + 1, too_many_columns_message()};
+      if (p - record_start > csv_max_record_bytes) {
+        throw csv_failure{line_, record_start - line_start_ + 1, record_too_long_message()};
+      }
       if (p >= n) {
         pos_ = n;
         return true;
@@ -275,9 +299,10 @@ std::size_t for_each_record(std::string_view text, char delimiter, std::vector<c
 [[nodiscard]] inline std::vector<std::string> header_names(const std::vector<csv_field>& fields,
                                                            const std::string& source) {
   std::vector<std::string> header;
+  std::unordered_set<std::string_view> seen;  // views into `fields`, which outlive this call
   for (const auto& field : fields) {
     if (field.text.empty()) throw parse_error(source, field.line, field.column, "a column in the header has no name");
-    if (std::find(header.begin(), header.end(), field.text) != header.end()) {
+    if (!seen.insert(field.text).second) {
       throw parse_error(source, field.line, field.column,
                         "the column '" + std::string(field.text) + "' appears twice in the header");
     }
@@ -320,7 +345,7 @@ std::size_t for_each_record(std::string_view text, char delimiter, std::vector<c
 }
 
 [[nodiscard]] inline std::string non_finite_message(std::string_view text) {
-  return "'" + std::string(text) + "' is not a finite number (NaN and infinities are not supported)";
+  return "'" + std::string(text) + "' is not a finite number (" + number_hint(text) + ")";
 }
 
 /// Whether a field's text is one of the missing tokens, in one table look-up for most texts
@@ -395,9 +420,9 @@ struct missing_rule {
 /// A field's number for a continuous column: fails on text and on NaN or an infinity.
 [[nodiscard]] inline double continuous_value(const csv_field& field, const std::string& column) {
   const auto value = parse_double(field.text);
-  if (!value) fail_field(field, column, "expected a number, got '" + std::string(field.text) + "'");
+  if (!value) fail_field(field, column, "expected a number, got " + quoted_number(field.text));
   if (!std::isfinite(*value)) fail_field(field, column, non_finite_message(field.text));
-  return *value;
+  return *value + 0.0;  // -0 is 0 (docs/limits.md): written back as "0"
 }
 
 /// The value of a label that is a small whole number written the one canonical way ("7", not

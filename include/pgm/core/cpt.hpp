@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/core/mixed_radix.hpp"
 #include "pgm/core/strong_index.hpp"
 #include "pgm/core/variable.hpp"
@@ -35,7 +36,8 @@ class cpt {
   cpt(variable child, std::vector<variable> parents)
       : child_(std::move(child)), parents_(std::move(parents)), radix_(radices(parents_)) {
     check_names();
-    values_.assign(child_.cardinality() * radix_.size(), T{1} / static_cast<T>(child_.cardinality()));
+    values_.assign(checked_table_cells(child_.name(), child_.cardinality(), radix_.size()),
+                   T{1} / static_cast<T>(child_.cardinality()));
   }
 
   /// A table with the given values (configuration major). Throws model_error if the size is

@@ -66,6 +66,12 @@ class not_a_dag : public model_error {
   std::vector<std::string> cycle_;
 };
 
+/// A table beyond pgm's limit of cells (pgm/core/limits.hpp), refused before it is allocated.
+class table_too_large : public model_error {
+ public:
+  using model_error::model_error;
+};
+
 /// A file that cannot be opened, read or written.
 class io_error : public error {
  public:

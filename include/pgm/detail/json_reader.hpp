@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/detail/text.hpp"
 
@@ -83,6 +84,7 @@ class json_reader {
   }
 
   nlohmann::json parse(std::string_view text) const {
+    check_depth(text);
     try {
       return nlohmann::json::parse(text);
     } catch (const nlohmann::json::parse_error& e) {
@@ -131,6 +133,40 @@ class json_reader {
   }
 
  private:
+  /// Refuses nesting deeper than json_max_depth before the document is built, naming where
+  /// the limit is passed (strings are skipped; syntax is left to the parser).
+  void check_depth(std::string_view text) const {
+    std::size_t depth = 0, line = 1, column = 1;
+    bool in_string = false, escaped = false;
+    for (const char c : text) {
+      if (in_string) {
+        if (escaped) {
+          escaped = false;
+        } else if (c == '\\') {
+          escaped = true;
+        } else if (c == '"') {
+          in_string = false;
+        }
+      } else if (c == '"') {
+        in_string = true;
+      } else if (c == '[' || c == '{') {
+        if (++depth > json_max_depth) {
+          throw parse_error(source_, line, column,
+                            "arrays and objects nested deeper than " + std::to_string(json_max_depth) +
+                                " levels, pgm's limit (docs/limits.md)");
+        }
+      } else if ((c == ']' || c == '}') && depth > 0) {
+        --depth;
+      }
+      if (c == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+  }
+
   std::string source_;
 };
 

@@ -30,6 +30,49 @@ namespace pgm::detail {
   return value;
 }
 
+/// Why `text`, which is not a finite number as pgm reads numbers (docs/limits.md, "Numbers"),
+/// might have been meant as one: "a comma is no decimal mark: write 1.5". Empty for a finite
+/// number and for text that looks like no number at all.
+[[nodiscard]] inline std::string number_hint(std::string_view text) {
+  const auto value = parse_double(text);
+  if (value && std::isfinite(*value)) return {};
+  auto body = text;
+  if (!body.empty() && (body.front() == '-' || body.front() == '+')) body.remove_prefix(1);
+  if (value && std::isnan(*value)) return "NaN is not accepted";
+  if (value) {
+    const bool spelled =
+        body.size() >= 3 && (body[0] | 0x20) == 'i' && (body[1] | 0x20) == 'n' && (body[2] | 0x20) == 'f';
+    return spelled ? "infinities are not accepted" : "out of the range of a double, magnitudes up to about 1.8e308";
+  }
+  if (body.size() > 1 && body[0] == '0' && (body[1] | 0x20) == 'x') {
+    return "hexadecimal is not accepted: write the value in decimal";
+  }
+  const auto comma = text.find(',');
+  if (comma == std::string_view::npos) return {};
+  std::string with_point(text);
+  with_point[comma] = '.';
+  const auto after = text.substr(comma + 1);
+  const bool one_comma = after.find(',') == std::string_view::npos;
+  if (one_comma && after.size() == 3 && parse_double(with_point)) {
+    return "neither thousands separators nor a decimal comma are accepted: write " +
+           std::string(text.substr(0, comma)) + std::string(after) + " or " + with_point;
+  }
+  if (one_comma && parse_double(with_point)) return "a comma is no decimal mark: write " + with_point;
+  std::string without;
+  for (char c : text) {
+    if (c != ',') without += c;
+  }
+  if (parse_double(without)) return "thousands separators are not accepted: write " + without;
+  return {};
+}
+
+/// `text` quoted, with number_hint's reason in parentheses when there is one: for messages
+/// such as "expected a number, got '1,5' (a comma is no decimal mark: write 1.5)".
+[[nodiscard]] inline std::string quoted_number(std::string_view text) {
+  const auto hint = number_hint(text);
+  return "'" + std::string(text) + "'" + (hint.empty() ? "" : " (" + hint + ")");
+}
+
 /// The shortest decimal text that reads back to exactly `value`.
 [[nodiscard]] inline std::string format_double(double value) {
   char buffer[32];

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "pgm/core/limits.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/detail/json_reader.hpp"
 
@@ -60,7 +61,7 @@ class scenario_reader : public json_reader {
     s.title = string(member(doc, "", "title"), "/title");
     const auto& prior = member(doc, "", "prior");
     s.prior_task = string(member(prior, "/prior", "task"), "/prior/task");
-    s.prior_rows = count(member(prior, "/prior", "rows"), "/prior/rows");
+    s.prior_rows = rows(member(prior, "/prior", "rows"), "/prior/rows");
     if (s.prior_rows == 0) fail("/prior/rows", "the prior needs at least one row");
     s.prior_node = string(member(prior, "/prior", "node"), "/prior/node");
     const auto& target = member(doc, "", "target");
@@ -69,8 +70,8 @@ class scenario_reader : public json_reader {
     for (const auto& t : array(member(target, "/target", "tasks"), "/target/tasks")) {
       const std::string path = "/target/tasks/" + std::to_string(i++);
       s.targets.push_back({string(member(t, path, "task"), path + "/task"),
-                           count(member(t, path, "train_rows"), path + "/train_rows"),
-                           count(member(t, path, "ground_truth_rows"), path + "/ground_truth_rows")});
+                           rows(member(t, path, "train_rows"), path + "/train_rows"),
+                           rows(member(t, path, "ground_truth_rows"), path + "/ground_truth_rows")});
       if (s.targets.back().train_rows == 0 || s.targets.back().ground_truth_rows == 0) {
         fail(path, "train_rows and ground_truth_rows must be positive");
       }
@@ -98,6 +99,15 @@ class scenario_reader : public json_reader {
   std::size_t count(const nlohmann::json& value, const std::string& path) const {
     if (!value.is_number_unsigned()) fail(path, "expected a whole number ≥ 0");
     return value.get<std::size_t>();
+  }
+  /// Rows to simulate: a count within max_simulated_rows.
+  std::size_t rows(const nlohmann::json& value, const std::string& path) const {
+    const auto number = count(value, path);
+    if (number > max_simulated_rows) {
+      fail(path, std::to_string(number) + " rows are more than " + std::to_string(max_simulated_rows) +
+                     ", pgm's limit of rows to simulate (docs/limits.md)");
+    }
+    return number;
   }
 };
 

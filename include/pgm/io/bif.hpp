@@ -10,6 +10,7 @@
 /// it is refused rather than guessed.)
 
 #include <cctype>
+#include <charconv>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -17,11 +18,13 @@
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <system_error>
 #include <utility>
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/io/read_options.hpp"
@@ -279,9 +282,11 @@ class bif_parser {
         if (kind.text != "discrete") fail(kind, "only discrete variables are supported, found '" + kind.text + "'");
         expect_symbol('[');
         const auto count_token = expect_word("the number of states");
-        const auto count = parse_double(count_token.text);
-        if (!count || *count < 1 || *count != static_cast<double>(static_cast<std::size_t>(*count))) {
-          fail(count_token, "expected the number of states, found '" + count_token.text + "'");
+        std::size_t count = 0;
+        const auto& digits = count_token.text;
+        const auto [digits_end, failure] = std::from_chars(digits.data(), digits.data() + digits.size(), count);
+        if (failure != std::errc() || digits_end != digits.data() + digits.size() || count < 1) {
+          fail(count_token, "expected the number of states (a whole number ≥ 1), found '" + count_token.text + "'");
         }
         expect_symbol(']');
         expect_symbol('{');
@@ -290,7 +295,7 @@ class bif_parser {
           labels.push_back(expect_word("a state name").text);
           accept_symbol(',');
         }
-        if (labels.size() != static_cast<std::size_t>(*count)) {
+        if (labels.size() != count) {
           fail(count_token, "variable '" + name.text + "' declares " + count_token.text + " states but lists " +
                                 std::to_string(labels.size()));
         }
@@ -317,7 +322,10 @@ class bif_parser {
         std::vector<double> edges;
         for (const auto& piece : split(edges_text->second, ',')) {
           const auto value = parse_double(piece);
-          if (!value) fail(edges_text->first, "the edges of '" + name.text + "' must be numbers");
+          if (!value || !std::isfinite(*value)) {
+            fail(edges_text->first,
+                 "the edges of '" + name.text + "' must be finite numbers, found " + quoted_number(piece));
+          }
           edges.push_back(*value);
         }
         var.set_edges(std::move(edges));
@@ -334,7 +342,9 @@ class bif_parser {
     while (!accept_symbol(';')) {
       const auto token = expect_word("a probability or ';'");
       const auto value = parse_double(token.text);
-      if (!value || !std::isfinite(*value)) fail(token, "expected a probability, found '" + token.text + "'");
+      if (!value || !std::isfinite(*value)) {
+        fail(token, "expected a probability, found " + quoted_number(token.text));
+      }
       values.push_back(*value);
       accept_symbol(',');
     }
@@ -397,7 +407,12 @@ class bif_parser {
       for (const auto& p : parents) cards.push_back(p.cardinality());
       return mixed_radix(cards);
     }();
-    std::vector<double> values(j * radix.size());
+    std::vector<double> values;
+    try {
+      values.resize(checked_table_cells(decl.var.name(), j, radix.size()));
+    } catch (const model_error& e) {
+      fail(block.where, e.what());
+    }
     auto check_count = [&](const bif_token& at, const std::vector<double>& row) {
       if (row.size() != j) {
         fail(at, "expected " + std::to_string(j) + " probabilities for '" + decl.var.name() + "', found " +

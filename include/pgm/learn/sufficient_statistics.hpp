@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/core/mixed_radix.hpp"
 #include "pgm/core/strong_index.hpp"
 #include "pgm/core/variable.hpp"
@@ -37,10 +38,7 @@ class count_table {
     std::vector<std::size_t> cards;
     for (const auto& p : parents_) cards.push_back(p.cardinality());
     radix_ = mixed_radix(std::move(cards));
-    if (radix_.size() > std::numeric_limits<std::size_t>::max() / child_.cardinality()) {
-      throw model_error("the table of '" + child_.name() + "' has too many cells");
-    }
-    counts_.assign(radix_.size() * child_.cardinality(), 0);
+    counts_.assign(checked_table_cells(child_.name(), child_.cardinality(), radix_.size()), 0);
   }
 
   [[nodiscard]] const variable& child() const noexcept { return child_; }

@@ -1,0 +1,10 @@
+// Correspondence maps, --map (pgm/transfer/correspondence.hpp).
+
+#include "pgm/transfer/correspondence.hpp"
+
+#include "harness.hpp"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  return pgm::fuzz::expect_value_or_error(
+      [&] { static_cast<void>(pgm::parse_correspondence(pgm::fuzz::text_of(data, size))); });
+}

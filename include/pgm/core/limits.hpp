@@ -1,0 +1,49 @@
+#pragma once
+/// \file
+/// The sizes pgm refuses rather than trying (docs/limits.md): beyond them an input is an error
+/// that names the limit, reported before memory or time is spent on it, instead of an
+/// out-of-memory kill, a stack overflow or an hour of work.
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <string>
+
+#include "pgm/core/error.hpp"
+
+namespace pgm {
+
+/// Cells of one table (child states × parent configurations): 2^24, 128 MiB of doubles or
+/// counts. The published networks need at most 8,064 (pathfinder); a larger table is almost
+/// always a raw continuous column taken for a variable with a state per distinct value.
+inline constexpr std::size_t max_table_cells = std::size_t{1} << 24;
+
+/// Columns of a CSV file (fields of its header or any record).
+inline constexpr std::size_t csv_max_columns = std::size_t{1} << 16;
+
+/// Bytes of one CSV record (one line, or several when a quoted field holds line ends): 64 MiB.
+inline constexpr std::size_t csv_max_record_bytes = std::size_t{64} << 20;
+
+/// Nesting of arrays and objects in a JSON file (models, discretizations, tasks, scenarios).
+inline constexpr std::size_t json_max_depth = 256;
+
+/// Rows a scenario may ask to simulate for one data set, as `pgm simulate --rows` allows.
+inline constexpr std::uint64_t max_simulated_rows = 1'000'000'000;
+
+/// The cells of a table whose child has `child_states` states and whose parents have
+/// `configurations` configurations; throws model_error naming `child` and the limit when
+/// they exceed max_table_cells (the product is never formed when it would overflow).
+[[nodiscard]] inline std::size_t checked_table_cells(const std::string& child, std::size_t child_states,
+                                                     std::size_t configurations) {
+  if (configurations != 0 && child_states > max_table_cells / configurations) {
+    const bool overflows = child_states > std::numeric_limits<std::size_t>::max() / configurations;
+    throw table_too_large("the table of '" + child + "' would have " +
+                          (overflows ? std::string("more than 2^64") : std::to_string(child_states * configurations)) +
+                          " cells (" + std::to_string(child_states) + " states × " + std::to_string(configurations) +
+                          " parent configurations), more than pgm's limit of " + std::to_string(max_table_cells) +
+                          " cells per table (docs/limits.md)");
+  }
+  return child_states * configurations;
+}
+
+}  // namespace pgm

@@ -1,0 +1,76 @@
+// The program at pgm's limits and with the numbers users type (docs/limits.md): a clear error,
+// a non-zero exit and no output file.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "pgm/io/network_file.hpp"
+#include "support/program_test.hpp"
+
+namespace pgm {
+namespace {
+
+using ::testing::HasSubstr;
+
+using limits_cli_test = pgm::testing::program_test;
+
+// Two raw continuous columns of 5,000 distinct values taken as labels: y | x would need
+// 5000 × 5000 = 2.5·10^7 cells (and OOM-killed the program at 8·10^8 before the limit).
+TEST_F(limits_cli_test, fit_on_raw_continuous_columns_is_refused_with_a_hint_to_discretize) {
+  std::string csv = "x,y\n";
+  for (int i = 0; i < 5000; ++i) csv += std::to_string(i * 0.001) + "," + std::to_string(i * 0.37 + 0.5) + "\n";
+  const auto data = file("raw.csv", csv);
+  const auto out = path("f.bif");
+  const auto r = run("fit --threads 2 --data " + data.string() + " --edges \"x->y\" --out " + out.string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("the table of 'y' would have 25000000 cells (5000 states × 5000 parent "
+                               "configurations), more than pgm's limit of 16777216 cells per table"));
+  EXPECT_THAT(r.err, HasSubstr("hint: a variable with that many states is usually a continuous column read as "
+                               "labels; bin it with --discretization (or pgm discretize) first"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
+TEST_F(limits_cli_test, number_options_refuse_what_is_not_plainly_a_number) {
+  const auto model = file("m.bif", R"(network n { }
+variable a { type discrete [ 2 ] { 0, 1 }; }
+probability ( a ) { table 0.2, 0.8; }
+)");
+  const auto data = file("d.csv", "a,b\n0,1\n1,0\n0,0\n1,1\n");
+  const auto fit = "fit --data " + data.string() + " --edges \"a->b\" --estimator bayes --prior dirichlet --out " +
+                   path("f.bif").string() + " --alpha ";
+  expect_failure(fit + "nan", "--alpha: expected a finite number ≥ 0, got 'nan' (NaN is not accepted)", path("f.bif"));
+  expect_failure(fit + "1e400", "got '1e400' (out of the range of a double", path("f.bif"));
+  expect_failure(fit + "0x1p-3", "got '0x1p-3' (hexadecimal is not accepted", path("f.bif"));
+  expect_failure(fit + "1,5", "got '1,5' (a comma is no decimal mark: write 1.5)", path("f.bif"));
+  expect_failure(fit + "-1", "expected a finite number ≥ 0, got -1", path("f.bif"));
+  const auto minus_zero = run(fit + "-0");  // -0 is 0: the maximum-likelihood table
+  ASSERT_EQ(minus_zero.code, 0) << minus_zero.err;
+  EXPECT_DOUBLE_EQ(read_network(path("f.bif")).table("b").probability("1", {"0"}), 0.5);
+
+  const auto learn = "learn-structure --data " + data.string() + " --out " + path("s.json").string() + " --alpha ";
+  expect_failure(learn + "nan", "expected a number in (0, 1), got 'nan'", path("s.json"));
+  expect_failure(learn + "1", "expected a number in (0, 1), got 1", path("s.json"));
+  expect_failure(learn + "0,05", "got '0,05' (a comma is no decimal mark: write 0.05)", path("s.json"));
+
+  const auto prevent = "prevent --model " + model.string() + " --assign a=0 --success a=1 --controllable a --epsilon ";
+  expect_failure(prevent + "nan", "--epsilon: expected a number in [0, 1), got 'nan'");
+  expect_failure(prevent + "0x1p-1", "got '0x1p-1' (hexadecimal is not accepted");
+  expect_failure(prevent + "1", "expected a number in [0, 1), got 1");
+
+  const auto simulate = "simulate --task 1-stack --out " + path("s.csv").string() + " --rows ";
+  expect_failure(simulate + "1e3", "expected a whole number from 1 to 1000000000 (digits only), got '1e3'",
+                 path("s.csv"));
+  expect_failure(simulate + "1,000",
+                 "got '1,000' (neither thousands separators nor a decimal comma are accepted: write 1000 or 1.000)",
+                 path("s.csv"));
+  expect_failure(simulate + "10 --seed -0",
+                 "expected a whole number from 0 to 18446744073709551615 (digits only), "
+                 "got '-0'",
+                 path("s.csv"));
+  expect_failure(simulate + "0x10", "got '0x10' (hexadecimal is not accepted", path("s.csv"));
+}
+
+}  // namespace
+}  // namespace pgm
