@@ -171,7 +171,8 @@ void add_fit_command(CLI::App& app) {
   auto* edges = cmd->add_option("--edges", args->edges,
                                 "The structure as edges, e.g. \"xOff1->onTop1,yOff1->onTop1\"; "
                                 "states are the values found in the data, sorted (numbers numerically)");
-  auto* model = cmd->add_option("--model", args->model, "The structure (and states) from a model file instead: .bif, .xml, .net or .json");
+  auto* model = cmd->add_option("--model", args->model,
+                                "The structure (and states) from a model file instead: .bif, .xml, .net or .json");
   edges->excludes(model);
   model->excludes(edges);
   cmd->add_option("--estimator", args->estimator, "mle (eq. 3) or bayes (eq. 6)")

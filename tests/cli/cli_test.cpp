@@ -36,8 +36,9 @@ constexpr const char* stacking =
     "0,0,Red,1\n0,1,Blue,1\n1,1,Red,0\n1,0,Green,1\n0,0,Red,1\n1,1,Blue,0\n2,0,Red,0\n";
 
 TEST_F(cli_test, every_command_has_help) {
-  for (const std::string command : {"", "fit ", "discretize ", "show ", "transfer ", "correspond ", "experiment ",
-                                    "report ", "simulate ", "predict ", "prevent ", "learn-structure ", "convert ", "query "}) {
+  for (const std::string command :
+       {"", "fit ", "discretize ", "show ", "transfer ", "correspond ", "experiment ", "report ", "simulate ",
+        "predict ", "prevent ", "learn-structure ", "convert ", "query "}) {
     const auto r = run(command + "--help");
     EXPECT_EQ(r.code, 0) << command;
     EXPECT_THAT(r.out, HasSubstr("Usage")) << command;

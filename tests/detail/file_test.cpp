@@ -35,9 +35,9 @@ TEST_F(file_test, replaces_a_file_and_leaves_nothing_beside_it) {
 
 TEST_F(file_test, a_failed_write_keeps_the_old_content) {
   write_text(folder_ / "a.txt", "old");
-  EXPECT_THROW(pgm::detail::write_file_atomically(folder_ / "a.txt",
-                                                  [](std::ostream&) { throw pgm::io_error("stopped"); }),
-               pgm::io_error);
+  EXPECT_THROW(
+      pgm::detail::write_file_atomically(folder_ / "a.txt", [](std::ostream&) { throw pgm::io_error("stopped"); }),
+      pgm::io_error);
   EXPECT_EQ(pgm::detail::read_file(folder_ / "a.txt"), "old");
   EXPECT_EQ(std::distance(fs::directory_iterator(folder_), fs::directory_iterator()), 1);
 }

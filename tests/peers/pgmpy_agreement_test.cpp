@@ -145,17 +145,18 @@ TEST_F(pgmpy_agreement_test, files_we_write_pgmpy_reads_and_files_pgmpy_writes_w
   const variable b("on-top", {"no", "yes"});
   const auto dashed = bayesian_network::from_tables(
       {cpt<double>(a, {}, {0.2, 0.3, 0.5}), cpt<double>(b, {a}, {0.1, 0.9, 0.4, 0.6, 0.5, 0.5})});
-  const std::vector<std::pair<std::string, const bayesian_network*>> ours{
-      {"water.bif", &water}, {"water.xml", &water}, {"sachs.xml", &sachs}, {"dashed.bif", &dashed},
-      {"dashed.xml", &dashed}};
+  const std::vector<std::pair<std::string, const bayesian_network*>> ours{{"water.bif", &water},
+                                                                          {"water.xml", &water},
+                                                                          {"sachs.xml", &sachs},
+                                                                          {"dashed.bif", &dashed},
+                                                                          {"dashed.xml", &dashed}};
   nlohmann::json request = {{"read", nlohmann::json::array()}};
   for (const auto& [name, net] : ours) {
     write_network(*net, path(name));
     request["read"].push_back(path(name).string());
   }
-  request["rewrite"] = {{{"in", sachs_path.string()},
-                         {"bif", path("pgmpy.bif").string()},
-                         {"xmlbif", path("pgmpy.xml").string()}}};
+  request["rewrite"] = {
+      {{"in", sachs_path.string()}, {"bif", path("pgmpy.bif").string()}, {"xmlbif", path("pgmpy.xml").string()}}};
   const auto answers = ask_pgmpy("formats", "-", request);
   ASSERT_EQ(answers.size(), ours.size());
   for (std::size_t i = 0; i < ours.size(); ++i) expect_same_tables(answers[i], *ours[i].second, ours[i].first);
