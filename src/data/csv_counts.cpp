@@ -257,6 +257,33 @@ std::size_t count_piece(const counter_impl& plan, count_worker& worker, std::str
   }
 }
 
+/// Adds `label` first seen at `first` to `labels`: a new label, or an earlier first place for
+/// one already there. Returns its id.
+std::uint32_t merge_label(detail::label_dictionary& labels, std::string_view label, const detail::csv_place& first) {
+  const auto id = labels.find(label);
+  if (id == detail::label_dictionary::none) return labels.add(label, first);
+  auto& known = labels.entries()[id].first;
+  if (std::pair(first.line, first.column) < std::pair(known.line, known.column)) known = first;
+  return id;
+}
+
+/// Adds the cells of `from` to `to`, laid out by `strides` (one per member) after each
+/// member's id is mapped by `id_of` (per column; empty: the id stays).
+template <class Stride>
+void add_mapped(const family_counts& from, const std::vector<std::vector<std::uint32_t>>& id_of,
+                const std::vector<Stride>& strides, std::uint64_t* to) {
+  for (std::size_t cell = 0; cell < from.counts.size(); ++cell) {
+    if (from.counts[cell] == 0) continue;
+    std::size_t mapped = 0;
+    for (std::size_t m = 0; m < from.members.size(); ++m) {
+      const auto digit = cell / from.strides[m] % from.cards[m];
+      const auto& map = id_of[from.members[m]];
+      mapped += (map.empty() ? digit : map[digit]) * strides[m];
+    }
+    to[mapped] += from.counts[cell];
+  }
+}
+
 /// Adds `other` into `into`. Label places in `other` are relative to the first lines of their
 /// chunks, `first_lines` (none: they are absolute already).
 void merge(const counter_impl& plan, partial_impl& into, partial_impl& other,
@@ -272,14 +299,7 @@ void merge(const counter_impl& plan, partial_impl& into, partial_impl& other,
     for (auto& entry : other.labels[c].entries()) {
       auto first = entry.first;
       if (first_lines) first.line += (*first_lines)[first.chunk];
-      auto id = labels.find(entry.text);
-      if (id == detail::label_dictionary::none) {
-        id = labels.add(entry.text, first);
-      } else {
-        auto& known = labels.entries()[id].first;
-        if (std::pair(first.line, first.column) < std::pair(known.line, known.column)) known = first;
-      }
-      id_of[c].push_back(id);
+      id_of[c].push_back(merge_label(labels, entry.text, first));
     }
   }
   for (std::size_t f = 0; f < into.families.size(); ++f) {
@@ -290,17 +310,7 @@ void merge(const counter_impl& plan, partial_impl& into, partial_impl& other,
       family.too_large = true;
       family.counts = {};
     }
-    if (family.too_large) continue;
-    for (std::size_t cell = 0; cell < theirs.counts.size(); ++cell) {
-      if (theirs.counts[cell] == 0) continue;
-      std::size_t mine = 0;
-      for (std::size_t m = 0; m < family.members.size(); ++m) {
-        const auto digit = cell / theirs.strides[m] % theirs.cards[m];
-        const auto& map = id_of[family.members[m]];
-        mine += (map.empty() ? digit : map[digit]) * family.strides[m];
-      }
-      family.counts[mine] += theirs.counts[cell];
-    }
+    if (!family.too_large) add_mapped(theirs, id_of, family.strides, family.counts.data());
   }
 }
 
@@ -470,17 +480,7 @@ csv_counts csv_counter::finish(const csv_partial_counts& counts) const {
     for (std::size_t m = 1; m < members.size(); ++m) {
       strides.push_back(table.child_cardinality() * table.parent_radix().stride(m - 1));
     }
-    auto cells = table.counts();
-    for (std::size_t cell = 0; cell < family.counts.size(); ++cell) {
-      if (family.counts[cell] == 0) continue;
-      std::size_t final_cell = 0;
-      for (std::size_t m = 0; m < members.size(); ++m) {
-        const auto digit = cell / family.strides[m] % family.cards[m];
-        const auto& map = state_of[members[m]];
-        final_cell += (map.empty() ? digit : map[digit]) * strides[m];
-      }
-      cells[final_cell] += family.counts[cell];
-    }
+    add_mapped(family, state_of, strides, table.counts().data());
     result.families.push_back(std::move(table));
   }
   return result;
@@ -520,53 +520,149 @@ csv_counts count_csv(csv_reader& input, const csv_count_request& request) {
 
 namespace {
 
-/// The bytes of partial counts, for process 0 to add up (pgm::detail::byte_writer's form).
-[[nodiscard]] std::string to_bytes(const partial_impl& partial) {
+// Over processes the provisional ids of a label differ by process, so the processes first
+// agree on one id per label (process 0 merges their labels in file order and broadcasts the
+// result); then each lays its counts out over those ids and one reduction sums them.
+
+/// This process's labels and their first places, per column of labels, for process 0.
+[[nodiscard]] std::string labels_to_bytes(const counter_impl& plan, const partial_impl& partial) {
   detail::byte_writer out;
-  out.put<std::uint64_t>(partial.rows);
-  out.put<std::uint64_t>(partial.dropped);
-  out.put<std::uint64_t>(partial.lines);
-  for (std::size_t c = 0; c < partial.labels.size(); ++c) {
-    out.put<std::uint64_t>(partial.outside[c]);
+  for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+    if (plan.columns[c].mode != count_mode::labels) continue;
     out.put<std::uint64_t>(partial.labels[c].size());
     for (const auto& entry : partial.labels[c].entries()) {
       out.put(entry.text);
-      out.put(entry.first);
+      out.put<std::uint64_t>(entry.first.line);
+      out.put<std::uint64_t>(entry.first.column);
     }
-  }
-  for (const auto& family : partial.families) {
-    out.put<std::uint8_t>(family.too_large ? 1 : 0);
-    out.put_all(std::span<const std::uint32_t>(family.cards));
-    out.put_all(std::span<const std::uint32_t>(family.strides));
-    out.put<std::uint64_t>(family.counts.size());
-    out.put_all(std::span<const std::uint64_t>(family.counts));
   }
   return out.take();
 }
 
-[[nodiscard]] partial_impl from_bytes(const counter_impl& plan, std::string_view bytes) {
-  auto partial = empty_partial(plan);
+/// Adds the labels of one process (labels_to_bytes) to `labels`, as merge adds them.
+void merge_labels(const counter_impl& plan, std::vector<detail::label_dictionary>& labels, std::string_view bytes) {
   detail::byte_reader in(bytes);
-  partial.rows = in.get<std::uint64_t>();
-  partial.dropped = in.get<std::uint64_t>();
-  partial.lines = in.get<std::uint64_t>();
-  for (std::size_t c = 0; c < partial.labels.size(); ++c) {
-    partial.outside[c] = in.get<std::uint64_t>();
-    detail::label_dictionary labels;  // a known column's states come again, in their order
+  for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+    if (plan.columns[c].mode != count_mode::labels) continue;
     for (auto n = in.get<std::uint64_t>(); n > 0; --n) {
-      auto text = in.get_string();
-      labels.add(text, in.get<detail::csv_place>());
+      const auto text = in.get_string();
+      detail::csv_place first;
+      first.line = in.get<std::uint64_t>();
+      first.column = in.get<std::uint64_t>();
+      static_cast<void>(merge_label(labels[c], text, first));
     }
-    partial.labels[c] = std::move(labels);
   }
-  for (auto& family : partial.families) {
-    family.too_large = in.get<std::uint8_t>() != 0;
-    in.get_all(std::span<std::uint32_t>(family.cards));
-    in.get_all(std::span<std::uint32_t>(family.strides));
-    family.counts.resize(in.get<std::uint64_t>());
-    in.get_all(std::span<std::uint64_t>(family.counts));
+  if (!in.at_end()) throw std::logic_error("labels from another process do not fit their counter");
+}
+
+/// The labels of every column of labels in the order of their ids, for every process.
+[[nodiscard]] std::string ids_to_bytes(const counter_impl& plan, const std::vector<detail::label_dictionary>& labels) {
+  detail::byte_writer out;
+  for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+    if (plan.columns[c].mode != count_mode::labels) continue;
+    out.put<std::uint64_t>(labels[c].size());
+    for (const auto& entry : labels[c].entries()) out.put(entry.text);
   }
-  if (!in.at_end()) throw std::logic_error("partial counts from another process do not fit their counter");
+  return out.take();
+}
+
+[[nodiscard]] std::vector<detail::label_dictionary> ids_from_bytes(const counter_impl& plan, std::string_view bytes) {
+  std::vector<detail::label_dictionary> labels(plan.columns.size());
+  detail::byte_reader in(bytes);
+  for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+    if (plan.columns[c].mode != count_mode::labels) continue;
+    for (auto n = in.get<std::uint64_t>(); n > 0; --n) labels[c].add(in.get_string(), {});
+  }
+  if (!in.at_end()) throw std::logic_error("label ids from process 0 do not fit their counter");
+  return labels;
+}
+
+/// The numbers every process adds up: rows, dropped rows, line ends, each column's values
+/// outside its intervals, then the cells of every family (laid out for the labels of all
+/// processes) one after another.
+struct summed_layout {
+  static constexpr std::size_t rows = 0;
+  static constexpr std::size_t dropped = 1;
+  static constexpr std::size_t lines = 2;
+  static constexpr std::size_t outside = 3;  // then one per column
+  std::vector<family_counts> families;       // their cards and strides, no counts
+  std::vector<std::size_t> offsets;          // of each family's cells
+  std::size_t size = 0;
+};
+
+[[nodiscard]] summed_layout layout_for(const counter_impl& plan, const std::vector<detail::label_dictionary>& labels) {
+  summed_layout layout;
+  layout.size = summed_layout::outside + plan.columns.size();
+  for (const auto& members : plan.families) {
+    family_counts family;
+    family.members = members;
+    std::uint64_t cells = 1;
+    for (auto column : members) {
+      const auto card = static_cast<std::uint32_t>(plan.columns[column].mode == count_mode::labels
+                                                       ? labels[column].size()
+                                                       : plan.columns[column].var.cardinality());
+      family.cards.push_back(card);
+      cells *= card;
+      family.too_large = family.too_large || cells > max_cells;
+      if (family.too_large) cells = max_cells + 1;  // no overflow however many members follow
+    }
+    family.strides = strides_of(family.cards);
+    layout.offsets.push_back(layout.size);
+    if (!family.too_large) layout.size += cells;
+    layout.families.push_back(std::move(family));
+  }
+  return layout;
+}
+
+/// This process's counts laid out in `layout`, its labels mapped to the ids of `labels`.
+[[nodiscard]] std::vector<std::uint64_t> summands(const counter_impl& plan, const partial_impl& partial,
+                                                  const std::vector<detail::label_dictionary>& labels,
+                                                  const summed_layout& layout) {
+  std::vector<std::uint64_t> values(layout.size, 0);
+  values[summed_layout::rows] = partial.rows;
+  values[summed_layout::dropped] = partial.dropped;
+  values[summed_layout::lines] = partial.lines;
+  std::copy(partial.outside.begin(), partial.outside.end(), values.begin() + summed_layout::outside);
+  std::vector<std::vector<std::uint32_t>> id_of(plan.columns.size());
+  for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+    if (plan.columns[c].mode != count_mode::labels) continue;
+    for (const auto& entry : partial.labels[c].entries()) {
+      const auto id = labels[c].find(entry.text);
+      if (id == detail::label_dictionary::none) throw std::logic_error("a label is missing from process 0's ids");
+      id_of[c].push_back(id);
+    }
+  }
+  for (std::size_t f = 0; f < layout.families.size(); ++f) {
+    const auto& family = layout.families[f];
+    // A process's cards are at most those of all processes: too large here is too large there.
+    PGM_ASSERT(family.too_large || !partial.families[f].too_large, "a family too large on one process fits");
+    if (family.too_large) continue;
+    add_mapped(partial.families[f], id_of, family.strides, values.data() + layout.offsets[f]);
+  }
+  return values;
+}
+
+/// The partial counts of all processes, from their sum (on process 0).
+[[nodiscard]] partial_impl from_sum(const counter_impl& plan, std::vector<detail::label_dictionary> labels,
+                                    summed_layout layout, const std::vector<std::uint64_t>& values) {
+  auto partial = empty_partial(plan);
+  partial.rows = values[summed_layout::rows];
+  partial.dropped = values[summed_layout::dropped];
+  partial.lines = values[summed_layout::lines];
+  for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+    partial.outside[c] = values[summed_layout::outside + c];
+    if (plan.columns[c].mode == count_mode::labels) partial.labels[c] = std::move(labels[c]);
+  }
+  for (std::size_t f = 0; f < layout.families.size(); ++f) {
+    auto& family = layout.families[f];
+    if (!family.too_large) {
+      std::uint64_t cells = 1;
+      for (auto card : family.cards) cells *= card;
+      const auto first = values.begin() + static_cast<std::ptrdiff_t>(layout.offsets[f]);
+      family.counts.assign(first, first + static_cast<std::ptrdiff_t>(cells));
+    }
+    partial.families[f] = std::move(family);
+  }
   return partial;
 }
 
@@ -604,6 +700,7 @@ csv_counts count_csv(csv_reader& input, const csv_count_request& request, detail
   const bool split = facts[ranks] == 0;
 
   csv_partial_counts partial;
+  std::string labels;
   std::exception_ptr failure;
   std::size_t failed_at = 0;
   try {
@@ -612,6 +709,7 @@ csv_counts count_csv(csv_reader& input, const csv_count_request& request, detail
       for (std::size_t r = 0; r < rank; ++r) first_line += facts[r];
       failed_at = raw.begin;
       partial = counter.count(mine, first_line);
+      labels = labels_to_bytes(plan, detail::csv_access::of(partial));
     } else if (rank == 0) {
       return count_csv(input, request);
     }
@@ -624,15 +722,33 @@ csv_counts count_csv(csv_reader& input, const csv_count_request& request, detail
     return {};
   }
   detail::agree(group, failure, failed_at);
-  const auto parts = group.gather(to_bytes(detail::csv_access::of(partial)));
+
+  // One id per label: process 0 merges the labels of all processes in file order.
+  const auto every_label = group.gather(labels);
+  std::vector<detail::label_dictionary> merged(plan.columns.size());
+  std::string ids;
+  detail::run_agreed(group, [&] {
+    if (rank != 0) return;
+    for (const auto& theirs : every_label) merge_labels(plan, merged, theirs);
+    ids = ids_to_bytes(plan, merged);
+  });
+  ids = group.broadcast(std::move(ids), 0);
+
+  // The counts of all processes over those ids, summed by one reduction.
+  summed_layout layout;
+  std::vector<std::uint64_t> values;
+  failure = nullptr;
+  try {
+    if (rank != 0) merged = ids_from_bytes(plan, ids);
+    layout = layout_for(plan, merged);
+    values = summands(plan, detail::csv_access::of(partial), merged, layout);
+  } catch (...) {
+    failure = std::current_exception();
+  }
+  detail::sum_over_processes(group, values, failure);
   if (rank != 0) return {};
   csv_partial_counts total;
-  auto& sum = detail::csv_access::of(total);
-  sum = empty_partial(plan);
-  for (const auto& part : parts) {
-    auto theirs = from_bytes(plan, part);
-    merge(plan, sum, theirs, nullptr);
-  }
+  detail::csv_access::of(total) = from_sum(plan, std::move(merged), std::move(layout), values);
   return counter.finish(total);
 }
 

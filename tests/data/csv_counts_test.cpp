@@ -320,5 +320,119 @@ TEST(csv_counts_test, a_bad_record_over_processes_is_reported_by_every_process_w
   for (const auto& o : outcomes) EXPECT_THAT(o.message, HasSubstr("bad.csv:152:")) << o.message;
 }
 
+// Counts `text` over 1 to 8 processes and expects process 0's counts to be those of one
+// process, the others' to be empty and no process to fail.
+void expect_as_one_process(const std::string& text, const csv_count_request& request, const std::string& what) {
+  csv_reader input(text, "p.csv");
+  const auto alone = count_csv(input, request);
+  for (std::size_t ranks = 1; ranks <= 8; ++ranks) {
+    std::vector<csv_counts> results(ranks);
+    const auto outcomes = testing::run_group(ranks, [&](detail::process_group& group) {
+      csv_reader theirs(text, "p.csv");
+      results[group.rank()] = count_csv(theirs, request, group);
+    });
+    const std::string context = what + ", " + std::to_string(ranks) + " processes";
+    for (const auto& o : outcomes) EXPECT_EQ(o.message, "") << context;
+    EXPECT_EQ(results[0].rows, alone.rows) << context;
+    EXPECT_EQ(results[0].dropped, alone.dropped) << context;
+    EXPECT_EQ(results[0].variables, alone.variables) << context;
+    EXPECT_EQ(results[0].families, alone.families) << context;
+    EXPECT_EQ(results[0].outside, alone.outside) << context;
+    for (std::size_t r = 1; r < ranks; ++r) EXPECT_TRUE(results[r].families.empty()) << context;
+  }
+}
+
+TEST(csv_counts_test, labels_met_first_on_different_processes_keep_the_order_of_one_process) {
+  // Every eighth of the file brings new labels of `a`; `b` meets "x" and "w" late and `late`
+  // has states only in the last rows, on the last process.
+  const std::vector<std::string> a_labels{"q", "p", "z", "10", "0", "2", "r", "1"};
+  std::string text = "a,b,late,n,k\n";
+  for (std::size_t row = 0; row < 240; ++row) {
+    const auto region = row * a_labels.size() / 240;
+    text += a_labels[region - row % (region + 1)] + ",";
+    text += std::string(row < 150 ? "y" : row % 3 == 0 ? "x" : row < 230 ? "y" : "w") + ",";
+    text += std::string(row < 220 ? "0" : row % 2 ? "t" : "s") + ",";
+    text += std::to_string(static_cast<int>(row % 17) - 3) + "," + (row % 5 ? "lo" : "hi") + "\n";
+  }
+  csv_count_request request;
+  request.columns = {"a", "b", "late", "n", "k"};
+  request.families = {{"a", {"b", "late"}}, {"late", {"a"}}, {"n", {"a", "k"}}, {"b", {}}, {"k", {"late"}}};
+  request.intervals.emplace("n", variable::intervals("n", {0, 4, 10}));
+  request.variables.emplace("k", variable("k", {"hi", "lo"}));
+  for (unsigned threads : {1U, 2U}) {
+    request.threads = threads;
+    request.chunk_bytes = 40;
+    expect_as_one_process(text, request, std::to_string(threads) + " threads");
+  }
+}
+
+TEST(csv_counts_test, rows_dropped_for_missing_values_are_summed_over_processes) {
+  std::string text = "a,b,c\n";
+  for (int row = 0; row < 300; ++row) {
+    text += (row % 37 == 5 ? "NA" : std::to_string(row % 4)) + ",";
+    text += (row % 23 == 7 ? "" : row > 200 && row % 2 ? "v" : "u") + std::string(",");
+    text += (row % 41 == 40 ? "?" : std::to_string(row % 3)) + "\n";
+  }
+  csv_count_request request;
+  request.columns = {"a", "b", "c"};
+  request.families = {{"a", {"b"}}, {"c", {"a", "b"}}, {"b", {}}};
+  request.threads = 1;
+  for (auto policy : {missing_policy::drop, missing_policy::available}) {
+    request.missing.policy = policy;
+    if (policy == missing_policy::drop) {
+      csv_reader input(text, "p.csv");
+      EXPECT_GT(count_csv(input, request).dropped, 0U) << "the test drops rows";
+    }
+    expect_as_one_process(text, request, policy == missing_policy::drop ? "drop" : "available");
+  }
+}
+
+TEST(csv_counts_test, a_family_too_large_on_one_process_or_only_over_all_is_refused_as_by_one_process) {
+  // 300 labels in each of u, v and w: 2.7e7 cells, past pgm's limit of a table. They are all in
+  // the second half of the file's bytes: on two processes the second has a family too large,
+  // on more no process has one but all of them together do.
+  std::string text = "u,v,w\n";
+  for (int row = 0; row < 1000; ++row) {
+    const auto label = std::to_string(row < 700 ? 0 : row - 699);
+    text += label + "," + label + "," + label + "\n";
+  }
+  csv_count_request request;
+  request.columns = {"u", "v", "w"};
+  request.families = {{"v", {}}, {"u", {"v", "w"}}};
+  request.threads = 1;
+  std::string alone;
+  try {
+    csv_reader input(text, "big.csv");
+    static_cast<void>(count_csv(input, request));
+  } catch (const error& e) {
+    alone = e.what();
+  }
+  ASSERT_THAT(alone, HasSubstr("cells"));
+  for (std::size_t ranks = 2; ranks <= 8; ranks += 2) {
+    const auto outcomes = testing::run_group(ranks, [&](detail::process_group& group) {
+      csv_reader input(text, "big.csv");
+      static_cast<void>(count_csv(input, request, group));
+    });
+    EXPECT_EQ(outcomes[0].message, alone) << ranks << " processes";
+    for (std::size_t r = 1; r < ranks; ++r) EXPECT_EQ(outcomes[r].message, "") << "only process 0 makes tables";
+  }
+}
+
+TEST(csv_counts_test, processes_agree_on_labels_then_sum_their_counts_in_one_reduction) {
+  const auto csv = testing::make_random_csv(5, {.rows = 300, .quotes = false});
+  std::vector<std::string> steps;
+  testing::run_group(
+      4,
+      [&](detail::process_group& group) {
+        csv_reader input(csv.text, "r.csv");
+        static_cast<void>(count_csv(input, request_for(random_families, 1), group));
+      },
+      &steps);
+  // Line ends summed (after an agreement), the counting agreed on, the labels gathered, process
+  // 0's ids agreed on and broadcast, the tables summed (after an agreement).
+  EXPECT_EQ(steps, (std::vector<std::string>{"smallest", "sum", "smallest", "gather", "smallest", "broadcast",
+                                             "smallest", "sum"}));
+}
+
 }  // namespace
 }  // namespace pgm

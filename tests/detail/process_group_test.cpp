@@ -91,6 +91,21 @@ TEST(process_group_test, count_tables_are_summed_over_processes) {
   });
 }
 
+TEST(process_group_test, a_process_that_failed_making_its_summands_fails_every_process_before_the_sum) {
+  std::vector<std::string> steps;
+  const auto outcomes = run_group(
+      3,
+      [](process_group& group) {
+        std::vector<std::uint64_t> counts{1, 2};
+        std::exception_ptr failure;
+        if (group.rank() == 2) failure = std::make_exception_ptr(data_error("no counts on 2"));
+        sum_over_processes(group, counts, failure);
+      },
+      &steps);
+  for (const auto& o : outcomes) EXPECT_THAT(o.message, HasSubstr("no counts on 2"));
+  EXPECT_EQ(steps, (std::vector<std::string>{"smallest", "broadcast"})) << "no sum after a failure";
+}
+
 TEST(process_group_test, every_process_throws_the_failure_of_the_lowest_item) {
   // Items 130 (rank 2 of 4) and 170 (rank 3) fail; each process sees item 130's message.
   const auto outcomes = run_group(4, [](process_group& group) {

@@ -110,8 +110,9 @@ class csv_reader {
 
 /// As above, with the records split over the processes of `group` (pgm::detail::processes()
 /// under mpirun), every one of which opened the same file: each counts its own byte range, cut
-/// at line ends, and process 0 adds up the partial counts in file order and returns the same
-/// counts as one process would; the others return empty counts. Input that is not all in
+/// at line ends; process 0 merges their labels in file order and gives every process the ids
+/// of all labels, and the count tables over those ids are summed by one reduction. Process 0
+/// returns the same counts as one process would; the others return empty counts. Input that is not all in
 /// memory (standard input, compressed data) or that holds quotes (a quoted field may span
 /// lines) is counted whole by process 0. A failure is agreed on by all processes
 /// (pgm::detail::agree): the first in the file wins.

@@ -253,10 +253,12 @@ void gather_slots(process_group& group, std::size_t n, Write&& write, Read&& rea
 }
 
 /// Collective: replaces `values` with their sum over all processes (count tables), after an
-/// agreement that no process failed.
-inline void sum_over_processes(process_group& group, std::span<std::uint64_t> values) {
+/// agreement that no process failed (`failure`: this process's, if it failed making them;
+/// see agree). One process only rethrows its failure.
+inline void sum_over_processes(process_group& group, std::span<std::uint64_t> values,
+                               std::exception_ptr failure = nullptr) {
+  agree(group, failure);
   if (group.size() == 1) return;
-  agree(group, nullptr);
   group.sum(values);
 }
 

@@ -6,9 +6,9 @@
 /// is the default and does no communication; the program installs an MPI group when mpirun or
 /// srun started it (src/mpi). Jobs are split into blocks of items in pgm/detail/parallel_for.hpp
 /// (parallel_for_on, gather_slots, sum_over_processes); the drivers that scale out (sim/run.hpp,
-/// eval/experiment.hpp and run_scenarios.hpp) only choose the group and agree on their phases,
-/// and count_csv over processes gathers its partial counts itself (their label ids differ by
-/// process, so they are merged, not summed element-wise).
+/// eval/experiment.hpp and run_scenarios.hpp) only choose the group and agree on their phases.
+/// count_csv over processes first agrees on one id per label (a gather of the labels to
+/// process 0 and a broadcast of its ids), then sums its count tables with sum_over_processes.
 ///
 /// Failures are agreed on, not aborted: after each phase every process calls `agree` with its
 /// failure (or none), which is itself a collective step, so a process that failed before a
