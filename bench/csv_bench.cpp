@@ -68,7 +68,7 @@ void parse_dataset(benchmark::State& state) {
 // pgm fit's counter: the two families of the stacking network, never holding the data.
 void count_families(benchmark::State& state) {
   const auto& text = codes_csv(million);
-  pgm::csv_count_request request;
+  pgm::family_count_request request;
   request.columns = {"xOff1", "yOff1", "xOff2", "yOff2", "onTop1", "onTop2"};
   request.families = {{"onTop1", {"xOff1", "yOff1"}}, {"onTop2", {"xOff1", "yOff1", "xOff2", "yOff2"}}};
   request.threads = static_cast<unsigned>(state.range(0));
@@ -104,12 +104,12 @@ const std::string& codes_csv_with_na(std::size_t rows) {
 // range(0) 0 = drop, 1 = available (each family over its present rows).
 void count_families_missing(benchmark::State& state) {
   const auto& text = codes_csv_with_na(million);
-  pgm::csv_count_request request;
+  pgm::family_count_request request;
   request.columns = {"xOff1", "yOff1", "xOff2", "yOff2", "onTop1", "onTop2"};
   request.families = {{"onTop1", {"xOff1", "yOff1"}}, {"onTop2", {"xOff1", "yOff1", "xOff2", "yOff2"}}};
   request.threads = 1;
   request.missing.policy = state.range(0) == 0 ? pgm::missing_policy::drop : pgm::missing_policy::available;
-  pgm::csv_counts counts;
+  pgm::family_counts counts;
   for (auto _ : state) {
     pgm::csv_reader input(text, "bench.csv");
     counts = pgm::count_csv(input, request);

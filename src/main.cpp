@@ -8,6 +8,9 @@
 // (pgm/detail/process_group.hpp).
 
 #include <CLI/CLI.hpp>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 #include <new>
@@ -17,6 +20,7 @@
 #include "cli/launch.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/detail/process_group.hpp"
+#include "pgm/detail/text.hpp"
 #ifdef PGM_WITH_MPI
 #include "mpi/mpi_processes.hpp"
 #endif
@@ -28,20 +32,37 @@ int report(const std::exception_ptr& failure) {
   try {
     std::rethrow_exception(failure);
   } catch (const pgm::table_too_large& e) {
-    std::cerr << "pgm: error: " << e.what() << '\n'
+    std::cerr << "pgm: error: " << pgm::detail::printable(e.what()) << '\n'
               << "pgm: hint: a variable with that many states is usually a continuous column read as labels; bin it "
                  "with --discretization (or pgm discretize) first\n";
     return 1;
+  } catch (const pgm::missing_value_error& e) {
+    std::cerr << "pgm: error: " << pgm::detail::printable(e.what()) << '\n'
+              << "pgm: hint: --missing drop leaves out the rows that have a missing value, --missing available counts "
+                 "each table over the rows where its variables are present; --na names the texts read as missing "
+                 "(default NA,,?: NA, the empty field and ?)\n";
+    return 1;
   } catch (const pgm::error& e) {
-    std::cerr << "pgm: error: " << e.what() << '\n';
+    // A message may quote a bad file's bytes: shown escaped, never obeyed by the terminal.
+    std::cerr << "pgm: error: " << pgm::detail::printable(e.what()) << '\n';
     return 1;
   } catch (const std::bad_alloc&) {
     std::cerr << "pgm: error: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "pgm: internal error: " << e.what() << '\n';
+    std::cerr << "pgm: internal error: " << pgm::detail::printable(e.what()) << '\n';
     return 3;
   }
+}
+
+/// Flushes standard output and returns the error that kept it from being written, if any (a
+/// full disk, a closed pipe, /dev/full): a command whose output is lost has not succeeded.
+std::optional<std::string> standard_output_failure() {
+  errno = 0;
+  std::cout.flush();
+  const bool failed = !std::cout || std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
+  if (!failed) return std::nullopt;
+  return std::string("cannot write to standard output") + (errno != 0 ? std::string(": ") + std::strerror(errno) : "");
 }
 
 }  // namespace
@@ -75,6 +96,7 @@ int main(int argc, char** argv) {
   pgm::cli::add_transfer_command(app);
   pgm::cli::add_correspond_command(app);
   pgm::cli::add_learn_structure_command(app);
+  pgm::cli::add_score_command(app);
   pgm::cli::add_experiment_command(app);
   pgm::cli::add_report_command(app);
   pgm::cli::add_simulate_command(app);
@@ -82,15 +104,28 @@ int main(int argc, char** argv) {
   pgm::cli::add_predict_command(app);
   pgm::cli::add_query_command(app);
   pgm::cli::add_prevent_command(app);
+  pgm::cli::add_dsep_command(app);
+  pgm::cli::add_check_command(app);
+  pgm::cli::add_sample_command(app);
   std::exception_ptr failure;
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     // --help and --version end here with 0; every usage error exits with 2. Every process
     // parses the same arguments, so all end here alike, before any collective step.
-    return app.exit(e) == 0 ? 0 : 2;
+    if (app.exit(e) != 0) return 2;
+    if (const auto problem = standard_output_failure()) {  // --help > /dev/full
+      std::cerr << "pgm: error: " << *problem << '\n';
+      return 1;
+    }
+    return 0;
   } catch (...) {
     failure = std::current_exception();
+  }
+  // Output that did not reach standard output is a failure like any other (process 0 alone
+  // prints: the others' standard output is closed on purpose).
+  if (!failure && processes.rank() == 0) {
+    if (auto problem = standard_output_failure()) failure = std::make_exception_ptr(pgm::io_error(std::move(*problem)));
   }
   // A process that failed outside an agreed phase meets the others here (or at their next
   // agreement, which is the same collective step).

@@ -16,9 +16,9 @@ pgm::fuzz::outcome<std::vector<pgm::count_table>> count(std::string_view text, c
   return pgm::fuzz::outcome_of([&] {
     pgm::csv_reader reader(text, "fuzz.csv", delimiter);
     const auto& header = reader.header();
-    pgm::csv_count_request request;
+    pgm::family_count_request request;
     request.columns = header;
-    pgm::csv_family family;
+    pgm::family_names family;
     family.child = header.at(0);
     for (std::size_t i = 1; i < header.size() && i < 3; ++i) family.parents.push_back(header[i]);
     request.families.push_back(family);

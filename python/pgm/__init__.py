@@ -8,15 +8,25 @@ the paper's experiments), and the same results to the last bit. See docs/python.
 
 import numbers
 import os
+from collections.abc import Mapping
 
 import numpy as np
 import pandas as pd
 
 from . import _core, _frame
+from ._checks import _assignment, _flag, _names, _path, _real, _text, _whole
 from ._core import Error
+from . import _checks
+from ._inference import ENGINES, InferenceEngine
 
 __all__ = [
+    "ENGINES",
+    "backdoor_sets",
+    "check",
+    "d_separated",
     "Error",
+    "InferenceEngine",
+    "intervene",
     "Network",
     "backends",
     "discretize",
@@ -24,10 +34,12 @@ __all__ = [
     "fit",
     "from_pgmpy",
     "learn_structure",
+    "mpe",
     "predict",
     "prevent",
     "query",
     "read_network",
+    "score",
     "simulate",
 ]
 
@@ -38,12 +50,20 @@ Error.__doc__ = "An error in pgm's input, with the library's message (a ValueErr
 class Network:
     """A discrete Bayesian network with one table per variable."""
 
-    __slots__ = ("_net",)
+    __slots__ = ("_net", "_engines")
 
     def __init__(self, handle):
         if not isinstance(handle, _core.Network):
             raise TypeError("make a Network with pgm.read_network, pgm.fit or pgm.from_pgmpy")
         self._net = handle
+        self._engines = {}
+
+    def _engine(self, name):
+        """The network's own engine of that name, compiled on first use (pgm.query, pgm.mpe)."""
+        engine = self._engines.get(name)
+        if engine is None:
+            engine = self._engines[name] = InferenceEngine(self, name)
+        return engine
 
     @property
     def variables(self):
@@ -71,20 +91,20 @@ class Network:
 
     def states(self, name):
         """The states of a variable, in order."""
-        return self._net.states(name)
+        return self._net.states(_variable(name))
 
     def parents(self, name):
         """The parents of a variable, in its table's order."""
-        return self._net.parents(name)
+        return self._net.parents(_variable(name))
 
     def interval_edges(self, name):
         """The interval edges of a discretized variable, else None."""
-        return self._net.interval_edges(name)
+        return self._net.interval_edges(_variable(name))
 
     def cpt(self, name):
         """P(name | parents) as a DataFrame: one row per parent configuration (last parent
         fastest), the parents' states, then one column of probabilities per state of `name`."""
-        parents, codes, states, values = self._net.table(name)
+        parents, codes, states, values = self._net.table(_variable(name))
         columns = {}
         for p, parent in enumerate(parents):
             labels = np.array(self._net.states(parent), dtype=object)
@@ -95,7 +115,7 @@ class Network:
 
     def write(self, path):
         """Writes the network as .bif, .xml (XMLBIF), .net (Hugin) or .json (by the extension), atomically."""
-        self._net.write(os.fspath(path))
+        self._net.write(_path(path, "path"))
 
     def to_pgmpy(self):
         """The network as a pgmpy model (pgmpy must be importable)."""
@@ -112,7 +132,7 @@ class Network:
 
 def read_network(path):
     """Reads a network from a .bif, .xml (XMLBIF), .net (Hugin) or .json file, as the `pgm` program does."""
-    return Network(_core.read_network(os.fspath(path)))
+    return Network(_core.read_network(_path(path, "path")))
 
 
 def from_pgmpy(model):
@@ -127,13 +147,19 @@ def backends():
     return _core.backends()
 
 
-def _edge_pairs(edges):
+def _edge_pairs(edges, what="edges"):
     if isinstance(edges, str):
         return _core.parse_edge_list(edges)
+    if isinstance(edges, Mapping) or not hasattr(edges, "__iter__"):
+        raise TypeError(f'{what} must be "a->b,c->b" or a list of (parent, child) pairs, got {type(edges).__name__}')
     pairs = []
     for edge in edges:
+        if isinstance(edge, str) or not hasattr(edge, "__len__") or len(edge) != 2:
+            raise TypeError(f"{what} must be (parent, child) pairs, got {edge!r}")
         parent, child = edge
-        pairs.append((str(parent), str(child)))
+        if not isinstance(parent, str) or not isinstance(child, str):
+            raise TypeError(f"{what} must be pairs of names (strings), got {edge!r}")
+        pairs.append((parent, child))
     return pairs
 
 
@@ -148,12 +174,32 @@ def _edges_argument(edges, what):
     raise TypeError(f"{what} must be a dict of interval edges (from pgm.discretize) or a path to an edges file")
 
 
-def _text(value, what):
-    if value is None:
-        return None
-    if not isinstance(value, str):
-        raise TypeError(f"{what} must be a string, got {type(value).__name__}")
-    return value
+
+
+def _variable(name):
+    if not isinstance(name, str):
+        raise TypeError(f"name must be a variable's name (a string), got {name!r}")
+    return name
+
+
+
+
+def _handle(network, what="network"):
+    if not isinstance(network, Network):
+        raise TypeError(
+            f"{what} must be a pgm.Network (from pgm.read_network or pgm.fit), got {type(network).__name__}"
+        )
+    return network._net
+
+
+
+
+
+
+
+
+
+
 
 
 def fit(
@@ -191,6 +237,8 @@ def fit(
     """
     names = _frame.column_names(data)
     pairs = _edge_pairs(edges)
+    if not pairs:
+        raise Error('edges is empty: give the network\'s edges, e.g. "a->b,c->b" or [("a", "b")]')
     wanted = {name for pair in pairs for name in pair}
     data = _frame.with_missing(data, wanted, missing)
     columns = _frame.columns_of(data, wanted)
@@ -219,45 +267,94 @@ def fit(
         columns,
         names,
         pairs,
-        estimator,
+        _text(estimator, "estimator"),
         _text(prior, "prior"),
-        None if alpha is None else float(alpha),
-        None if ess is None else float(ess),
-        empty,
-        int(threads),
+        None if alpha is None else _real(alpha, "alpha"),
+        None if ess is None else _real(ess, "ess"),
+        _text(empty, "empty"),
+        _whole(threads, "threads"),
         interval_edges,
         interval_file,
         handle,
-        strategy or "minimal",
-        map or "",
+        _text(strategy, "strategy") or "minimal",
+        _text(map, "map") or "",
         weight,
-        success or "1",
-        match or "midpoint",
+        _text(success, "success") or "1",
+        _text(match, "match") or "midpoint",
     )
     return Network(net)
 
 
-def query(network, variables, evidence=None):
-    """P(variables | evidence) by variable elimination, as a Series indexed by state (a
-    MultiIndex over several variables, the last fastest). variables: a name or a list of
-    names; evidence: {name: state}."""
-    if isinstance(variables, str):
-        variables = [variables]
-    variables = list(variables)
-    observed = {str(k): str(v) for k, v in (evidence or {}).items()}
-    states, values, _ = _core.query(network._net, variables, observed)
-    if len(variables) == 1:
-        index = pd.Index(states[0], name=variables[0])
-    else:
-        index = pd.MultiIndex.from_product(states, names=variables)
-    return pd.Series(values, index=index, name="probability")
+def query(network, variables, evidence=None, *, do=None, engine="auto", soft_evidence=None):
+    """P(variables | evidence) as a Series indexed by state (a MultiIndex over several
+    variables, the last fastest). variables: a name or a list of names; evidence: {name:
+    state}; do: interventions {name: state} (graph surgery: P(variables | do(...), evidence));
+    soft_evidence: {name: [weight per state]}; engine: as for pgm.InferenceEngine (compiled
+    once per network and engine, then reused)."""
+    _handle(network)
+    names = _names(variables, "variables")
+    e = network._engine(engine)
+    e._set(_checks._evidence(evidence), _checks._likelihoods(soft_evidence), _checks._evidence(do, "do"))
+    return e.joint(names)
+
+
+def mpe(network, evidence=None, *, variables=None, do=None, engine="auto", soft_evidence=None):
+    """The most probable joint state of the unobserved variables (or of `variables`, the
+    others summed out) given the evidence and interventions: ({variable: state}, its
+    probability)."""
+    _handle(network)
+    e = network._engine(engine)
+    e._set(_checks._evidence(evidence), _checks._likelihoods(soft_evidence), _checks._evidence(do, "do"))
+    return e.mpe(variables)
+
+
+def d_separated(network, x, y, given=None):
+    """Whether the variables x and y are d-separated given `given` in the network's DAG (each a
+    name or a list of names), as `pgm dsep`."""
+    handle = _handle(network)
+    given = [] if given is None else _names(given, "given")
+    return _core.d_separated(handle, _names(x, "x"), _names(y, "y"), given)
+
+
+def intervene(network, do):
+    """The mutilated network of do(...): each variable in `do` ({name: state}) cut from its
+    parents with the point distribution at its state, the other tables kept."""
+    handle = _handle(network)
+    return Network(_core.intervene(handle, _checks._evidence(do, "do")))
+
+
+def backdoor_sets(network, x, y, *, limit=100_000):
+    """The minimal sets satisfying the back-door criterion for the effect of x on y (names or
+    lists of names), smallest first, and whether the search was complete within `limit` sets."""
+    handle = _handle(network)
+    return _core.backdoor_sets(handle, _names(x, "x"), _names(y, "y"), _whole(limit, "limit", 1))
+
+
+def check(network, data, test="chi2", alpha=0.05, *, threads=0):
+    """Tests every independence the network's DAG implies (one per pair of variables without an
+    edge: each given the parents of the one that does not descend from the other) on the frame
+    `data`, as `pgm check`: a DataFrame x, y, given, statistic, df, p_value, rejected, the
+    smallest p-value first."""
+    handle = _handle(network)
+    if test not in ("chi2", "g2"):
+        raise Error(f"test must be chi2 or g2, got {test!r}")
+    alpha = _real(alpha, "alpha")
+    if not 0.0 < alpha < 1.0:
+        raise Error(f"alpha must lie strictly between 0 and 1, got {alpha}")
+    names = handle.variables
+    columns = _frame.columns_of(data, names)
+    result = pd.DataFrame(_core.check(handle, columns, test, alpha, _whole(threads, "threads")))
+    result["rejected"] = result["p_value"] <= alpha
+    return result
 
 
 def predict(network, assign, success=None, marginalize=False):
     """The predicted probability that the plan `assign` succeeds, as `pgm predict`.
     assign: {variable: value} or "xOff1=0.3,yOff1=-1.2": a number is binned by an interval
     variable's edges, other values are state labels ("@2" names the state labelled 2)."""
-    return _core.predict(network._net, assign, success, bool(marginalize))
+    handle = _handle(network)
+    assign = _assignment(assign, "assign", "{'xOff1': 0.3}")
+    return _core.predict(handle, assign, _text(success, "success"), _flag(marginalize, "marginalize"))
 
 
 def prevent(network, assign, controllable=None, epsilon=0.8, success=None, distance="steps", marginalize=False):
@@ -266,26 +363,57 @@ def prevent(network, assign, controllable=None, epsilon=0.8, success=None, dista
     variable) predicted to succeed, as `pgm prevent`. Returns a dict: predicted,
     failure_predicted, suggestion ({variable: value}), predicted_after, responsible (the
     variables that move), steps, distance, target_succeeds and success."""
+    handle = _handle(network)
+    assign = _assignment(assign, "assign", "{'xOff1': 0.3}")
     if isinstance(controllable, str):
         controllable = [c.strip() for c in controllable.split(",")]
     return _core.prevent(
-        network._net,
+        handle,
         assign,
-        None if controllable is None else list(controllable),
-        float(epsilon),
-        distance,
-        success,
-        bool(marginalize),
+        None if controllable is None else _names(controllable, "controllable"),
+        _real(epsilon, "epsilon"),
+        _text(distance, "distance"),
+        _text(success, "success"),
+        _flag(marginalize, "marginalize"),
     )
 
 
 def learn_structure(
-    data, test="g2", alpha=0.01, tiers=None, forbid=None, require=None, *, max_cond=3, threads=0, missing="error"
+    data,
+    test="g2",
+    alpha=0.01,
+    tiers=None,
+    forbid=None,
+    require=None,
+    *,
+    max_cond=3,
+    threads=0,
+    missing="error",
+    algorithm="pc",
+    score="bic",
+    iss=1.0,
+    max_parents=0,
+    tabu=10,
+    max_tabu=10,
+    restarts=0,
+    perturb=1,
+    seed=1,
+    start=None,
+    prior_model=None,
+    map=None,
+    prior_weight=5.0,
 ):
-    """PC-stable on the frame's columns (all discrete), as `pgm learn-structure`: the edges of
-    one DAG of the learned equivalence class, as (parent, child) pairs. tiers: "a,b;c;d" or a
-    list of lists of names, earliest first; forbid and require: edges as for pgm.fit. missing:
-    as for pgm.fit; with "available" each test counts the rows where its variables are present."""
+    """Structure learning on the frame's columns (all discrete), as `pgm learn-structure`: the
+    edges of the learned DAG as (parent, child) pairs. algorithm: "pc" (PC-stable; the DAG is one
+    of its equivalence class), "hc" (hill climbing), "tabu" or "mmhc" (PC-stable's skeleton
+    restricts hill climbing). test, alpha, max_cond: PC's tests. score ("bic", "aic", "bdeu",
+    "k2", "loglik"), iss, max_parents (0: no limit), tabu, max_tabu, restarts, perturb, seed and
+    start (a pgm.Network, (parent, child) pairs or "pc" to start from): the score searches', as
+    docs/structure-learning.md says. prior_model (a pgm.Network of a related task), map (its
+    correspondence, as for pgm.fit) and prior_weight: the structure prior, a score bonus per edge
+    of the prior network that the map carries over. tiers: "a,b;c;d" or a list of lists of names, earliest
+    first; forbid and require: edges as for pgm.fit. missing: as for pgm.fit; with "available"
+    each family, or test, counts the rows where its variables are present."""
     names = _frame.column_names(data)
     data = _frame.with_missing(data, names, missing)
     columns = _frame.columns_of(data, names)
@@ -295,17 +423,71 @@ def learn_structure(
             return ""
         if isinstance(edges, str):
             return edges
-        return ",".join(f"{parent}->{child}" for parent, child in edges)
+        return ",".join(f"{parent}->{child}" for parent, child in _edge_pairs(edges, "forbid and require"))
 
     if tiers is None:
         tiers_text = ""
     elif isinstance(tiers, str):
         tiers_text = tiers
     else:
-        tiers_text = ";".join(",".join(tier) for tier in tiers)
+        tiers_text = ";".join(",".join(_names(tier, "each tier")) for tier in tiers)
     return _core.learn_structure(
-        columns, test, float(alpha), int(max_cond), tiers_text, edges_text(forbid), edges_text(require), int(threads)
+        columns,
+        _text(test, "test"),
+        _real(alpha, "alpha"),
+        _whole(max_cond, "max_cond"),
+        tiers_text,
+        edges_text(forbid),
+        edges_text(require),
+        _whole(threads, "threads"),
+        _text(algorithm, "algorithm"),
+        _text(score, "score"),
+        _real(iss, "iss"),
+        _whole(max_parents, "max_parents"),
+        _whole(tabu, "tabu"),
+        _whole(max_tabu, "max_tabu"),
+        _whole(restarts, "restarts"),
+        _whole(perturb, "perturb"),
+        _whole(seed, "seed"),
+        [] if start is None or isinstance(start, str) else
+        list(start.edges if isinstance(start, Network) else _edge_pairs(start, "start")),
+        _start_from_pc(start),
+        _prior_edges(prior_model),
+        "" if map is None else _text(map, "map"),
+        _real(prior_weight, "prior_weight"),
     )
+
+
+def _prior_edges(prior_model):
+    if prior_model is None:
+        return None
+    _handle(prior_model, "prior_model")
+    return list(prior_model.edges)
+
+
+def _start_from_pc(start):
+    if isinstance(start, str):
+        if start != "pc":
+            raise Error(f"start must be a pgm.Network, (parent, child) pairs or 'pc', got {start!r}")
+        return True
+    return False
+
+
+def score(network, data, score="bic", *, iss=1.0, by_node=False, threads=0, missing="error"):
+    """The score of the network's structure on the frame, as `pgm score` and bnlearn's score()
+    (larger is better): "bic", "aic", "bdeu" (with iss), "k2" or "loglik". The frame's columns
+    are read as the network's states. Returns the total, or with by_node a dict of each node's
+    term in the network's order."""
+    handle = _handle(network)
+    names = list(network.variables)
+    data = _frame.with_missing(data, names, missing)
+    missing_names = [n for n in names if n not in set(_frame.column_names(data))]
+    if missing_names:
+        raise Error(f"data: there is no column '{missing_names[0]}' (the network's variables: {', '.join(names)})")
+    total, nodes = _core.score(
+        handle, _frame.columns_of(data, names), _text(score, "score"), _real(iss, "iss"), _whole(threads, "threads")
+    )
+    return dict(zip(names, nodes)) if by_node else total
 
 
 def discretize(data, bins=5, columns=None, *, method="quantile", edges=None, missing="error"):
@@ -316,7 +498,7 @@ def discretize(data, bins=5, columns=None, *, method="quantile", edges=None, mis
     0..k-1, {name: edges}). missing: as for pgm.fit, over the binned columns; with "available"
     a missing value stays missing (pd.NA in the binned column) and edges are fitted on the rest."""
     names = _frame.column_names(data)
-    wanted = [] if columns is None else ([columns] if isinstance(columns, str) else list(columns))
+    wanted = [] if columns is None else _names(columns, "columns")
     saved, saved_file = _edges_argument(edges, "edges")
     if wanted:
         convert = set(wanted)
@@ -324,7 +506,9 @@ def discretize(data, bins=5, columns=None, *, method="quantile", edges=None, mis
         convert = {n for n in names if _frame.is_number_column(data[n])} | set(saved or {})
     data = _frame.with_missing(data, convert, missing)
     specs = [_frame.numeric_column(name, data[name]) for name in names if name in convert]
-    binned, fitted = _core.discretize(specs, names, int(bins), wanted, method, saved, saved_file)
+    binned, fitted = _core.discretize(
+        specs, names, _whole(bins, "bins", 1), wanted, _text(method, "method"), saved, saved_file
+    )
     result = data.copy()
     for name, kind, array, labels in binned:
         result[name] = _frame.series_of(kind, array, labels)
@@ -337,7 +521,13 @@ def simulate(task, rows, seed=0, backend="analytic", variant="sim", *, threads=0
     for any number of threads. variant "reality" is the stacking tasks' stand-in for the real
     robot (not real data)."""
     columns = _core.simulate(
-        task, int(rows), int(seed), backend, variant, int(threads), None if tasks_dir is None else os.fspath(tasks_dir)
+        _text(task, "task"),
+        _whole(rows, "rows"),
+        _whole(seed, "seed"),
+        _text(backend, "backend"),
+        _text(variant, "variant"),
+        _whole(threads, "threads"),
+        None if tasks_dir is None else _path(tasks_dir, "tasks_dir"),
     )
     return _frame.frame_of(columns)
 
@@ -348,14 +538,14 @@ def experiment(scenario, reps=None, seed=1, backend="analytic", *, threads=0, di
     columns of points.csv (scenario, target, strategy, w, rows, repetition, metric, value).
     The protocol's notes are in `.attrs["notes"]`."""
     columns, notes = _core.experiment(
-        scenario,
-        0 if reps is None else int(reps),
-        int(seed),
-        backend,
-        int(threads),
-        distance,
-        bool(auto),
-        None if tasks_dir is None else os.fspath(tasks_dir),
+        _text(scenario, "scenario"),
+        0 if reps is None else _whole(reps, "reps"),
+        _whole(seed, "seed"),
+        _text(backend, "backend"),
+        _whole(threads, "threads"),
+        _text(distance, "distance"),
+        _flag(auto, "auto"),
+        None if tasks_dir is None else _path(tasks_dir, "tasks_dir"),
     )
     frame = pd.DataFrame(
         {

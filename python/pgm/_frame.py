@@ -10,6 +10,8 @@ A column crosses as one NumPy array, never as one Python object per row:
 These are the states `pgm fit` takes from the same data written as CSV.
 """
 
+import warnings
+
 import numpy as np
 import pandas as pd
 
@@ -24,18 +26,31 @@ def _require_frame(data):
 
 
 def column_names(data):
-    """The frame's column names, which must be strings."""
+    """The frame's column names, which must be strings, each once."""
     _require_frame(data)
     names = []
     for column in data.columns:
         if not isinstance(column, str):
             raise TypeError(f"column names must be strings, got {column!r}")
         names.append(column)
+    if len(set(names)) < len(names):
+        from . import Error
+
+        twice = next(name for name in names if names.count(name) > 1)
+        raise Error(f"data: the column name '{twice}' is given {names.count(twice)} times; name each column once")
     return names
 
 
 def _coded(name, series):
-    codes, uniques = pd.factorize(series, use_na_sentinel=True)
+    with warnings.catch_warnings():
+        # pandas 1.5 warns that it will stop reading an object column of numbers as numbers;
+        # either way each value is labelled as written below.
+        warnings.simplefilter("ignore", FutureWarning)
+        codes, uniques = pd.factorize(series, use_na_sentinel=True)
+    if series.dtype == object and uniques.dtype.kind == "f":
+        # pandas factorizes an object column of numbers as floats (1 becomes 1.0); the labels are
+        # the values as they are written, as a CSV file of them has them (1 and 1.5).
+        codes, uniques = pd.factorize(series.map(_label, na_action="ignore"), use_na_sentinel=True)
     return (name, "coded", np.ascontiguousarray(codes), [_label(u) for u in uniques])
 
 
@@ -115,8 +130,6 @@ def with_missing(data, names, missing):
     kept = data[~absent.any(axis=1).to_numpy()]
     if len(kept) == 0:
         raise Error(f"DataFrame: every one of the {len(data)} rows has a missing value, so dropping them leaves none")
-    import warnings
-
     warnings.warn(f"pgm: dropped {len(data) - len(kept)} of {len(data)} rows with a missing value", stacklevel=3)
     return kept
 

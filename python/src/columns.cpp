@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -12,6 +13,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/data/state_order.hpp"
 #include "pgm/detail/text.hpp"
+#include "pgm/learn/family_source.hpp"
 
 namespace pgm::python {
 namespace py = pybind11;
@@ -258,6 +260,12 @@ std::vector<column_buffer> read_column_buffers(const py::list& columns, std::vec
     // An integer column is read in place, whatever its stride; the others as contiguous arrays.
     auto array = c.kind == "int" ? py::array::ensure(spec[2]) : py::array::ensure(spec[2], py::array::c_style);
     if (!array || array.ndim() != 1) throw data_error("column '" + c.name + "': expected a one-dimensional array");
+    // Values are read as this machine stores numbers: a column of the other byte order (a
+    // big-endian '>i8' here) is converted first, else 1 would read as 2^56.
+    const char order = array.dtype().byteorder();
+    if (order != '=' && order != '|' && order != (std::endian::native == std::endian::little ? '<' : '>')) {
+      array = py::array::ensure(array.attr("astype")(array.dtype().attr("newbyteorder")("=")));
+    }
     c.type = array.dtype().kind();
     c.item_size = static_cast<std::size_t>(array.itemsize());
     if (array.size() > 1 && array.strides(0) % array.itemsize() != 0) {
@@ -295,33 +303,51 @@ dataset make_dataset(const std::vector<column_buffer>& columns, const std::strin
   return data;
 }
 
-std::optional<value_counts> count_integer_families(const std::vector<column_buffer>& columns,
-                                                   const std::vector<named_edge>& edges, const count_options& options) {
+std::vector<std::string> numpy_source::columns() const {
+  std::vector<std::string> names;
+  for (const auto& c : *columns_) names.push_back(c.name);
+  return names;
+}
+
+family_counts numpy_source::count(const family_count_request& request) {
+  if (auto counts = count_by_value(request)) return std::move(*counts);
+  if (!data_) data_ = make_dataset(*columns_, name_);
+  return dataset_source(*data_).count(request);
+}
+
+std::optional<family_counts> numpy_source::count_by_value(const family_count_request& request) const {
+  if (!request.variables.empty() || !request.intervals.empty()) return std::nullopt;
   std::vector<named_value_column> values;
   std::vector<std::string> names;
-  for (const auto& c : columns) {
-    const bool named =
-        std::any_of(edges.begin(), edges.end(), [&](const auto& e) { return e.from == c.name || e.to == c.name; });
-    if (c.kind != "int" || !named) return std::nullopt;
-    values.push_back({c.name, visit_integers(c, "DataFrame", [&](auto typed_values) -> value_column {
+  std::size_t rows = 0;
+  for (const auto& c : *columns_) {
+    if (std::find(request.columns.begin(), request.columns.end(), c.name) == request.columns.end()) continue;
+    if (c.kind != "int") return std::nullopt;
+    values.push_back({c.name, visit_integers(c, name_, [&](auto typed_values) -> value_column {
                         using value = typename decltype(typed_values)::value_type;
                         return value_span<value>{typed_values.data(), typed_values.size(), c.stride};
                       })});
     names.push_back(c.name);
+    rows = c.size;
   }
-  // The families in the parent order of the network's tables: a graph built as network_structure
-  // builds its own.
-  dag graph(names);
-  for (const auto& e : edges) graph.add_edge(e.from, e.to);
+  const auto index_of = [&](const std::string& name) {
+    const auto found = std::find(names.begin(), names.end(), name);
+    if (found == names.end()) throw data_error(name_ + ": there is no column '" + name + "'");
+    return static_cast<std::size_t>(found - names.begin());
+  };
   std::vector<value_family> families;
-  for (std::size_t i = 0; i < graph.size(); ++i) {
-    value_family family{i, {}};
-    for (const auto parent : graph.parents(variable_id(static_cast<variable_id::rep>(i)))) {
-      family.parents.push_back(parent.value());
-    }
-    families.push_back(std::move(family));
+  for (const auto& family : request.families) {
+    value_family by_index{index_of(family.child), {}};
+    for (const auto& parent : family.parents) by_index.parents.push_back(index_of(parent));
+    families.push_back(std::move(by_index));
   }
-  return count_value_families(values, families, options);
+  auto counted = count_value_families(values, families, {.threads = request.threads});
+  if (!counted) return std::nullopt;
+  family_counts result;
+  result.rows = rows;
+  result.variables = std::move(counted->variables);
+  result.families = std::move(counted->tables);
+  return result;
 }
 
 void require_columns(const std::vector<std::string>& wanted, const std::vector<std::string>& available,

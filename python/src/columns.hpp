@@ -13,6 +13,7 @@
 
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/data/family_counts.hpp"
 #include "pgm/learn/count_values.hpp"
 
 namespace pgm::python {
@@ -41,13 +42,28 @@ struct column_buffer {
 /// The data set of these columns, in this order, named `source` in messages. Needs no GIL.
 [[nodiscard]] dataset make_dataset(const std::vector<column_buffer>& columns, const std::string& source);
 
-/// The counts of every node's family in the network `edges` make, node i being column i, counted
-/// straight from the integer buffers (pgm/learn/count_values.hpp) without a data set. Needs no
-/// GIL. std::nullopt unless every column is an "int" column named by the edges, of small
-/// non-negative values (codes 0..k-1): make_dataset then takes them.
-[[nodiscard]] std::optional<value_counts> count_integer_families(const std::vector<column_buffer>& columns,
-                                                                 const std::vector<named_edge>& edges,
-                                                                 const count_options& options);
+/// NumPy columns as a family source (pgm/learn/family_source.hpp). Columns of small
+/// non-negative integers are counted straight from their buffers (pgm/learn/count_values.hpp)
+/// when nothing is asked of them (no known variables, no binning); otherwise, or when one is
+/// not such a column, the source builds a data set once and counts as `dataset_source` does.
+/// Needs no GIL; the buffers must outlive it.
+class numpy_source {
+ public:
+  numpy_source(const std::vector<column_buffer>& columns, std::string name)
+      : columns_(&columns), name_(std::move(name)) {}
+
+  [[nodiscard]] std::vector<std::string> columns() const;
+  [[nodiscard]] std::string name() const { return name_; }
+  [[nodiscard]] static bool holds_counts() noexcept { return true; }
+  [[nodiscard]] family_counts count(const family_count_request& request);
+
+ private:
+  [[nodiscard]] std::optional<family_counts> count_by_value(const family_count_request& request) const;
+
+  const std::vector<column_buffer>* columns_;
+  std::string name_;
+  std::optional<dataset> data_;
+};
 
 /// Throws data_error naming the first missing column and listing `available`, unless every
 /// name of `wanted` is among them.

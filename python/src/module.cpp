@@ -18,8 +18,12 @@
 #include <utility>
 #include <vector>
 
+#include "causal.hpp"
 #include "columns.hpp"
+#include "inference.hpp"
+#include "network_handle.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/data/bin_columns.hpp"
 #include "pgm/decide/decision_model.hpp"
 #include "pgm/decide/explain.hpp"
@@ -29,12 +33,15 @@
 #include "pgm/eval/run_scenarios.hpp"
 #include "pgm/eval/scenario_catalog.hpp"
 #include "pgm/eval/simulated_source.hpp"
-#include "pgm/inference/variable_elimination.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/estimator_choice.hpp"
 #include "pgm/learn/fit.hpp"
+#include "pgm/learn/fit_pipeline.hpp"
+#include "pgm/learn/learn_structure.hpp"
+#include "pgm/learn/network_score.hpp"
 #include "pgm/learn/pc.hpp"
+#include "pgm/learn/structure_prior.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task_lookup.hpp"
 #include "pgm/sim/task_variant.hpp"
@@ -44,14 +51,6 @@ namespace py = pybind11;
 
 namespace pgm::python {
 namespace {
-
-/// A network with what Python shows beside it: the success event a JSON model names, and the
-/// notes of the fit that made it.
-struct network_handle {
-  bayesian_network network;
-  std::optional<std::string> success;
-  std::vector<std::string> notes;
-};
 
 using edge_pairs = std::vector<std::pair<std::string, std::string>>;
 using edges_by_name = std::map<std::string, std::vector<double>>;
@@ -169,44 +168,31 @@ network_handle fit_frame(const py::list& columns, const std::vector<std::string>
   std::vector<py::array> keep;
   const auto buffers = read_column_buffers(columns, keep);
   const py::gil_scoped_release release;
-  const auto edges = to_edges(pairs);
-  std::vector<std::string> wanted;
-  for (const auto& e : edges) {
-    for (const auto* name : {&e.from, &e.to}) {
-      if (std::find(wanted.begin(), wanted.end(), *name) == wanted.end()) wanted.push_back(*name);
-    }
-  }
-  require_columns(wanted, available, "DataFrame");
-  fit_options options;
-  options.prior = prior_of(args.estimator);
+  fit_request request;
+  auto edges = to_edges(pairs);
+  require_columns(detail::columns_of(edges), available, "DataFrame");
+  request.structure = std::move(edges);
+  request.options.prior = prior_of(args.estimator);
   if (args.empty != "uniform" && args.empty != "fail") {
     throw error("empty must be uniform or fail, got '" + args.empty + "'");
   }
-  options.estimation.empty = args.empty == "fail" ? empty_configuration::fail : empty_configuration::uniform;
-  options.counting.threads = args.threads;
-  const auto add_intervals = [&](network_structure structure) {
-    if (!args.intervals && !args.intervals_file) return structure;
-    return with_intervals(std::move(structure), intervals_of(args.intervals, args.intervals_file),
-                          args.intervals_file.value_or("intervals"));
-  };
-  // Columns of integer codes are counted straight from their buffers, unless a prior model asks
-  // for the data (its transfer looks at the rows).
-  if (!args.prior_model) {
-    if (auto counts = count_integer_families(buffers, edges, options.counting)) {
-      const auto structure = add_intervals(network_structure(std::move(counts->variables), edges));
-      std::vector<count_table> tables;
-      for (std::size_t i = 0; i < structure.size(); ++i) {
-        const variable_id node(static_cast<variable_id::rep>(i));
-        tables.push_back(counts->tables[i].with_variables(structure.at(node), structure.parent_variables(node)));
-      }
-      return {fit(structure, tables, options), std::nullopt, {}};
-    }
+  request.options.estimation.empty = args.empty == "fail" ? empty_configuration::fail : empty_configuration::uniform;
+  request.options.counting.threads = args.threads;
+  // A missing value (NaN, None) leaves out only the families it is in.
+  request.missing.policy = missing_policy::available;
+  if (args.intervals || args.intervals_file) {
+    request.intervals = intervals_of(args.intervals, args.intervals_file);
+    request.intervals_source = args.intervals_file.value_or("intervals");
   }
-  const auto data = make_dataset(buffers, "DataFrame");
-  const auto structure = add_intervals(structure_from_data(data, edges));
-  std::vector<std::string> notes;
   if (args.prior_model) {
-    const auto report = add_transferred_priors(options, structure, data, args.prior_model->network, args.transfer);
+    request.prior_network = &args.prior_model->network;
+    request.transfer = args.transfer;
+  }
+  numpy_source source(buffers, "DataFrame");
+  auto fitted = fit(source, request);
+  std::vector<std::string> notes;
+  if (fitted.transfer) {
+    const auto& report = *fitted.transfer;
     if (report.map_proposed) notes.push_back("map='auto': " + to_string(report.map));
     for (const auto& [node, entry] : report.nodes) {
       if (entry.reason) notes.push_back("w_prior='auto' for '" + node + "': " + *entry.reason);
@@ -216,7 +202,7 @@ network_handle fit_frame(const py::list& columns, const std::vector<std::string>
                       "' with w = " + detail::format_short(entry.weight));
     }
   }
-  return {fit(structure, data, options), std::nullopt, std::move(notes)};
+  return {std::move(fitted.network), std::nullopt, std::move(notes)};
 }
 
 // ---- decide --------------------------------------------------------------------------------
@@ -292,18 +278,6 @@ py::dict prevent_plan(const network_handle& handle, const py::object& planned,
   return result;
 }
 
-py::tuple query_network(const network_handle& handle, const std::vector<std::string>& variables,
-                        const std::map<std::string, std::string>& observed) {
-  const evidence given(observed.begin(), observed.end());
-  const auto result = query(handle.network, variables, given);
-  std::vector<std::vector<std::string>> states;
-  for (const auto& v : result.variables) states.push_back(v.states());
-  const auto values = result.table.values();
-  py::array_t<double> probabilities(static_cast<py::ssize_t>(values.size()));
-  std::copy(values.begin(), values.end(), probabilities.mutable_data());
-  return py::make_tuple(states, std::move(probabilities), result.evidence_probability);
-}
-
 // ---- structure, discretization, simulation, experiments --------------------------------------
 
 struct learn_arguments {
@@ -314,27 +288,113 @@ struct learn_arguments {
   std::string forbid;
   std::string require;
   unsigned threads = 0;
+  std::string algorithm = "pc";
+  std::string score = "bic";
+  double iss = 1.0;
+  std::size_t max_parents = 0;
+  std::size_t tabu = 10;
+  std::size_t max_tabu = 10;
+  std::size_t restarts = 0;
+  std::size_t perturb = 1;
+  std::uint64_t seed = 1;
+  edge_pairs start;
+  bool start_from_pc = false;
+  std::optional<edge_pairs> prior_edges;
+  std::string map;
+  double prior_weight = 5.0;
 };
 
 edge_pairs learn_frame(const py::list& columns, const learn_arguments& args) {
   std::vector<py::array> keep;
   const auto buffers = read_column_buffers(columns, keep);
   const py::gil_scoped_release release;
-  pc_options options;
+  structure_choice choice;
+  choice.algorithm = parse_structure_algorithm(args.algorithm);
+  auto& options = choice.pc;
   options.test = parse_ci_test(args.test);
   if (!(args.alpha > 0.0 && args.alpha < 1.0)) {
     throw error("alpha must lie strictly between 0 and 1, got " + detail::format_double(args.alpha));
   }
   options.alpha = args.alpha;
   options.max_conditioning = args.max_conditioning;
-  options.threads = args.threads;
-  if (!args.tiers.empty()) options.knowledge.tiers = parse_tiers(args.tiers);
-  if (!args.forbid.empty()) options.knowledge.forbidden = parse_edge_list(args.forbid);
-  if (!args.require.empty()) options.knowledge.required = parse_edge_list(args.require);
+  choice.threads = args.threads;
+  if (!args.tiers.empty()) choice.knowledge.tiers = parse_tiers(args.tiers);
+  if (!args.forbid.empty()) choice.knowledge.forbidden = parse_edge_list(args.forbid);
+  if (!args.require.empty()) choice.knowledge.required = parse_edge_list(args.require);
+  auto& search = choice.search;
+  search.score = {parse_score_type(args.score), args.iss};
+  check_score_choice(search.score);
+  if (args.max_parents > 0) search.max_parents = args.max_parents;
+  if (args.tabu == 0) throw error("tabu must be at least 1");
+  search.tabu = args.tabu;
+  search.max_tabu = args.max_tabu;
+  search.restarts = args.restarts;
+  if (args.perturb == 0) throw error("perturb must be at least 1");
+  search.perturb = args.perturb;
+  search.seed = args.seed;
+  if (!args.start.empty() && choice.algorithm == structure_algorithm::pc) {
+    throw error("start applies to hc, tabu and mmhc, not pc");
+  }
+  search.start = to_edges(args.start);
+  choice.start_from_pc = args.start_from_pc;
   const auto data = make_dataset(buffers, "DataFrame");
-  const auto result = pc_stable(data, options);
-  // A fitted model needs a DAG: one member of the CPDAG's class, as pgm learn-structure writes.
-  return to_pairs(extend_to_dag(result.graph, true));
+  if (args.prior_edges) {
+    if (choice.algorithm == structure_algorithm::pc) throw error("prior_model applies to hc, tabu and mmhc, not pc");
+    search.favoured =
+        mapped_prior_edges(to_edges(*args.prior_edges),
+                           args.map.empty() ? correspondence{} : parse_correspondence(args.map), data.names());
+    search.favour_weight = args.prior_weight;
+  } else if (!args.map.empty()) {
+    throw error("map applies with prior_model");
+  }
+  // The DAG: PC's is one member of its CPDAG's class, as pgm learn-structure writes.
+  return to_pairs(learn_structure(data, choice).edges);
+}
+
+/// The data's column under the model's variable: each value's label becomes that state's code.
+discrete_column with_model_states(const discrete_column& column, const variable& model) {
+  std::vector<std::uint32_t> map(column.var().cardinality());
+  for (std::size_t s = 0; s < map.size(); ++s) {
+    const auto& label = column.var().states()[s];
+    const auto& states = model.states();
+    const auto it = std::find(states.begin(), states.end(), label);
+    if (it == states.end()) {
+      throw data_error(
+          "column '" + column.name() + "' holds the value '" + label +
+          "', which is not a state of the network's variable (states: " + detail::list_for_message(states) + ")");
+    }
+    map[s] = static_cast<std::uint32_t>(it - states.begin());
+  }
+  const bool missing = column.missing() != 0;
+  auto codes = make_code_vector(model.cardinality() + (missing ? 1 : 0), column.size());
+  std::visit(
+      [&](auto& out) {
+        using code_type = typename std::decay_t<decltype(out)>::value_type;
+        for (std::size_t row = 0; row < out.size(); ++row) {
+          const auto c = column.code(row);
+          out[row] = c < map.size() ? static_cast<code_type>(map[c]) : missing_code<code_type>;
+        }
+      },
+      codes);
+  return discrete_column(model, std::move(codes), std::in_place, column.missing());
+}
+
+py::tuple score_frame(const network_handle& handle, const py::list& columns, const std::string& score, double iss,
+                      unsigned threads) {
+  std::vector<py::array> keep;
+  const auto buffers = read_column_buffers(columns, keep);
+  network_score result;
+  {
+    const py::gil_scoped_release release;
+    const score_choice choice{parse_score_type(score), iss};
+    check_score_choice(choice);
+    const auto& structure = handle.network.structure();
+    const auto data = make_dataset(buffers, "DataFrame");
+    dataset recoded;
+    for (const auto& v : structure.variables()) recoded.add(with_model_states(data.discrete(v.name()), v));
+    result = score_network(structure, recoded, choice, threads);
+  }
+  return py::make_tuple(result.total, result.nodes);
 }
 
 py::tuple discretize_frame(const py::list& columns, const std::vector<std::string>& available, std::size_t bins,
@@ -379,6 +439,10 @@ py::list simulate_task(const std::string& task, std::size_t rows, std::uint64_t 
   {
     const py::gil_scoped_release release;
     if (rows == 0) throw error("rows must be positive");
+    if (rows > max_simulated_rows) {
+      throw error("rows: " + std::to_string(rows) + " are more than " + std::to_string(max_simulated_rows) +
+                  ", pgm's limit of rows to simulate (docs/limits.md)");
+    }
     const auto definition = sim::load_task_variant(task, variant, task_folders(tasks_dir));
     sim::simulate_options options;
     options.backend = backend;
@@ -541,15 +605,24 @@ PYBIND11_MODULE(_core, m) {
       py::arg("intervals_file"), py::arg("prior_model").none(true), py::arg("strategy"), py::arg("map"),
       py::arg("w_prior"), py::arg("success"), py::arg("match"));
 
-  m.def("query", &query_network);
+  add_inference(m);
+  add_causal(m);
   m.def("predict", &predict_plan);
   m.def("prevent", &prevent_plan);
 
   m.def("learn_structure",
         [](const py::list& columns, const std::string& test, double alpha, std::size_t max_conditioning,
-           const std::string& tiers, const std::string& forbid, const std::string& require, unsigned threads) {
-          return learn_frame(columns, {test, alpha, max_conditioning, tiers, forbid, require, threads});
+           const std::string& tiers, const std::string& forbid, const std::string& require, unsigned threads,
+           const std::string& algorithm, const std::string& score, double iss, std::size_t max_parents,
+           std::size_t tabu, std::size_t max_tabu, std::size_t restarts, std::size_t perturb, std::uint64_t seed,
+           const edge_pairs& start, bool start_from_pc, const std::optional<edge_pairs>& prior_edges,
+           const std::string& map, double prior_weight) {
+          return learn_frame(columns,
+                             {test,  alpha,         max_conditioning, tiers, forbid,      require,  threads, algorithm,
+                              score, iss,           max_parents,      tabu,  max_tabu,    restarts, perturb, seed,
+                              start, start_from_pc, prior_edges,      map,   prior_weight});
         });
+  m.def("score", &score_frame);
   m.def("discretize", &discretize_frame);
   m.def("simulate", &simulate_task);
   m.def("experiment",

@@ -42,6 +42,36 @@ def test_states_are_the_values_seen_in_the_clis_order(program, tmp_path, column,
 
 def test_a_number_written_two_ways_is_one_state_named_as_first_met():
     assert states_in_python(np.array(["1.0", "2", "1"], dtype=object)) == ["1.0", "2"]
+    assert states_in_python(np.array(["-0", "1", "0", "1e0"], dtype=object)) == ["-0", "1"]
+
+
+# Issue 28: the values are compared exactly, whichever way the column comes in.
+@pytest.mark.parametrize(
+    "column, states",
+    [
+        # One double, two integers: two states (they were merged).
+        (np.array([2**53, 2**53 + 1, 2**53], dtype=np.int64), ["9007199254740992", "9007199254740993"]),
+        (np.array(["9007199254740993", "9007199254740992"], dtype=object), ["9007199254740992", "9007199254740993"]),
+        (np.array(["0.1", "0.10000000000000001"], dtype=object), ["0.1", "0.10000000000000001"]),
+        # An object column of ints with one float: the values as written, as the CSV has them.
+        (np.array([0, 1, 2, 1.5, 1], dtype=object), ["0", "1", "1.5", "2"]),
+        (np.array([0, 1, None, 1.5], dtype=object)[[0, 1, 3]], ["0", "1", "1.5"]),
+    ],
+)
+def test_numbers_are_one_state_only_when_they_are_exactly_equal(program, tmp_path, column, states):
+    assert states_in_python(column) == states
+    assert states_by_cli(program, tmp_path, column) == states
+
+
+@pytest.mark.parametrize("dtype", [">i2", ">i4", ">i8", ">u4", "<i8"])
+def test_columns_of_either_byte_order_read_the_same(dtype):
+    values = np.array([1, 2, 300, 2], dtype=dtype)
+    frame = pd.DataFrame({"c": values, "z": np.array([0, 1, 1, 0])})
+    native = pd.DataFrame({"c": values.astype(np.int64), "z": frame["z"]})
+    assert pgm.fit(frame, "c->z").states("c") == ["1", "2", "300"]
+    assert pgm.fit(frame, "c->z").cpt("z").equals(pgm.fit(native, "c->z").cpt("z"))
+    raw = pd.DataFrame({"x": np.array([0.5, 1.5, 2.5, 3.5], dtype=">f8")})
+    assert pgm.discretize(raw, bins=2, columns="x")[1] == {"x": [0.5, 2.0, 3.5]}
 
 
 @pytest.mark.parametrize("dtype", [np.int8, np.int16, np.int32, np.int64, np.uint16, np.uint32, np.uint64])
@@ -156,6 +186,14 @@ def test_only_data_frames_with_string_column_names():
         pgm.fit({"a": [0, 1]}, "a->b")
     with pytest.raises(TypeError, match="column names must be strings"):
         pgm.fit(pd.DataFrame({0: [0, 1], "b": [1, 0]}), "b->b2")
+    twice = pd.DataFrame([[0, 1, 1], [1, 0, 0]], columns=["a", "b", "a"])
+    for call in (
+        lambda: pgm.fit(twice, "a->b"),
+        lambda: pgm.learn_structure(twice),
+        lambda: pgm.discretize(twice, bins=2),
+    ):
+        with pytest.raises(pgm.Error, match="data: the column name 'a' is given 2 times; name each column once"):
+            call()
 
 
 def test_integer_columns_cross_without_a_copy_per_row():

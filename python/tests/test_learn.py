@@ -1,4 +1,5 @@
-"""pgm.learn_structure: PC-stable as `pgm learn-structure`, the same DAG from the same data."""
+"""pgm.learn_structure: PC-stable, hill climbing, tabu and the hybrid as `pgm learn-structure`, the same
+DAG from the same data; pgm.score."""
 
 import json
 
@@ -58,3 +59,84 @@ def test_learning_errors(data):
         pgm.learn_structure(data, alpha=1.5)
     with pytest.raises(pgm.Error, match="continuous"):
         pgm.learn_structure(data.assign(raw=np.linspace(0, 1, len(data))))
+
+
+# ---- score-based search and pgm.score ---------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "kwargs, arguments",
+    [
+        ({"algorithm": "hc"}, ["--algorithm", "hc"]),
+        ({"algorithm": "hc", "score": "bdeu", "iss": 10}, ["--algorithm", "hc", "--score", "bdeu", "--iss", "10"]),
+        ({"algorithm": "tabu", "score": "k2", "max_parents": 2},
+         ["--algorithm", "tabu", "--score", "k2", "--max-parents", "2"]),
+        ({"algorithm": "hc", "restarts": 2, "perturb": 3, "seed": 7},
+         ["--algorithm", "hc", "--restarts", "2", "--perturb", "3", "--seed", "7"]),
+        ({"algorithm": "mmhc", "test": "g2"}, ["--algorithm", "mmhc", "--test", "g2"]),
+    ],
+)
+def test_score_search_gives_the_programs_dag(program, tmp_path, data, kwargs, arguments):
+    assert pgm.learn_structure(data, **kwargs) == cli_edges(program, tmp_path, data, *arguments)
+
+
+def test_score_by_node_and_against_pc(data):
+    edges = pgm.learn_structure(data, algorithm="hc")
+    net = pgm.fit(data, edges)
+    terms = pgm.score(net, data, score="bic", by_node=True)
+    assert list(terms) == list(net.variables)
+    assert pgm.score(net, data) == pytest.approx(sum(terms.values()), rel=1e-12)
+    for score in ("bic", "aic", "bdeu", "k2", "loglik"):
+        value = pgm.score(net, data, score=score, iss=5)
+        assert np.isfinite(value)
+    # Hill climbing ends no worse than the PC network, by BIC.
+    pc = pgm.fit(data, pgm.learn_structure(data))
+    assert pgm.score(net, data) >= pgm.score(pc, data) - 1e-9
+
+
+def test_start_and_score_errors(data):
+    pc = pgm.learn_structure(data)
+    started = pgm.learn_structure(data, algorithm="hc", start=pc)
+    assert started == pgm.learn_structure(data, algorithm="hc", start=pgm.fit(data, pc))
+    with pytest.raises(pgm.Error, match="start applies to hc, tabu and mmhc, not pc"):
+        pgm.learn_structure(data, start=pc)
+    with pytest.raises(pgm.Error, match="unknown structure learning algorithm 'ges'"):
+        pgm.learn_structure(data, algorithm="ges")
+    with pytest.raises(pgm.Error, match="unknown score 'mdl'"):
+        pgm.learn_structure(data, algorithm="hc", score="mdl")
+    net = pgm.fit(data, pc)
+    with pytest.raises(pgm.Error, match="iss"):
+        pgm.score(net, data, score="bdeu", iss=0)
+    with pytest.raises(pgm.Error, match="there is no column 'onTop2'"):
+        pgm.score(net, data.drop(columns=["onTop2"]))
+    with pytest.raises(TypeError):
+        pgm.score(pc, data)
+
+
+def test_score_equals_the_programs(program, tmp_path, data):
+    net = pgm.fit(data, pgm.learn_structure(data, algorithm="hc"))
+    net.write(tmp_path / "m.json")
+    data.to_csv(tmp_path / "data.csv", index=False)
+    for score in ("bic", "bdeu"):
+        out = program.run("score", "--model", tmp_path / "m.json", "--data", tmp_path / "data.csv", "--score", score,
+                          "--iss", "3").stdout
+        total = float(out.splitlines()[0].rsplit(": ", 1)[1])
+        assert pgm.score(net, data, score=score, iss=3) == pytest.approx(total, rel=1e-12)
+
+
+def test_structure_prior_and_start_from_pc(data):
+    prior = pgm.fit(data, [("xOff1", "onTop1"), ("yOff1", "onTop1")])
+    few = data.head(60)
+    scratch = pgm.learn_structure(few, algorithm="hc")
+    favoured = pgm.learn_structure(few, algorithm="hc", prior_model=prior, map="onTop2=onTop1,xOff2~xOff1,yOff2~yOff1",
+                                   prior_weight=1000)
+    assert {("xOff1", "onTop1"), ("yOff1", "onTop1")} <= set(favoured)
+    assert pgm.learn_structure(few, algorithm="hc", prior_model=prior, map="onTop2=onTop1", prior_weight=0) == scratch
+    with pytest.raises(pgm.Error, match="prior_model applies to hc, tabu and mmhc, not pc"):
+        pgm.learn_structure(few, prior_model=prior)
+    with pytest.raises(pgm.Error, match="map applies with prior_model"):
+        pgm.learn_structure(few, algorithm="hc", map="onTop2=onTop1")
+    assert pgm.learn_structure(data, algorithm="hc", start="pc") == pgm.learn_structure(
+        data, algorithm="hc", start=pgm.learn_structure(data))
+    with pytest.raises(pgm.Error, match="start must be"):
+        pgm.learn_structure(data, algorithm="hc", start="empty")

@@ -1,5 +1,6 @@
 #include "cli/common.hpp"
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <charconv>
@@ -68,66 +69,76 @@ void note_many_states(const variable& v, std::size_t rows) {
   }
 }
 
+// A model may declare a state spelled like a missing value (pathfinder has "NA" in 35
+// variables): in those columns it is read as the state, and the user is told.
+void note_states_spelled_as_missing(const std::vector<std::string>& columns, const data_plan& plan) {
+  if (plan.known == nullptr) return;
+  for (const auto& token : plan.missing.tokens) {
+    std::vector<std::string> variables;
+    for (const auto& v : *plan.known) {
+      const bool read = std::find(columns.begin(), columns.end(), v.name()) != columns.end();
+      const bool binned = plan.raw_intervals != nullptr && plan.raw_intervals->count(v.name()) != 0;
+      if (read && !binned && v.find_state(token)) variables.push_back(v.name());
+    }
+    if (variables.empty()) continue;
+    note("'" + token + "' is a state of the model's variable" + (variables.size() == 1 ? " " : "s ") +
+         detail::list_for_message(variables, 5) + ": read as that state in " +
+         (variables.size() == 1 ? "its column" : "their columns") +
+         ", not as a missing value (--na names the texts read as missing)");
+  }
+}
+
 }  // namespace
 
 void note_dropped(std::size_t dropped, std::size_t rows) {
   if (dropped == 0) return;
   note("dropped " + std::to_string(dropped) + " of " + std::to_string(dropped + rows) +
-       " rows with a missing value (--missing drop)");
+       " rows with a missing value (--missing drop; --na names the texts read as missing)");
 }
 
-void add_missing_options(CLI::App& cmd, missing_arguments& args) {
+void add_missing_options(CLI::App& cmd, missing_arguments& args, bool em) {
   cmd.add_option("--na", args.na,
                  "The texts read as missing values, comma-separated; an empty entry (as in the default) is the "
                  "empty field")
       ->capture_default_str();
+  std::vector<std::string> policies{"error", "drop", "available"};
+  if (em) policies.emplace_back("em");
   cmd.add_option("--missing", args.policy,
-                 "What a missing value does: error (naming its line and column), drop (leave out the rows that "
-                 "have one, with a note) or available (count each family, or each independence test, over the "
-                 "rows where its variables are present)")
-      ->check(CLI::IsMember({"error", "drop", "available"}))
+                 std::string("What a missing value does: error (naming its line and column), drop (leave out the rows "
+                             "that have one, with a note)") +
+                     (em ? ", available (count each family over the rows where its variables are present) or em "
+                           "(expectation-maximization: the missing values, and --latent variables, estimated)"
+                         : " or available (count each family, or each independence test, over the rows where its "
+                           "variables are present)"))
+      ->check(CLI::IsMember(policies))
       ->capture_default_str();
 }
 
 missing_values missing_of(const missing_arguments& args) {
   missing_values missing;
   missing.tokens = args.na.empty() ? std::vector<std::string>{""} : detail::split(args.na, ',');
-  missing.policy = missing_policy_named(args.policy);
+  // em keeps every missing value for EM to estimate.
+  missing.policy = missing_policy_named(args.policy == "em" ? "available" : args.policy);
   return missing;
 }
 
-csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>& columns, const data_plan& plan,
-                               std::vector<csv_family> families, unsigned threads, detail::process_group& group) {
-  csv_count_request request;
-  request.columns = columns;
-  request.families = std::move(families);
-  request.threads = threads;
-  request.missing = plan.missing;
-  if (plan.known) {
-    for (const auto& v : *plan.known) request.variables.emplace(v.name(), v);
-  }
-  if (plan.raw_intervals) {
-    for (const auto& [name, intervals] : *plan.raw_intervals) {
-      if (std::find(columns.begin(), columns.end(), name) == columns.end()) continue;
-      request.variables.erase(name);
-      request.intervals.emplace(name, intervals);
-    }
-  }
-  auto counts = count_csv(input, request, group);
+void note_counts(const family_counts& counts, const discretization& binned) {
   note_dropped(counts.dropped, counts.rows);
   for (const auto& table : counts.families) {
     std::uint64_t counted = 0;
     for (auto n : table.counts()) counted += n;
     if (counted < counts.rows) {
       note("'" + table.child().name() + "' is counted over the " + std::to_string(counted) + " of " +
-           std::to_string(counts.rows) + " rows where it and its parents are present");
+           std::to_string(counts.rows) +
+           " rows where it and its parents are present (--missing available; --na names the texts read as missing)");
     }
   }
-  for (const auto& [name, outside] : counts.outside) {
-    note_outside(name, outside, counts.rows, request.intervals.at(name));
-  }
+  for (const auto& [name, outside] : counts.outside) note_outside(name, outside, counts.rows, binned.at(name));
   for (const auto& v : counts.variables) note_many_states(v, counts.rows);
-  return counts;
+}
+
+void note_model_states_read_as_missing(const std::vector<std::string>& columns, const data_plan& plan) {
+  note_states_spelled_as_missing(columns, plan);
 }
 
 dataset read_discrete_data(const std::filesystem::path& path, const std::vector<std::string>& columns,
@@ -136,6 +147,7 @@ dataset read_discrete_data(const std::filesystem::path& path, const std::vector<
   options.columns = columns;
   options.default_kind = column_kind::discrete;
   options.missing = plan.missing;
+  note_states_spelled_as_missing(columns, plan);
   if (plan.known) {
     for (const auto& v : *plan.known) options.variables.emplace(v.name(), v);
   }
@@ -167,7 +179,15 @@ dataset read_discrete_data(const std::filesystem::path& path, const std::vector<
   return data;
 }
 
-void note(const std::string& text) { std::cerr << "pgm: note: " << text << '\n'; }
+std::ostream& summary_stream(const std::filesystem::path& output) {
+  struct stat out {};
+  struct stat target {};
+  const bool same = ::fstat(STDOUT_FILENO, &out) == 0 && ::stat(output.c_str(), &target) == 0 &&
+                    out.st_dev == target.st_dev && out.st_ino == target.st_ino;
+  return same ? std::cerr : std::cout;
+}
+
+void note(const std::string& text) { std::cerr << "pgm: note: " << detail::printable(text) << '\n'; }
 
 bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) != 0; }
 

@@ -32,8 +32,9 @@ struct missing_arguments {
   std::string policy = "error";
 };
 
-/// Adds --na and --missing (the texts read as missing, and what happens to them) to `cmd`.
-void add_missing_options(CLI::App& cmd, missing_arguments& args);
+/// Adds --na and --missing (the texts read as missing, and what happens to them) to `cmd`;
+/// `em` adds the policy em (for pgm fit).
+void add_missing_options(CLI::App& cmd, missing_arguments& args, bool em = false);
 
 /// Notes "dropped N of M rows with a missing value" when the policy drop left rows out.
 void note_dropped(std::size_t dropped, std::size_t rows_kept);
@@ -57,13 +58,13 @@ struct data_plan {
 dataset read_discrete_data(const std::filesystem::path& path, const std::vector<std::string>& columns,
                            const data_plan& plan);
 
-/// Counts `families` of the rest of `input`, reading `columns` as read_discrete_data would
-/// (the same checks, states and notes) but without holding the data in memory; notes each
-/// family counted over fewer rows than were read (missing values, policy available). Over several
-/// processes (`group`), each counts a part of the file and process 0 alone gets the counts.
-csv_counts count_discrete_data(csv_reader& input, const std::vector<std::string>& columns, const data_plan& plan,
-                               std::vector<csv_family> families, unsigned threads,
-                               detail::process_group& group = detail::lone_process());
+/// Notes what counting found that the user should know: rows dropped for a missing value,
+/// families counted over fewer rows than were read (policy available), values outside the edges
+/// of the `binned` columns, columns with nearly as many states as rows.
+void note_counts(const family_counts& counts, const discretization& binned);
+
+/// Notes the model's states spelled like a missing value among `columns` (read as the state).
+void note_model_states_read_as_missing(const std::vector<std::string>& columns, const data_plan& plan);
 
 /// What --data and --in say about the input files they accept.
 inline constexpr const char* data_file_help = " ('-' reads standard input; a .csv.gz is read compressed)";
@@ -89,6 +90,11 @@ CLI::Validator non_negative_number();
 /// with the reason); "-0" is passed on as 0.
 CLI::Validator number_between(double lo, double hi, bool lo_open, bool hi_open);
 
+/// Where a command says what it wrote to `output`: standard output, unless `output` is the
+/// program's standard output itself (`--out /dev/stdout`, a pipe), whose content the line would
+/// spoil; then standard error.
+[[nodiscard]] std::ostream& summary_stream(const std::filesystem::path& output);
+
 /// Prints "pgm: note: …" to stderr, for what the user should know but need not act on.
 void note(const std::string& text);
 
@@ -101,6 +107,7 @@ void add_show_command(CLI::App& app);
 void add_transfer_command(CLI::App& app);
 void add_correspond_command(CLI::App& app);
 void add_learn_structure_command(CLI::App& app);
+void add_score_command(CLI::App& app);
 void add_experiment_command(CLI::App& app);
 void add_report_command(CLI::App& app);
 void add_simulate_command(CLI::App& app);
@@ -109,5 +116,8 @@ void add_predict_command(CLI::App& app);
 void add_query_command(CLI::App& app);
 void add_convert_command(CLI::App& app);
 void add_prevent_command(CLI::App& app);
+void add_dsep_command(CLI::App& app);
+void add_check_command(CLI::App& app);
+void add_sample_command(CLI::App& app);
 
 }  // namespace pgm::cli

@@ -166,8 +166,10 @@ void add_calibrate_command(CLI::App& app) {
       "Fit the analytic model's constants to Bullet's experiments by maximum likelihood, or with --check print how "
       "closely the two back-ends agree");
   cmd->add_option("--task", args->tasks, "Task name (several with --check), e.g. 2-stack, drop-glass")->required();
-  cmd->add_option("--rows", args->rows, "Experiments simulated on the reference back-end")
-      ->check(whole_number(1, 100'000'000))
+  cmd->add_option("--rows", args->rows,
+                  "Experiments simulated on the reference back-end (a fit keeps them all in memory: at most " +
+                      std::to_string(sim::max_calibration_rows) + "; with --check they are counted as they come)")
+      ->check(whole_number(1, 1'000'000'000))
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Random seed of the experiments")
       ->check(whole_number(0, UINT64_MAX))

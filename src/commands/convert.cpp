@@ -20,7 +20,7 @@ struct convert_arguments {
 };
 
 void run_convert(const convert_arguments& args) {
-  const auto from = format_of(args.in);
+  const auto from = format_to_read(args.in);
   const auto named = find_format_of(args.out);
   network_format to{};
   if (!args.to.empty()) {
@@ -40,8 +40,9 @@ void run_convert(const convert_arguments& args) {
     note("the success event in the metadata of '" + args.in + "' is not carried by " + std::string(name_of(to)) +
          "; give it to predict and prevent with --success");
   }
-  std::cout << "converted " << args.in << " (" << name_of(from) << ") -> " << args.out << " (" << name_of(to)
-            << "): " << network.size() << " variables, " << network.free_parameters() << " free parameters\n";
+  summary_stream(args.out) << "converted " << args.in << " (" << name_of(from) << ") -> " << args.out << " ("
+                           << name_of(to) << "): " << network.size() << " variables, " << network.free_parameters()
+                           << " free parameters\n";
 }
 
 }  // namespace
@@ -52,7 +53,9 @@ void add_convert_command(CLI::App& app) {
       "convert",
       "Convert a network between BIF (.bif), XMLBIF (.xml, .xmlbif, .bifxml), Hugin NET (.net) and pgm JSON (.json).\n"
       "Example: pgm convert sachs.bif sachs.net");
-  cmd->add_option("in", args->in, "The network to read; its extension names its format")->required();
+  cmd->add_option("in", args->in,
+                  "The network to read; its extension names its format (.bif.gz and the like are read compressed)")
+      ->required();
   cmd->add_option("out", args->out, "The file to write, atomically")->required();
   cmd->add_option("--to", args->to, "The output format (default: from the extension of OUT)")
       ->check(CLI::IsMember({"bif", "xmlbif", "net", "json"}));

@@ -83,14 +83,14 @@ void run_discretize(const discretize_arguments& args) {
     detail::write_file_atomically(args.edges_out, [&](std::ostream& out) { out << edges_text; });
   }
   for (const auto& [name, v] : fitted) {
-    std::cout << name << ": " << v.cardinality() << " bins " << describe(v) << '\n';
+    summary_stream(args.out) << name << ": " << v.cardinality() << " bins " << describe(v) << '\n';
     if (args.method != "edges" && v.cardinality() < args.bins) {
       note("'" + name + "' has ties, so only " + std::to_string(v.cardinality()) + " of " + std::to_string(args.bins) +
            " bins are distinct");
     }
   }
-  std::cout << binned.rows() << " rows -> " << args.out
-            << (args.edges_out.empty() ? "" : ", edges -> " + args.edges_out) << '\n';
+  summary_stream(args.out) << binned.rows() << " rows -> " << args.out
+                           << (args.edges_out.empty() ? "" : ", edges -> " + args.edges_out) << '\n';
 }
 
 }  // namespace

@@ -8,6 +8,7 @@
 #include "cli/common.hpp"
 #include "cli/progress.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/eval/cached_source.hpp"
 #include "pgm/eval/disk_cache.hpp"
 #include "pgm/eval/run_scenarios.hpp"
@@ -78,7 +79,7 @@ void add_experiment_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--backend", args->backend, "Simulator: analytic or bullet")->capture_default_str();
   cmd->add_option("--reps", args->repetitions, "Repetitions (default: the scenario's, 20)")
-      ->check(whole_number(1, 100000));
+      ->check(whole_number(1, max_repetitions));
   cmd->add_option("--seed", args->seed, "Seed of the data and the splits")
       ->check(whole_number(0, UINT64_MAX))
       ->capture_default_str();

@@ -1,23 +1,22 @@
 // pgm fit: estimate every table of a network from data.
 
-#include "pgm/learn/fit.hpp"
-
 #include <algorithm>
+#include <cstdint>
 #include <iostream>
 #include <optional>
-#include <span>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "cli/common.hpp"
 #include "cli/transfer_arguments.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/data/csv_counts.hpp"
+#include "pgm/data/csv_source.hpp"
 #include "pgm/detail/process_group.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/estimator_choice.hpp"
+#include "pgm/learn/family_source.hpp"
+#include "pgm/learn/fit_pipeline.hpp"
 #include "pgm/transfer/transfer_settings.hpp"
 
 namespace pgm::cli {
@@ -38,37 +37,76 @@ struct fit_arguments {
   std::string out;
   transfer_arguments transfer;
   missing_arguments missing;
+  // --missing em
+  std::vector<std::string> latent;
+  std::size_t restarts = 1;
+  std::uint64_t seed = 0;
+  std::size_t max_iterations = 100;
+  double tolerance = 1e-6;
+  bool hard = false;
+  bool verbose = false;
 };
 
-/// Sets the weighted prior (eq. 8) of every node the map transfers to, choosing w from the
-/// data when asked, and says what was chosen.
-void use_prior_model(const fit_arguments& args, const network_structure& structure,
-                     const std::vector<count_table>& counts, fit_options& options) {
-  const auto settings = settings_of(args.transfer);
-  const auto prior = read_network_file(args.transfer.prior_model);
-  require_map(args.transfer);
-  const auto report =
-      pgm::add_transferred_priors(options, structure, std::span<const count_table>(counts), prior, settings);
+/// --latent NAME:COUNT (states 0 … COUNT-1), NAME=STATE,STATE,… or NAME (a model's states).
+latent_variable latent_of(const std::string& text) {
+  const auto bad = [&] {
+    return error("--latent '" + text + "': expected NAME:COUNT (e.g. H:3), NAME=STATE,STATE,... or NAME");
+  };
+  if (const auto eq = text.find('='); eq != std::string::npos) {
+    auto states = detail::split(text.substr(eq + 1), ',');
+    if (eq == 0 || states.empty()) throw bad();
+    return {text.substr(0, eq), std::move(states)};
+  }
+  if (const auto colon = text.find(':'); colon != std::string::npos) {
+    const auto count = text.substr(colon + 1);
+    if (colon == 0 || count.empty() || count.size() > 6 || count.find_first_not_of("0123456789") != std::string::npos ||
+        std::stoul(count) < 1) {
+      throw bad();
+    }
+    latent_variable latent{text.substr(0, colon), {}};
+    for (unsigned long k = 0; k < std::stoul(count); ++k) latent.states.push_back(std::to_string(k));
+    return latent;
+  }
+  if (text.empty()) throw bad();
+  return {text, {}};
+}
+
+em_options em_options_of(const fit_arguments& args) {
+  em_options options;
+  options.kind = args.hard ? em_kind::hard : em_kind::soft;
+  options.tolerance = args.tolerance;
+  options.max_iterations = args.max_iterations;
+  options.restarts = args.restarts;
+  options.seed = args.seed;
+  options.threads = args.threads;
+  if (args.verbose) {
+    options.on_step = [](const em_step& step) {
+      note("EM start " + std::to_string(step.restart + 1) + ", iteration " + std::to_string(step.iteration) +
+           ": log-likelihood " + detail::format_double(step.log_likelihood) +
+           (step.objective != step.log_likelihood ? ", objective " + detail::format_double(step.objective) : ""));
+    };
+  }
+  return options;
+}
+
+void note_em(const em_result& em) {
+  note("EM: " + std::to_string(em.iterations) + " iterations" +
+       (em.converged ? " (converged)" : " (stopped at --max-iterations)") + ", log-likelihood " +
+       detail::format_double(em.log_likelihood) + ", " + std::to_string(em.patterns) + " distinct rows (" +
+       std::to_string(em.incomplete_patterns) + " with a missing value)" +
+       (em.restart > 0 ? ", from start " + std::to_string(em.restart + 1) : ""));
+}
+
+/// Says which priors were transferred, with which weights, and how they were chosen.
+void note_transfer(const transfer_report& report, const std::string& strategy) {
   if (report.map_proposed) note("--map auto: " + to_string(report.map));
   for (const auto& [node, entry] : report.nodes) {
     if (entry.reason) note("--w-prior auto for '" + node + "': " + *entry.reason);
   }
   for (const auto& [node, entry] : report.nodes) {
-    note("'" + node + "' gets the " + args.transfer.strategy + " prior from '" + entry.prior_node +
+    note("'" + node + "' gets the " + strategy + " prior from '" + entry.prior_node +
          "' with w = " + detail::format_short(entry.weight));
   }
-}
-
-/// Each node's family by name, in node order, parents in the structure's order.
-std::vector<csv_family> families_of(const network_structure& structure) {
-  std::vector<csv_family> families;
-  for (std::size_t i = 0; i < structure.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
-    csv_family family{structure.at(node).name(), {}};
-    for (const auto& parent : structure.parent_variables(node)) family.parents.push_back(parent.name());
-    families.push_back(std::move(family));
-  }
-  return families;
 }
 
 void run_fit(const fit_arguments& args) {
@@ -76,89 +114,73 @@ void run_fit(const fit_arguments& args) {
   if (args.data == "-" && detail::processes().size() > 1) {
     throw error("--data -: standard input reaches one process only; under mpirun give a file every process can read");
   }
-  fit_options options;
-  options.prior = prior_of({args.estimator, args.prior, args.alpha, args.ess});
-  options.estimation.empty = args.empty == "fail" ? empty_configuration::fail : empty_configuration::uniform;
-  options.counting.threads = args.threads;
-
-  std::optional<discretization> raw_intervals;
-  if (!args.discretization_file.empty()) raw_intervals = read_discretization_json(args.discretization_file);
-
-  // The data are never held in memory: each node's family is counted as the file streams by.
-  network_structure structure;
-  csv_counts counted;
-  if (!args.model.empty()) {
-    structure = read_model_file(args.model).structure;
-    for (const auto& v : structure.variables()) {
-      if (raw_intervals && raw_intervals->contains(v.name())) structure.update_variable(raw_intervals->at(v.name()));
-    }
-    std::vector<std::string> columns;
-    for (const auto& v : structure.variables()) columns.push_back(v.name());
-    csv_reader input(args.data);
-    counted = count_discrete_data(
-        input, columns, {raw_intervals ? &*raw_intervals : nullptr, &structure.variables(), missing_of(args.missing)},
-        families_of(structure), args.threads, detail::processes());
-    if (detail::processes().rank() != 0) return;  // process 0 has the counts, fits and writes
-  } else {
-    const auto edges = parse_edge_list(args.edges);
-    std::vector<std::string> columns;
-    for (const auto& e : edges) {
-      for (const auto* name : {&e.from, &e.to}) {
-        if (std::find(columns.begin(), columns.end(), *name) == columns.end()) columns.push_back(*name);
-      }
-    }
-    csv_reader input(args.data);
-    // The families come from the structure over the data's columns in file order (as
-    // structure_from_data builds it); a problem with the structure itself, such as a cycle, is
-    // reported after any problem with the data, as when the data were read first.
-    std::vector<std::string> ordered;
-    for (const auto& name : input.header()) {
-      if (std::find(columns.begin(), columns.end(), name) != columns.end()) ordered.push_back(name);
-    }
-    std::vector<variable> placeholders;
-    for (const auto& name : ordered) placeholders.emplace_back(name, std::vector<std::string>{"?"});
-    std::vector<csv_family> families;
-    std::exception_ptr structure_error;
-    if (ordered.size() == columns.size()) {  // else counting reports the missing column
-      try {
-        families = families_of(network_structure(placeholders, edges));
-      } catch (const error&) {
-        structure_error = std::current_exception();
-      }
-    }
-    counted = count_discrete_data(input, columns,
-                                  {raw_intervals ? &*raw_intervals : nullptr, nullptr, missing_of(args.missing)},
-                                  std::move(families), args.threads, detail::processes());
-    if (detail::processes().rank() != 0) return;  // process 0 has the counts, fits and writes
-    if (structure_error) std::rethrow_exception(structure_error);
-    structure = network_structure(counted.variables, edges);
+  fit_request request;
+  request.options.prior = prior_of({args.estimator, args.prior, args.alpha, args.ess});
+  request.options.estimation.empty = args.empty == "fail" ? empty_configuration::fail : empty_configuration::uniform;
+  request.options.counting.threads = args.threads;
+  request.missing = missing_of(args.missing);
+  const bool em = args.missing.policy == "em";
+  if (em) {
+    request.em = em_options_of(args);
+    for (const auto& text : args.latent) request.latent.push_back(latent_of(text));
+  } else if (!args.latent.empty()) {
+    throw error("--latent applies with --missing em");
   }
+  if (!args.discretization_file.empty()) request.bin = read_discretization_json(args.discretization_file);
   if (!args.intervals_file.empty()) {
-    structure =
-        with_intervals(std::move(structure), read_discretization_json(args.intervals_file), args.intervals_file);
+    request.intervals = read_discretization_json(args.intervals_file);
+    request.intervals_source = args.intervals_file;
   }
-  // The counts under the structure's variables, which may carry intervals and tags.
-  std::vector<count_table> counts;
-  for (std::size_t i = 0; i < structure.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
-    auto parents = structure.parent_variables(node);
-    const auto& family = counted.families[i];
-    bool same_family = family.child().name() == structure.at(node).name() && family.parents().size() == parents.size();
-    for (std::size_t k = 0; same_family && k < parents.size(); ++k) {
-      same_family = family.parents()[k].name() == parents[k].name();
+  std::vector<variable> known;
+  const auto is_latent = [&](const std::string& name) {
+    return std::any_of(request.latent.begin(), request.latent.end(),
+                       [&](const latent_variable& v) { return v.name == name; });
+  };
+  if (!args.model.empty()) {
+    auto structure = read_model_file(args.model).structure;
+    std::vector<std::string> columns;
+    for (const auto& v : structure.variables()) {
+      if (is_latent(v.name())) continue;
+      columns.push_back(v.name());
+      known.push_back(request.bin.contains(v.name()) ? request.bin.at(v.name()) : v);
     }
-    if (!same_family) throw std::logic_error("the counted family of '" + family.child().name() + "' is out of order");
-    counts.push_back(family.with_variables(structure.at(node), std::move(parents)));
+    note_model_states_read_as_missing(columns, {&request.bin, &known, request.missing});
+    request.structure = std::move(structure);
+  } else {
+    request.structure = parse_edge_list(args.edges);
   }
+  std::optional<bayesian_network> prior;
   if (!args.transfer.prior_model.empty()) {
-    use_prior_model(args, structure, counts, options);
+    prior = read_network_file(args.transfer.prior_model);
+    require_map(args.transfer);
+    request.prior_network = &*prior;
+    request.transfer = settings_of(args.transfer);
   } else if (!args.transfer.map.empty()) {
     throw error("--map applies with --prior-model");
   }
-  const auto network = fit(structure, std::span<const count_table>(counts), options);
-  write_network(network, args.out);
-  std::cout << "fitted " << network.size() << " tables (" << network.free_parameters() << " free parameters) from "
-            << counted.rows << " rows -> " << args.out << '\n';
+  fit_result fitted;
+  if (em) {
+    // EM reads the rows at every iteration: they are held in memory.
+    if (detail::processes().size() > 1) throw error("--missing em runs in one process, not under mpirun");
+    // Every column is read, so that a latent variable that is one is refused.
+    const auto data =
+        read_discrete_data(args.data, {}, {&request.bin, args.model.empty() ? nullptr : &known, request.missing});
+    dataset_source source(data);
+    fitted = fit(source, request);
+    note_em(*fitted.em);
+  } else {
+    // The data are never held in memory: each node's family is counted as the file streams
+    // by, over every process under mpirun; process 0 fits and writes.
+    csv_reader input(args.data);
+    csv_source source(input, detail::processes());
+    fitted = fit(source, request);
+    if (!fitted.holds_network) return;
+    note_counts(fitted.counts, request.bin);
+  }
+  if (fitted.transfer) note_transfer(*fitted.transfer, args.transfer.strategy);
+  write_network(fitted.network, args.out);
+  summary_stream(args.out) << "fitted " << fitted.network.size() << " tables (" << fitted.network.free_parameters()
+                           << " free parameters) from " << fitted.counts.rows << " rows -> " << args.out << '\n';
 }
 
 }  // namespace
@@ -197,7 +219,26 @@ void add_fit_command(CLI::App& app) {
       ->check(whole_number(0, 1024))
       ->capture_default_str();
   cmd->add_option("--out", args->out, "The fitted network: .bif, .xml (XMLBIF), .net (Hugin) or .json")->required();
-  add_missing_options(*cmd, args->missing);
+  add_missing_options(*cmd, args->missing, true);
+  cmd->add_option("--latent", args->latent,
+                  "With --missing em: a variable in no column of the data, as NAME:COUNT (states 0..COUNT-1), "
+                  "NAME=STATE,STATE,... or, with --model, NAME (the model's states); repeat for more");
+  cmd->add_option("--restarts", args->restarts,
+                  "With --missing em and --latent: random starts of the latent tables; the best is kept")
+      ->check(whole_number(1, 1000))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "With --missing em: seed of the random starts")->capture_default_str();
+  cmd->add_option("--max-iterations", args->max_iterations, "With --missing em: the most M-steps per start")
+      ->check(whole_number(0, 1000000))
+      ->capture_default_str();
+  cmd->add_option("--tolerance", args->tolerance,
+                  "With --missing em: stop when the log-likelihood (plus the prior's term) changes by at most this "
+                  "fraction")
+      ->check(non_negative_number())
+      ->capture_default_str();
+  cmd->add_flag("--hard", args->hard,
+                "With --missing em: hard EM (each incomplete row completed by its most probable values)");
+  cmd->add_flag("--verbose", args->verbose, "With --missing em: print the log-likelihood of every iteration");
   add_transfer_options(*cmd, args->transfer, true);
   cmd->callback([args] {
     if (args->edges.empty() && args->model.empty()) throw error("give the structure with --edges or --model");

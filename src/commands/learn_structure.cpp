@@ -1,8 +1,15 @@
-// pgm learn-structure: PC-stable on discrete data; prints the CPDAG (and, on request, why each
-// absent edge is absent) and writes one DAG of its class as a structure-only JSON model.
+// pgm learn-structure: PC-stable, hill climbing, tabu search or the hybrid (PC's skeleton, then
+// hill climbing) on discrete data, through learn_structure (pgm/learn/learn_structure.hpp). PC
+// prints the CPDAG (and, on request, why each absent edge is absent); the score searches print
+// the score and the DAG. Either writes one DAG as a structure-only JSON model.
 
+#include "pgm/learn/learn_structure.hpp"
+
+#include <cstdint>
 #include <iostream>
+#include <limits>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -11,13 +18,31 @@
 #include "pgm/core/error.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/io/json_model.hpp"
+#include "pgm/learn/bootstrap.hpp"
 #include "pgm/learn/pc.hpp"
+#include "pgm/learn/structure_prior.hpp"
+#include "pgm/transfer/correspondence.hpp"
 
 namespace pgm::cli {
 namespace {
 
 struct learn_structure_arguments {
   std::string data;
+  std::string algorithm = "pc";
+  std::string score = "bic";
+  double iss = 1.0;
+  std::size_t max_parents = 0;
+  std::size_t tabu = 10;
+  std::size_t max_tabu = 10;
+  std::size_t restarts = 0;
+  std::size_t perturb = 1;
+  std::uint64_t seed = 1;
+  std::string start;
+  std::size_t bootstrap = 0;
+  std::string prior_model;
+  std::string map;
+  double prior_weight = 5.0;
+  std::optional<double> threshold;
   std::string test = "chi2";
   double alpha = 0.01;
   std::string correction = "none";
@@ -38,22 +63,137 @@ std::string format_set(const cpdag& graph, const std::vector<variable_id>& given
   return "{" + detail::join(names) + "}";
 }
 
+void write_searched(const learn_structure_arguments& args, const structure_choice& choice, const dataset& data,
+                    const structure_result& learned) {
+  const auto& result = *learned.search;
+  const auto& search = choice.search;
+  std::ostringstream out;
+  out << (choice.algorithm == structure_algorithm::tabu   ? "tabu search"
+          : choice.algorithm == structure_algorithm::mmhc ? "hybrid (PC-stable skeleton, then hill climbing)"
+                                                          : "hill climbing")
+      << " on " << data.rows() << " rows, " << data.size() << " variables: " << to_string(search.score.type);
+  if (search.score.type == score_type::bdeu) out << " (iss " << detail::format_short(search.score.iss) << ")";
+  out << " = " << detail::format_double(result.score - result.prior_bonus);
+  if (!search.favoured.empty()) {
+    out << " + structure prior " << detail::format_double(result.prior_bonus) << " = "
+        << detail::format_double(result.score);
+  }
+  out << " after " << result.moves << " moves";
+  if (result.restarts > 0) out << " over " << result.restarts << " restarts";
+  out << " (" << result.families_scored << " families scored, " << result.cache_hits << " from the cache)\n";
+  out << "edges (" << result.edges.size() << "):\n";
+  for (const auto& e : result.edges) out << "  " << e.from << " -> " << e.to << '\n';
+
+  std::vector<variable> variables;
+  for (const auto& name : data.names()) variables.push_back(data.discrete(name).var());
+  const network_structure structure(variables, result.edges);
+  auto document = to_json(structure);
+  document["learned"] = {{"algorithm", to_string(choice.algorithm)},
+                         {"score", to_string(search.score.type)},
+                         {"score_value", result.score - result.prior_bonus},
+                         {"rows", data.rows()},
+                         {"moves", result.moves},
+                         {"restarts", result.restarts},
+                         {"seed", search.seed}};
+  if (search.score.type == score_type::bdeu) document["learned"]["iss"] = search.score.iss;
+  if (choice.algorithm == structure_algorithm::tabu) document["learned"]["tabu"] = search.tabu;
+  write_model_json(document, args.out);
+  std::cout << out.str() << "-> " << args.out << '\n';
+}
+
+void write_bootstrap(const learn_structure_arguments& args, const structure_choice& choice, const dataset& data) {
+  const auto names = data.names();
+  const auto result = bootstrap_structure(data, names, choice, {args.bootstrap, args.seed, args.threshold});
+  std::ostringstream out;
+  out << to_string(choice.algorithm) << " on " << result.replicates << " bootstrap resamples of " << data.rows()
+      << " rows, " << data.size() << " variables\n";
+  out << "arc strengths (adjacent in a fraction of the resamples; direction: the fraction of those with the arc):\n";
+  for (const auto& a : result.arcs) {
+    if (a.strength > 0 && a.direction > 0) {
+      out << "  " << a.from << " -> " << a.to << "  strength " << detail::format_short(a.strength, 4) << "  direction "
+          << detail::format_short(a.direction, 4) << '\n';
+    }
+  }
+  out << "averaged network at threshold " << detail::format_short(result.threshold, 4)
+      << (args.threshold ? "" : " (bnlearn's L1 rule)") << " (" << result.averaged.size() << " edges):\n";
+  for (const auto& e : result.averaged) out << "  " << e.from << " -> " << e.to << '\n';
+
+  std::vector<variable> variables;
+  for (const auto& name : names) variables.push_back(data.discrete(name).var());
+  auto document = to_json(network_structure(variables, result.averaged));
+  document["learned"] = {{"algorithm", to_string(choice.algorithm)},
+                         {"bootstrap", result.replicates},
+                         {"threshold", result.threshold},
+                         {"seed", args.seed},
+                         {"rows", data.rows()},
+                         {"strength", nlohmann::json::array()}};
+  for (const auto& a : result.arcs) {
+    if (a.strength > 0 && a.direction > 0) {
+      document["learned"]["strength"].push_back(
+          {{"from", a.from}, {"to", a.to}, {"strength", a.strength}, {"direction", a.direction}});
+    }
+  }
+  write_model_json(document, args.out);
+  std::cout << out.str() << "-> " << args.out << '\n';
+}
+
 void run_learn_structure(const learn_structure_arguments& args) {
   require_extension(args.out, {".json"});
-  pc_options options;
+  structure_choice choice;
+  choice.algorithm = parse_structure_algorithm(args.algorithm);
+  auto& options = choice.pc;
   options.test = parse_ci_test(args.test);
   options.alpha = args.alpha;
   options.correction = parse_continuity_correction(args.correction);
   options.min_rows_per_cell = args.min_rows_per_cell;
   options.max_conditioning = args.max_conditioning;
-  options.threads = args.threads;
-  if (!args.tiers.empty()) options.knowledge.tiers = parse_tiers(args.tiers);
-  if (!args.forbid.empty()) options.knowledge.forbidden = parse_edge_list(args.forbid);
-  if (!args.require.empty()) options.knowledge.required = parse_edge_list(args.require);
+  choice.threads = args.threads;
+  if (!args.tiers.empty()) choice.knowledge.tiers = parse_tiers(args.tiers);
+  if (!args.forbid.empty()) choice.knowledge.forbidden = parse_edge_list(args.forbid);
+  if (!args.require.empty()) choice.knowledge.required = parse_edge_list(args.require);
+  auto& search = choice.search;
+  search.score = {parse_score_type(args.score), args.iss};
+  if (args.max_parents > 0) search.max_parents = args.max_parents;
+  search.tabu = args.tabu;
+  search.max_tabu = args.max_tabu;
+  search.restarts = args.restarts;
+  search.perturb = args.perturb;
+  search.seed = args.seed;
+  if (!args.start.empty()) {
+    if (choice.algorithm == structure_algorithm::pc) throw error("--start applies to hc, tabu and mmhc, not pc");
+    if (args.start == "pc") {
+      choice.start_from_pc = true;
+    } else {
+      search.start = read_model_file(args.start).structure.edges();
+    }
+  }
 
   const auto data = read_discrete_data(args.data, {}, {.missing = missing_of(args.missing)});
   if (data.size() < 2) throw data_error("'" + args.data + "' has fewer than two columns; nothing to learn");
-  const auto result = pc_stable(data, options);
+  if (!args.prior_model.empty()) {
+    if (choice.algorithm == structure_algorithm::pc) throw error("--prior-model applies to hc, tabu and mmhc, not pc");
+    const auto prior = read_model_file(args.prior_model).structure.edges();
+    const auto map = args.map.empty() ? correspondence{} : parse_correspondence(args.map);
+    search.favoured = mapped_prior_edges(prior, map, data.names());
+    search.favour_weight = args.prior_weight;
+    std::vector<std::string> shown;
+    for (const auto& e : search.favoured) shown.push_back(e.from + "->" + e.to);
+    note("the structure prior favours " + std::to_string(shown.size()) + " edge(s) by " +
+         detail::format_short(args.prior_weight) + " each" + (shown.empty() ? "" : ": " + detail::join(shown)));
+  } else if (!args.map.empty()) {
+    throw error("--map applies with --prior-model");
+  }
+  if (args.bootstrap > 0) {
+    write_bootstrap(args, choice, data);
+    return;
+  }
+  if (args.threshold) throw error("--threshold applies with --bootstrap");
+  const auto learned = learn_structure(data, choice);
+  if (learned.search) {
+    write_searched(args, choice, data, learned);
+    return;
+  }
+  const auto& result = *learned.pc;
   const auto& graph = result.graph;
 
   std::ostringstream out;
@@ -92,8 +232,8 @@ void run_learn_structure(const learn_structure_arguments& args) {
   for (const auto& conflict : result.conflicts) note("orientation conflict: " + conflict);
 
   // A fitted model needs a DAG: take one member of the CPDAG's class.
-  std::size_t relaxed = 0;
-  const auto edges = extend_to_dag(graph, true, &relaxed);
+  const std::size_t relaxed = learned.relaxed;
+  const auto& edges = learned.edges;
   std::vector<variable> variables;
   for (const auto& name : data.names()) variables.push_back(data.discrete(name).var());
   const network_structure structure(variables, edges);
@@ -127,11 +267,63 @@ void run_learn_structure(const learn_structure_arguments& args) {
 
 void add_learn_structure_command(CLI::App& app) {
   auto args = std::make_shared<learn_structure_arguments>();
-  auto* cmd = app.add_subcommand("learn-structure", "Learn a causal structure from discrete data with PC-stable");
+  auto* cmd = app.add_subcommand("learn-structure",
+                                 "Learn a causal structure from discrete data: PC-stable, hill climbing, tabu search "
+                                 "or the hybrid");
   cmd->add_option("--data", args->data,
                   std::string("CSV file of discrete data, one column per variable") + data_file_help)
       ->required();
-  cmd->add_option("--test", args->test, "Independence test: chi2 (Pearson) or g2 (likelihood ratio)")
+  cmd->add_option("--algorithm", args->algorithm,
+                  "pc (PC-stable), hc (hill climbing), tabu (tabu search) or mmhc (PC-stable's skeleton restricts "
+                  "hill climbing)")
+      ->check(CLI::IsMember({"pc", "hc", "tabu", "mmhc"}))
+      ->capture_default_str();
+  cmd->add_option("--score", args->score, "Score of hc, tabu and mmhc: bic, aic, bdeu, k2 or loglik (bnlearn's)")
+      ->check(CLI::IsMember({"bic", "aic", "bdeu", "bde", "k2", "loglik"}))
+      ->capture_default_str();
+  cmd->add_option("--iss", args->iss, "Imaginary sample size of bdeu, a number > 0")
+      ->check(number_between(0, std::numeric_limits<double>::infinity(), true, true))
+      ->capture_default_str();
+  cmd->add_option("--max-parents", args->max_parents, "The most parents a node may get (0: no limit)")
+      ->check(whole_number(0, 1024))
+      ->capture_default_str();
+  cmd->add_option("--tabu", args->tabu, "Tabu list length of --algorithm tabu (bnlearn's default)")
+      ->check(whole_number(1, 100000))
+      ->capture_default_str();
+  cmd->add_option("--max-tabu", args->max_tabu,
+                  "Moves in a row without improving on the best network before tabu search stops")
+      ->check(whole_number(0, 100000))
+      ->capture_default_str();
+  cmd->add_option("--restarts", args->restarts, "Random restarts after the search converges")
+      ->check(whole_number(0, 100000))
+      ->capture_default_str();
+  cmd->add_option("--perturb", args->perturb, "Random moves that perturb the network at each restart")
+      ->check(whole_number(1, 100000))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the restarts' perturbations and of the bootstrap resamples")
+      ->capture_default_str();
+  cmd->add_option("--bootstrap", args->bootstrap,
+                  "Learn on N bootstrap resamples (seeded by --seed, in parallel): print each arc's strength and "
+                  "direction (bnlearn's boot.strength) and write the averaged network")
+      ->check(whole_number(0, 100000))
+      ->capture_default_str();
+  cmd->add_option("--threshold", args->threshold,
+                  "Strength above which the averaged network keeps an arc (default: bnlearn's L1 rule)")
+      ->check(number_between(0, 1, false, false));
+  cmd->add_option("--prior-model", args->prior_model,
+                  "A related task's network (.bif, .xml, .net or .json): favour the edges that --map carries over "
+                  "to this data's variables (hc, tabu, mmhc)");
+  cmd->add_option("--map", args->map,
+                  "Correspondence of this data's variables (left) to the prior's (right), as pgm fit's: "
+                  "\"onTop2=onTop1,xOff2~xOff1\"; variables with equal names correspond without an entry");
+  cmd->add_option("--prior-weight", args->prior_weight, "Score bonus per favoured edge in the network, >= 0")
+      ->check(non_negative_number())
+      ->capture_default_str();
+  cmd->add_option("--start", args->start,
+                  "Start hc, tabu or mmhc from this network's structure (.bif, .xml, .net or .json), or from "
+                  "PC-stable's result on the data with 'pc' (its --test, --alpha, --max-cond), instead of the "
+                  "empty graph");
+  cmd->add_option("--test", args->test, "Independence test of pc and mmhc: chi2 (Pearson) or g2 (likelihood ratio)")
       ->check(CLI::IsMember({"chi2", "g2"}))
       ->capture_default_str();
   cmd->add_option("--alpha", args->alpha,

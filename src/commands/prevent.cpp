@@ -92,7 +92,9 @@ void add_prevent_command(CLI::App& app) {
       "prevent",
       "Predict success; below epsilon, explain the failure and suggest the nearest values of the controllable "
       "variables predicted to succeed (breadth-first in bin steps; ties to the higher prediction; if none "
-      "exceeds epsilon, the best).");
+      "exceeds epsilon, the best). A suggestion is judged as an intervention, P(success | do(controllable), the "
+      "other assigned variables): the robot sets those variables, and where one has a parent in the network "
+      "setting it differs from observing it (docs/decide.md).");
   add_decision_options(*cmd, args->decision);
   cmd->add_option("--controllable", args->controllable,
                   "Variables the robot may change, e.g. xOff1,yOff1 (default: every parent of the success variable)");

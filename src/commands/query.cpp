@@ -1,12 +1,20 @@
-// pgm query: the full distribution P(X | evidence) by variable elimination, as CSV or JSON.
+// pgm query: P(X | evidence) for every state of the query variables, every marginal at once
+// (--all), the most probable explanation (--mpe), or a file of queries answered in one process
+// (--queries), by any inference engine; as CSV or JSON.
 
 #include <iostream>
+#include <map>
 #include <memory>
+#include <optional>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli/common.hpp"
 #include "pgm/detail/file.hpp"
+#include "pgm/inference/engine_registry.hpp"
 #include "pgm/inference/posterior_table.hpp"
+#include "pgm/inference/query_batch.hpp"
 #include "pgm/io/network_file.hpp"
 
 namespace pgm::cli {
@@ -14,25 +22,131 @@ namespace {
 
 struct query_arguments {
   std::string model;
-  std::string query;
+  std::optional<std::string> query;  // given but empty is an error, not "no query"
   std::string evidence;
+  std::string soft;
+  std::string intervene;
+  bool all = false;
+  bool mpe = false;
+  std::string queries;
+  std::string engine = "auto";
+  std::size_t samples = sampling_options{}.samples;
+  std::uint64_t seed = sampling_options{}.seed;
+  std::size_t burn_in = sampling_options{}.burn_in;
+  unsigned threads = 0;
   std::string format = "csv";
   int digits = 6;
   std::string out;
 };
 
+inference_options options_of(const query_arguments& args) {
+  inference_options options;
+  options.sampling.samples = args.samples;
+  options.sampling.seed = args.seed;
+  options.sampling.burn_in = args.burn_in;
+  options.sampling.threads = args.threads;
+  return options;
+}
+
+/// The engines a run uses, each made once, by name.
+class engines {
+ public:
+  engines(const bayesian_network& network, inference_options options) : network_(network), options_(options) {}
+
+  any_inference_engine& get(const std::string& name) {
+    auto it = made_.find(name);
+    if (it == made_.end()) {
+      it = made_.emplace(name, make_engine(name, network_, options_)).first;
+      // "auto" says when it could not be exact; the output names the engine either way.
+      if (it->second.name() != "jt" && !it->second.note().empty()) note(it->second.note());
+    }
+    return it->second;
+  }
+
+ private:
+  const bayesian_network& network_;
+  inference_options options_;
+  std::map<std::string, any_inference_engine, std::less<>> made_;
+};
+
+/// Answers the --queries file into `out`, all of it or (on the first failure) nothing.
+void answer_batch(const query_arguments& args, const bayesian_network& network, std::ostream& out,
+                  const posterior_table_options& table) {
+  const auto text = detail::read_file(args.queries);
+  const auto requests = parse_query_batch(text, args.queries);
+  engines made(network, options_of(args));
+  std::ostringstream buffer;
+  bool header = true;
+  std::size_t impossible = 0;
+  for (const auto& request : requests) {
+    try {
+      auto& engine = made.get(request.engine.empty() ? args.engine : request.engine);
+      engine.set_evidence(resolve_evidence(network, request.observed, request.soft, request.intervened));
+      const auto ids = resolve_query(network, request.query, engine.evidence());
+      try {
+        write_query_record(buffer, request, engine.joint(ids), table, header);
+      } catch (const impossible_evidence& e) {
+        write_impossible_record(buffer, request, std::string(engine.name()), e.what(), table, header);
+        ++impossible;
+      }
+      header = false;
+    } catch (const parse_error&) {
+      throw;
+    } catch (const error& e) {
+      throw parse_error(args.queries, request.line, 1, e.what());
+    }
+  }
+  if (impossible > 0) {
+    note(std::to_string(impossible) + " of " + std::to_string(requests.size()) +
+         " queries have evidence of probability 0 (their records say so)");
+  }
+  out << buffer.str();
+}
+
 void run_query(const query_arguments& args) {
-  const posterior_table_options options{parse_posterior_format(args.format), args.digits};
-  const auto variables = parse_query_variables(args.query);
+  const posterior_table_options table{parse_posterior_format(args.format), args.digits};
+  const int modes = (args.query && !args.mpe) + args.all + args.mpe + !args.queries.empty();
+  if (modes != 1) {
+    throw CLI::ValidationError(
+        "query",
+        "ask one thing: --query X[,Y], --all (every marginal), --mpe [--query X,Y] (the most probable states) or "
+        "--queries FILE");
+  }
+  if (!args.queries.empty() && (!args.evidence.empty() || !args.soft.empty() || !args.intervene.empty())) {
+    throw CLI::ValidationError(
+        "query", "--queries takes each query's evidence from its file, not from --evidence, --soft or --do");
+  }
   const auto observed = parse_evidence(args.evidence);
+  const auto soft = parse_soft_evidence(args.soft);
+  const auto set = parse_intervention(args.intervene);
+  const auto variables = args.query ? parse_query_variables(*args.query) : std::vector<std::string>{};
   if (!args.out.empty()) detail::check_output_path(args.out);
   const auto network = read_network_file(args.model);
-  const auto result = pgm::query(network, variables, observed);
+
+  const auto write = [&](std::ostream& out) {
+    if (!args.queries.empty()) {
+      answer_batch(args, network, out, table);
+      return;
+    }
+    engines made(network, options_of(args));
+    auto& engine = made.get(args.engine);
+    engine.set_evidence(resolve_evidence(network, observed, soft, set));
+    if (args.all) {
+      write_marginals_table(out, marginals(engine), observed, table, soft, set);
+    } else if (args.mpe) {
+      if (!engine.finds_mpe()) static_cast<void>(engine.mpe({}));  // the engine's own refusal
+      write_mpe_table(out, most_probable(engine, variables), observed, table, soft, set);
+    } else {
+      write_posterior_table(out, query(engine, variables), observed, table, soft, set);
+    }
+  };
+  // Everything is computed before anything is written, so a failure leaves no partial output.
+  std::ostringstream buffer;
+  write(buffer);
   if (args.out.empty()) {
-    write_posterior_table(std::cout, result, observed, options);
+    std::cout << buffer.str();
   } else {
-    detail::write_file_atomically(args.out,
-                                  [&](std::ostream& out) { write_posterior_table(out, result, observed, options); });
+    detail::write_file_atomically(args.out, [&](std::ostream& out) { out << buffer.str(); });
   }
 }
 
@@ -40,13 +154,45 @@ void run_query(const query_arguments& args) {
 
 void add_query_command(CLI::App& app) {
   auto args = std::make_shared<query_arguments>();
-  auto* cmd = app.add_subcommand("query",
-                                 "Print P(X | evidence) for every state of the query variables, by variable "
-                                 "elimination.\nExample: pgm query --model sachs.bif --query Akt,Erk --evidence "
-                                 "PKA=HIGH --digits 17 --format json");
+  auto* cmd = app.add_subcommand(
+      "query",
+      "Print P(X | evidence) for every state of the query variables, every marginal (--all), the most probable "
+      "states (--mpe), or the answers to a file of queries (--queries), by junction tree, variable elimination or "
+      "sampling.\nExamples:\n  pgm query --model sachs.bif --query Akt,Erk --evidence PKA=HIGH --digits 17 "
+      "--format json\n  pgm query --model alarm.bif --all --evidence HR=HIGH --soft BP=0.2:0.3:0.5\n  pgm query "
+      "--model alarm.bif --mpe --evidence HR=HIGH\n  pgm query --model alarm.bif --query HR --do CVP=LOW\n  pgm query "
+      "--model pathfinder.bif --queries queries.csv");
   cmd->add_option("--model", args->model, "The network: .bif, .xml, .net or .json")->required();
-  cmd->add_option("--query", args->query, "Query variables, e.g. \"X\" or \"X,Y\" (joint distribution)")->required();
+  cmd->add_option("--query", args->query,
+                  "Query variables, e.g. \"X\" or \"X,Y\" (joint distribution; with --mpe, the variables whose most "
+                  "probable states are wanted, the others summed out)");
+  cmd->add_flag("--all", args->all, "Print the marginal of every variable that is not observed");
+  cmd->add_flag("--mpe", args->mpe,
+                "Print the most probable joint state of every unobserved variable (or of --query's) and its "
+                "probability given the evidence");
+  cmd->add_option("--queries", args->queries,
+                  "A CSV file of queries (columns query, evidence and optionally soft, engine; one query per line), "
+                  "answered in one process: one output record per line, in order (JSON Lines with --format json)");
   cmd->add_option("--evidence", args->evidence, "Observed states, e.g. \"a=s,b=t\" (default: none)");
+  cmd->add_option("--do", args->intervene,
+                  "Interventions, e.g. \"X=x,Z=z\": each variable set to its state, cut from its parents (graph "
+                  "surgery), P(query | do(X=x), evidence)");
+  cmd->add_option("--soft", args->soft,
+                  "Soft (likelihood) evidence, one weight per state in the variable's order, e.g. \"X=0.2:0.8\": "
+                  "P(x | evidence) is multiplied by its weight");
+  const auto names = engine_registry::instance().names();
+  cmd->add_option("--engine", args->engine,
+                  "Inference engine: jt (junction tree), ve (variable elimination), lw (likelihood weighting), "
+                  "gibbs (Gibbs sampling), or auto (jt unless its tree is too large, then lw; it says which)")
+      ->check(CLI::IsMember(names))
+      ->capture_default_str();
+  cmd->add_option("--samples", args->samples, "Samples for lw and gibbs")
+      ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000'000}))
+      ->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of lw and gibbs: the same numbers for a seed, whatever the threads")
+      ->capture_default_str();
+  cmd->add_option("--burn-in", args->burn_in, "Sweeps each Gibbs chain discards first")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Threads for sampling (0: every core)")->capture_default_str();
   cmd->add_option("--format", args->format, "Output format: csv or json")
       ->check(CLI::IsMember({"csv", "json"}))
       ->capture_default_str();

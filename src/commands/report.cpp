@@ -72,7 +72,7 @@ void run_report(const report_arguments& args) {
     std::cout << args.out << " matches " << args.template_file << " and its summaries\n";
   } else {
     detail::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
-    std::cout << args.template_file << " -> " << args.out << '\n';
+    summary_stream(args.out) << args.template_file << " -> " << args.out << '\n';
   }
 }
 

@@ -1,5 +1,6 @@
 // pgm simulate: run experiments of a task with a simulator back-end and write the raw data.
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <memory>
@@ -9,6 +10,7 @@
 #include "cli/progress.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/data/csv.hpp"
+#include "pgm/detail/file.hpp"
 #include "pgm/detail/process_group.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/sim/simulator.hpp"
@@ -29,6 +31,10 @@ struct simulate_arguments {
   std::string out;
 };
 
+/// Rows simulated and written at a time: memory stays that of one block (a few tens of MB)
+/// however many rows are asked for; the data are those of one run (simulate_options::first_row).
+constexpr std::size_t block_rows = std::size_t{1} << 18;
+
 void run_simulate(const simulate_arguments& args) {
   require_extension(args.out, {".csv"});
   if (args.rows == 0) throw error("--rows must be positive");
@@ -41,23 +47,40 @@ void run_simulate(const simulate_arguments& args) {
   const auto task = sim::load_task_variant(args.task, args.variant, directories);
   sim::simulate_options options;
   options.backend = args.backend;
-  options.rows = args.rows;
   options.seed = args.seed;
   options.threads = args.threads;
-  options.across_processes = true;  // under mpirun, each process simulates a block of rows
+  options.across_processes = true;  // under mpirun, each process simulates a share of each block
   progress_bar bar("simulating");
-  options.progress = [&bar, rows = args.rows](std::size_t done) { bar.update(done, rows); };
-  const auto data = sim::simulate(task, options);
-  bar.finish();
-  if (detail::processes().rank() != 0) return;  // process 0 has the data and writes it
-  write_csv(data, std::filesystem::path(args.out));
-  const auto& success = data.discrete(task.success);
   std::size_t successes = 0;
-  for (std::size_t row = 0; row < data.rows(); ++row) successes += success.code(row);
-  std::cout << "simulated " << data.rows() << " experiments of " << task.name << " (" << args.backend << ", seed "
-            << args.seed << "): " << task.success << " = 1 in "
-            << detail::format_short(static_cast<double>(successes) / static_cast<double>(data.rows()), 4) << " -> "
-            << args.out << '\n';
+  // Every process runs the blocks (their collective steps); process 0 has the data and writes them.
+  const auto run_blocks = [&](std::ostream* out) {
+    for (std::size_t done = 0; done < args.rows; done += options.rows) {
+      options.first_row = done;
+      options.rows = std::min(block_rows, args.rows - done);
+      options.progress = [&bar, done, rows = args.rows](std::size_t block_done) {
+        bar.update(done + block_done, rows);
+      };
+      const auto data = sim::simulate(task, options);
+      if (out == nullptr) continue;
+      if (done == 0) {
+        write_csv(data, *out);
+      } else {
+        write_csv_rows(data, *out);
+      }
+      const auto& success = data.discrete(task.success);
+      for (std::size_t row = 0; row < data.rows(); ++row) successes += success.code(row);
+    }
+  };
+  if (detail::processes().rank() != 0) {
+    run_blocks(nullptr);
+    return;
+  }
+  detail::write_file_atomically(args.out, [&](std::ostream& out) { run_blocks(&out); });
+  bar.finish();
+  summary_stream(args.out) << "simulated " << args.rows << " experiments of " << task.name << " (" << args.backend
+                           << ", seed " << args.seed << "): " << task.success << " = 1 in "
+                           << detail::format_short(static_cast<double>(successes) / static_cast<double>(args.rows), 4)
+                           << " -> " << args.out << '\n';
   if (task.variant == "reality") note("'" + task.name + "' is a stand-in for the real robot, not real data");
 }
 
@@ -77,7 +100,10 @@ void add_simulate_command(CLI::App& app) {
                   "sim, or reality: the stacking tasks' stand-in for the real robot (not real data)")
       ->check(CLI::IsMember({"sim", "reality"}))
       ->capture_default_str();
-  cmd->add_option("--rows", args->rows, "Number of experiments")->check(whole_number(1, 1'000'000'000))->required();
+  cmd->add_option("--rows", args->rows,
+                  "Number of experiments (written as they are made: memory does not grow with them)")
+      ->check(whole_number(1, 1'000'000'000))
+      ->required();
   cmd->add_option("--seed", args->seed, "Random seed; the same seed gives the same data for any --threads")
       ->check(whole_number(0, UINT64_MAX))
       ->capture_default_str();

@@ -159,7 +159,9 @@ void add_missing(const column_plan& plan, column_part& part) {
 void add_value(const column_plan& plan, column_part& part, const detail::csv_field& field, std::size_t chunk,
                const detail::missing_rule& missing) {
   if (plan.mode == column_mode::skip) return;
-  if (plan.mode == column_mode::labels) {  // a label seen before is no missing token: the common case first
+  // A label seen before is no missing token (the common case first), nor is a model's state: a
+  // model that declares a state "NA" has it read as that state.
+  if (plan.mode == column_mode::labels || plan.mode == column_mode::known) {
     if (const auto id = part.labels.find(field.text); id != detail::label_dictionary::none) {
       part.codes.push_back(id);
       return;
@@ -196,7 +198,7 @@ void add_value(const column_plan& plan, column_part& part, const detail::csv_fie
       return;
     }
     case column_mode::known: {
-      const auto id = part.labels.find(field.text);
+      const auto id = detail::numeric_state(*plan.known, field.text);  // not a state's text (see above)
       if (id == detail::label_dictionary::none) {
         detail::fail_field(field, plan.name,
                            "'" + std::string(field.text) + "' is not a state of '" + plan.name +
@@ -210,17 +212,20 @@ void add_value(const column_plan& plan, column_part& part, const detail::csv_fie
   }
 }
 
-/// Which fields decide whether a record is dropped (policy drop): those of every column read.
+/// Which fields decide whether a record is dropped (policy drop): those of every column read,
+/// with the model's variable of each (if any), whose states are no missing values.
 struct drop_rule {
   const detail::missing_rule* missing;
   std::vector<std::size_t> positions;
+  std::vector<const variable*> known;
 };
 
 /// Whether the policy drops this record: a column read holds a missing value.
 [[nodiscard]] bool dropped(const drop_rule& rule, const std::vector<detail::csv_field>& record) {
   if (rule.missing->policy != missing_policy::drop) return false;
-  for (auto position : rule.positions) {
-    if (rule.missing->is_missing(record[position].text)) return true;
+  for (std::size_t c = 0; c < rule.positions.size(); ++c) {
+    const auto text = record[rule.positions[c]].text;
+    if (rule.missing->is_missing(text) && !detail::declared_state(rule.known[c], text)) return true;
   }
   return false;
 }
@@ -388,8 +393,11 @@ csv_data read_dataset(csv_reader::impl& input, const csv_options& options) {
   }
 
   const detail::missing_rule missing(options.missing);
-  drop_rule rule{&missing, {}};
-  for (const auto& plan : plans) rule.positions.push_back(plan.position);
+  drop_rule rule{&missing, {}, {}};
+  for (const auto& plan : plans) {
+    rule.positions.push_back(plan.position);
+    rule.known.push_back(plan.known);
+  }
 
   const auto chunks = detail::record_chunks(
       text, input.delimiter, options.chunk_bytes ? options.chunk_bytes : dataset_chunk_bytes, text.size(), true);
@@ -473,6 +481,11 @@ void write_csv(const dataset& data, std::ostream& out, char delimiter, std::stri
     line += (c ? std::string(1, delimiter) : std::string()) + detail::csv_escape(column_name(columns[c]), delimiter);
   }
   out << line << '\n';
+  write_csv_rows(data, out, delimiter, missing);
+}
+
+void write_csv_rows(const dataset& data, std::ostream& out, char delimiter, std::string_view missing) {
+  const auto& columns = data.columns();
   // Labels are escaped once per state, not once per row.
   std::vector<std::vector<std::string>> escaped_labels(columns.size());
   for (std::size_t c = 0; c < columns.size(); ++c) {

@@ -36,7 +36,7 @@ struct counted_column {
 
 /// A family's counts over provisional ids: child first, then the parents, laid out like a
 /// count_table (child fastest, last parent next) with the cardinalities in `cards`.
-struct family_counts {
+struct family_tally {
   std::vector<std::size_t> members;  // counted column indices, child first
   std::vector<std::uint32_t> cards;
   std::vector<std::uint32_t> strides;
@@ -51,7 +51,7 @@ namespace {
 using detail::block_rows;
 using detail::count_mode;
 using detail::counted_column;
-using detail::family_counts;
+using detail::family_tally;
 using detail::max_cells;
 
 [[nodiscard]] std::vector<std::uint32_t> strides_of(const std::vector<std::uint32_t>& cards) {
@@ -66,7 +66,7 @@ using detail::max_cells;
 }
 
 /// Lays `family` out for `cards` (each at least the old one), keeping its counts.
-void relayout(family_counts& family, const std::vector<std::uint32_t>& cards) {
+void relayout(family_tally& family, const std::vector<std::uint32_t>& cards) {
   if (family.too_large || cards == family.cards) return;
   std::uint64_t cells = 1;
   for (auto card : cards) {
@@ -114,7 +114,7 @@ struct csv_partial_counts::impl {
   std::size_t lines = 0;
   std::vector<detail::label_dictionary> labels;  // per column: the labels (known: the states)
   std::vector<std::uint64_t> outside;            // per binned column
-  std::vector<family_counts> families;
+  std::vector<family_tally> families;
 };
 
 namespace {
@@ -132,7 +132,7 @@ using counter_impl = csv_counter::impl;
     for (const auto& state : plan.columns[c].var.states()) partial.labels[c].add(state, {});
   }
   for (const auto& members : plan.families) {
-    family_counts family;
+    family_tally family;
     family.members = members;
     family.cards.assign(members.size(), 0);
     family.strides.assign(members.size(), 1);
@@ -147,7 +147,7 @@ using counter_impl = csv_counter::impl;
                                         : partial.labels[column].size());
 }
 
-void fit_layout(const counter_impl& plan, partial_impl& partial, family_counts& family) {
+void fit_layout(const counter_impl& plan, partial_impl& partial, family_tally& family) {
   std::vector<std::uint32_t> cards;
   for (auto column : family.members) cards.push_back(cardinality(plan, partial, column));
   relayout(family, cards);
@@ -191,10 +191,12 @@ void count_block(const counter_impl& plan, count_worker& worker) {
   worker.filled = 0;
 }
 
-/// The id of a label seen before (the common case, inlined into the record loop), or none.
+/// The id of a label seen before or of a model's state (the common case, inlined into the
+/// record loop), or none. A state is found before the missing tokens are looked at: a model
+/// that declares a state "NA" has it read as that state.
 [[nodiscard]] inline std::uint32_t known_label_id(const counted_column& column, const partial_impl& partial,
                                                   std::size_t c, const detail::csv_field& field) {
-  return column.mode == count_mode::labels ? partial.labels[c].find(field.text) : detail::label_dictionary::none;
+  return column.mode != count_mode::binned ? partial.labels[c].find(field.text) : detail::label_dictionary::none;
 }
 
 std::uint32_t provisional_id(const counted_column& column, partial_impl& partial, std::size_t c,
@@ -207,7 +209,8 @@ std::uint32_t provisional_id(const counted_column& column, partial_impl& partial
       return id != detail::label_dictionary::none ? id : labels.add(field.text, {field.line, field.column, chunk});
     }
     case count_mode::known: {
-      const auto id = partial.labels[c].find(field.text);
+      auto id = partial.labels[c].find(field.text);
+      if (id == detail::label_dictionary::none) id = detail::numeric_state(column.var, field.text);
       if (id == detail::label_dictionary::none) {
         detail::fail_field(field, column.name,
                            "'" + std::string(field.text) + "' is not a state of '" + column.name +
@@ -234,8 +237,11 @@ std::size_t count_piece(const counter_impl& plan, count_worker& worker, std::str
         text, plan.delimiter, worker.fields, [&](const std::vector<detail::csv_field>& fields) {
           if (fields.size() != plan.width) detail::fail_width(fields, plan.width);
           // Dropped rows are checked first, so that their labels add no states.
-          if (drop && std::any_of(plan.positions.begin(), plan.positions.end(),
-                                  [&](std::size_t p) { return plan.missing.is_missing(fields[p].text); })) {
+          if (drop && std::any_of(plan.columns.begin(), plan.columns.end(), [&](const counted_column& column) {
+                const auto field = fields[column.position].text;
+                return plan.missing.is_missing(field) &&
+                       !detail::declared_state(column.mode == count_mode::known ? &column.var : nullptr, field);
+              })) {
             ++worker.partial.dropped;
             return;
           }
@@ -270,7 +276,7 @@ std::uint32_t merge_label(detail::label_dictionary& labels, std::string_view lab
 /// Adds the cells of `from` to `to`, laid out by `strides` (one per member) after each
 /// member's id is mapped by `id_of` (per column; empty: the id stays).
 template <class Stride>
-void add_mapped(const family_counts& from, const std::vector<std::vector<std::uint32_t>>& id_of,
+void add_mapped(const family_tally& from, const std::vector<std::vector<std::uint32_t>>& id_of,
                 const std::vector<Stride>& strides, std::uint64_t* to) {
   for (std::size_t cell = 0; cell < from.counts.size(); ++cell) {
     if (from.counts[cell] == 0) continue;
@@ -355,7 +361,7 @@ std::size_t csv_partial_counts::lines() const noexcept { return impl_->lines; }
 
 // ---- csv_counter ---------------------------------------------------------------------
 
-csv_counter::csv_counter(std::string source, std::vector<std::string> header, const csv_count_request& request,
+csv_counter::csv_counter(std::string source, std::vector<std::string> header, const family_count_request& request,
                          char delimiter)
     : impl_(std::make_unique<impl>()) {
   auto& plan = *impl_;
@@ -419,7 +425,7 @@ csv_partial_counts& csv_partial_counts::operator+=(csv_partial_counts&& other) {
   return *this;
 }
 
-csv_counts csv_counter::finish(const csv_partial_counts& counts) const {
+family_counts csv_counter::finish(const csv_partial_counts& counts) const {
   const auto& plan = *impl_;
   const auto& partial = detail::csv_access::of(counts);
   if (partial.rows == 0 && partial.dropped > 0) {
@@ -436,7 +442,7 @@ csv_counts csv_counter::finish(const csv_partial_counts& counts) const {
       }
     }
   }
-  csv_counts result;
+  family_counts result;
   result.rows = partial.rows;
   result.dropped = partial.dropped;
   // Each column's variable and the state of each provisional id.
@@ -488,7 +494,7 @@ csv_counts csv_counter::finish(const csv_partial_counts& counts) const {
 
 // ---- count_csv -----------------------------------------------------------------------
 
-csv_counts count_csv(csv_reader& input, const csv_count_request& request) {
+family_counts count_csv(csv_reader& input, const family_count_request& request) {
   auto& reader = detail::csv_access::of(input);
   const csv_counter counter(reader.source, reader.header, request, reader.delimiter);
   const auto& plan = detail::csv_access::of(counter);
@@ -585,7 +591,7 @@ struct summed_layout {
   static constexpr std::size_t dropped = 1;
   static constexpr std::size_t lines = 2;
   static constexpr std::size_t outside = 3;  // then one per column
-  std::vector<family_counts> families;       // their cards and strides, no counts
+  std::vector<family_tally> families;        // their cards and strides, no counts
   std::vector<std::size_t> offsets;          // of each family's cells
   std::size_t size = 0;
 };
@@ -594,7 +600,7 @@ struct summed_layout {
   summed_layout layout;
   layout.size = summed_layout::outside + plan.columns.size();
   for (const auto& members : plan.families) {
-    family_counts family;
+    family_tally family;
     family.members = members;
     std::uint64_t cells = 1;
     for (auto column : members) {
@@ -676,7 +682,7 @@ struct summed_layout {
 
 }  // namespace
 
-csv_counts count_csv(csv_reader& input, const csv_count_request& request, detail::process_group& group) {
+family_counts count_csv(csv_reader& input, const family_count_request& request, detail::process_group& group) {
   if (group.size() == 1) return count_csv(input, request);
   auto& reader = detail::csv_access::of(input);
   const csv_counter counter(reader.source, reader.header, request, reader.delimiter);

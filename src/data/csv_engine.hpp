@@ -35,6 +35,7 @@ struct csv_failure {
   std::size_t line;
   std::size_t column;
   std::string what;
+  bool missing_value = false;  // a missing_value_error: a missing value the policy refuses
 };
 
 /// The messages of the CSV limits (pgm/core/limits.hpp), one wording for every reader.
@@ -398,19 +399,24 @@ struct missing_rule {
 
 /// A missing value under the policy `error`: its place, and how to read such data instead.
 [[noreturn]] inline void fail_missing(const csv_field& field, const std::string& column) {
-  fail_field(field, column,
-             (field.text.empty() ? std::string("the value is empty, a missing value")
-                                 : "'" + std::string(field.text) + "' is a missing value") +
-                 " (missing values are refused by default: choose the missing-value policy drop or available to "
-                 "read incomplete rows)");
+  throw csv_failure{field.line, field.column,
+                    "column '" + column + "': " +
+                        (field.text.empty() ? std::string("the value is empty, a missing value")
+                                            : "'" + std::string(field.text) + "' is a missing value") +
+                        " (missing values are refused by default: choose the missing-value policy drop or available "
+                        "to read incomplete rows, or other texts as missing)",
+                    true};
 }
 
 /// Whether a field is missing: false for a value, true for a missing one where the policy
 /// reads them; fails where the policy is `error`, and for an empty field that is no missing token.
 [[nodiscard]] inline bool field_missing(const csv_field& field, const std::string& column, const missing_rule& rule) {
   if (!rule.is_missing(field.text)) {
-    if (field.text.empty())
-      fail_field(field, column, "the value is empty (the empty field is not a missing token here)");
+    if (field.text.empty()) {
+      throw csv_failure{field.line, field.column,
+                        "column '" + column + "': the value is empty (the empty field is not a missing token here)",
+                        true};
+    }
     return false;
   }
   if (rule.policy == missing_policy::error) fail_missing(field, column);
@@ -507,6 +513,24 @@ class label_dictionary {
 
 // A discrete column's states come from its labels in pgm's one order: pgm/data/state_order.hpp.
 using pgm::order_states;
+
+/// The state of `known` that is exactly the number `text` is ("1.0" for the state "1"), or
+/// label_dictionary::none: a label and a state are compared as text unless both are numbers
+/// exactly equal (pgm/data/state_order.hpp). Looked up only for a label that is no state's text.
+[[nodiscard]] inline std::uint32_t numeric_state(const variable& known, std::string_view text) {
+  const auto value = exact_decimal_of(text);
+  if (!value || !parse_double(text)) return label_dictionary::none;
+  for (std::size_t s = 0; s < known.cardinality(); ++s) {
+    if (exact_decimal_of(known.states()[s]) == value) return static_cast<std::uint32_t>(s);
+  }
+  return label_dictionary::none;
+}
+
+/// Whether a field that is a missing token is, in this column, a state of the model's variable
+/// (pathfinder declares a state "NA"): then it is that state, not a missing value.
+[[nodiscard]] inline bool declared_state(const variable* known, std::string_view text) {
+  return known != nullptr && known->find_state(text).has_value();
+}
 
 /// Splits `text`, which starts at a record boundary, into chunks of whole records that can be
 /// parsed independently: the start of every chunk, then the end of the last. A chunk is about

@@ -41,6 +41,9 @@ struct chunk_failure {
 
 /// The parse_error of `failure` in the chunk that starts on line `first_line`.
 [[noreturn]] inline void throw_at(const std::string& source, std::size_t first_line, const csv_failure& failure) {
+  if (failure.missing_value) {
+    throw missing_value_error(source, first_line + failure.line, failure.column, failure.what);
+  }
   throw parse_error(source, first_line + failure.line, failure.column, failure.what);
 }
 

@@ -9,6 +9,7 @@
 
 #include "io/network_text.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/detail/text.hpp"
 
@@ -135,26 +136,33 @@ class net_parser {
     return false;
   }
 
-  /// One attribute value: a string, a word (number or name) or a parenthesized list of values.
-  /// Leaves are appended to `leaves` with where they are.
-  void read_value(std::vector<net_token>& leaves) {
-    if (accept_symbol('(')) {
+  /// One attribute value: a string, a word (number or name) or a parenthesized list of values,
+  /// each leaf handed to `leaf(token)` as it is read (a table's values are never held as
+  /// tokens). Lists nest at most json_max_depth levels, as a JSON file's do.
+  template <class Leaf>
+  void read_value(Leaf&& leaf, std::size_t depth = 0) {
+    if (current_.type == net_token::kind::symbol && current_.text[0] == '(') {
+      if (depth == json_max_depth) {
+        fail(current_.at, "lists nested deeper than " + std::to_string(json_max_depth) + " levels, pgm's limit");
+      }
+      advance();
       while (!accept_symbol(')')) {
         if (current_.type == net_token::kind::end) fail(current_.at, "a '(' is never closed");
-        read_value(leaves);
+        read_value(leaf, depth + 1);
         accept_symbol(',');
       }
       return;
     }
     if (current_.type == net_token::kind::word || current_.type == net_token::kind::string) {
-      leaves.push_back(current_);
+      leaf(current_);
       advance();
       return;
     }
     fail(current_.at, "expected a value, found " + describe(current_));
   }
 
-  /// `{ name = value; … }`, calling `use(name, leaves, value_start)` for each attribute.
+  /// `{ name = value; … }`, calling `use(name, value_start)` for each attribute, which reads the
+  /// value (read_value) or leaves it to be skipped.
   template <class Use>
   void read_attributes(Use&& use) {
     expect_symbol('{');
@@ -162,14 +170,24 @@ class net_parser {
       const auto name = expect_word("an attribute name or '}'");
       expect_symbol('=');
       const auto start = current_;
-      std::vector<net_token> leaves;
-      read_value(leaves);
+      if (!use(name, start)) read_value([](const net_token&) {});
       expect_symbol(';');
-      use(name, start, leaves);
     }
   }
   void skip_attributes_block() {
-    read_attributes([](const net_token&, const net_token&, const std::vector<net_token>&) {});
+    read_attributes([](const net_token&, const net_token&) { return false; });
+  }
+
+  /// The leaves of one value, at most `limit` of them (`what` names them in the refusal).
+  std::vector<net_token> leaves_of_value(std::size_t limit, const std::string& what) {
+    std::vector<net_token> leaves;
+    read_value([&](const net_token& leaf) {
+      if (leaves.size() == limit) {
+        fail(leaf.at, "more than " + std::to_string(limit) + " " + what + ", pgm's limit of cells per table");
+      }
+      leaves.push_back(leaf);
+    });
+    return leaves;
   }
 
   static std::string joined(const std::vector<net_token>& leaves) {
@@ -187,22 +205,26 @@ class net_parser {
       if (other.name == v.name) fail(name.at, "node '" + v.name + "' is declared twice");
     }
     bool has_states = false;
-    read_attributes([&](const net_token& attribute, const net_token& start, const std::vector<net_token>& leaves) {
+    read_attributes([&](const net_token& attribute, const net_token& start) {
       if (attribute.text == "states") {
-        for (const auto& leaf : leaves) {
+        // A variable with more states than a table has cells cannot have a table.
+        for (const auto& leaf : leaves_of_value(max_table_cells, "states of '" + v.name + "'")) {
           if (leaf.type != net_token::kind::string) {
             fail(leaf.at, "the states of '" + v.name + "' must be quoted strings, found '" + leaf.text + "'");
           }
           v.states.push_back(leaf.text);
         }
         has_states = true;
-      } else if (attribute.text.starts_with("pgm_")) {
-        try {
-          detail::apply_pgm_property(v, std::string_view(attribute.text).substr(4), joined(leaves), " ");
-        } catch (const model_error& e) {
-          fail(start.at, e.what());
-        }
+        return true;
       }
+      if (!attribute.text.starts_with("pgm_")) return false;
+      const auto leaves = leaves_of_value(max_table_cells, "values of '" + attribute.text + "'");
+      try {
+        detail::apply_pgm_property(v, std::string_view(attribute.text).substr(4), joined(leaves), " ");
+      } catch (const model_error& e) {
+        fail(start.at, e.what());
+      }
+      return true;
     });
     if (!has_states) fail(keyword.at, "node '" + v.name + "' has no 'states'");
     variables_.push_back(std::move(v));
@@ -227,18 +249,27 @@ class net_parser {
     } else {
       expect_symbol(')');
     }
+    // A table beyond pgm's limit is refused before its values are read when its nodes are
+    // declared already (as Hugin writes them).
+    detail::check_table_cells(variables_, table.child, table.parents, child.at,
+                              [this](detail::text_position p, const std::string& what) { fail(p, what); });
     bool has_data = false;
-    read_attributes([&](const net_token& attribute, const net_token& start, const std::vector<net_token>& leaves) {
-      if (attribute.text != "data") return;  // experience, model_nodes, … carry nothing pgm keeps
+    read_attributes([&](const net_token& attribute, const net_token& start) {
+      if (attribute.text != "data") return false;  // experience, model_nodes, … carry nothing pgm keeps
       has_data = true;
       table.values_at = start.at;
-      for (const auto& leaf : leaves) {
+      read_value([&](const net_token& leaf) {
         const auto value = leaf.type == net_token::kind::word ? detail::parse_double(leaf.text) : std::nullopt;
         if (!value || !std::isfinite(*value)) {
           fail(leaf.at, "expected a probability in the data of '" + table.child + "', found " + describe(leaf));
         }
+        if (table.values.size() == max_table_cells) {
+          fail(leaf.at, "more than " + std::to_string(max_table_cells) + " probabilities in the table of '" +
+                            table.child + "', pgm's limit of cells per table (docs/limits.md)");
+        }
         table.values.push_back(*value);
-      }
+      });
+      return true;
     });
     if (!has_data) fail(child.at, "the potential of '" + table.child + "' has no 'data'");
     tables_.push_back(std::move(table));

@@ -11,6 +11,7 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/core/mixed_radix.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/io/read_options.hpp"
@@ -54,6 +55,37 @@ struct declared_table {
   text_position at;         // the child's name
   text_position values_at;  // the values
 };
+
+/// The variable `name` among `declared`, or null.
+[[nodiscard]] inline const declared_variable* find_declared(const std::vector<declared_variable>& declared,
+                                                            const std::string& name) {
+  for (const auto& v : declared) {
+    if (v.name == name) return &v;
+  }
+  return nullptr;
+}
+
+/// Refuses through `fail(at, message)` a table beyond max_table_cells whose child and parents
+/// are declared already, before its values are read; a table with an undeclared member is
+/// left to build_network (and its values to the readers' own bound of max_table_cells).
+template <class Fail>
+void check_table_cells(const std::vector<declared_variable>& declared, const std::string& child,
+                       const std::vector<std::pair<std::string, text_position>>& parents, text_position at,
+                       Fail&& fail) {
+  const auto* v = find_declared(declared, child);
+  if (v == nullptr || v->states.empty()) return;
+  std::vector<std::size_t> cards;
+  for (const auto& [parent, where] : parents) {
+    const auto* p = find_declared(declared, parent);
+    if (p == nullptr || p->states.empty()) return;
+    cards.push_back(p->states.size());
+  }
+  try {
+    static_cast<void>(checked_table_cells(child, v->states.size(), mixed_radix(cards).size()));
+  } catch (const model_error& e) {
+    fail(at, e.what());
+  }
+}
 
 /// Sets a pgm property (edges, quantity, unit, role) of `v`; other keys are left to the caller.
 /// Returns false for a key pgm does not know; throws the message for bad edges.
@@ -150,7 +182,7 @@ bayesian_network build_network(const std::vector<declared_variable>& declared, s
     const auto j = variables[i].cardinality();
     std::size_t expected = j;
     try {
-      expected *= mixed_radix(cards).size();
+      expected = checked_table_cells(variables[i].name(), j, mixed_radix(cards).size());
     } catch (const model_error& e) {
       fail(table.at, e.what());
     }

@@ -2,28 +2,300 @@
 
 #include "pgm/io/xmlbif.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <map>
+#include <optional>
 #include <pugixml.hpp>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 #include "io/network_text.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/detail/text.hpp"
 
 namespace pgm {
 namespace {
 
+/// A problem at a byte offset of the file, turned into file:line:column by the reader.
+struct xml_problem {
+  std::size_t offset;
+  std::string what;
+};
+
+[[noreturn]] void refuse(std::size_t offset, std::string what) { throw xml_problem{offset, std::move(what)}; }
+
+/// Appends the UTF-8 of `code`, refusing what is no character XML allows (as expat does).
+void append_character(std::string& out, std::uint32_t code, std::size_t offset) {
+  const bool allowed = code == 0x9 || code == 0xA || code == 0xD || (code >= 0x20 && code <= 0xD7FF) ||
+                       (code >= 0xE000 && code <= 0xFFFD) || (code >= 0x10000 && code <= 0x10FFFF);
+  if (!allowed) refuse(offset, "a reference to a character XML does not allow");
+  if (code < 0x80) {
+    out += static_cast<char>(code);
+  } else if (code < 0x800) {
+    out += static_cast<char>(0xC0 | (code >> 6));
+    out += static_cast<char>(0x80 | (code & 0x3F));
+  } else if (code < 0x10000) {
+    out += static_cast<char>(0xE0 | (code >> 12));
+    out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (code & 0x3F));
+  } else {
+    out += static_cast<char>(0xF0 | (code >> 18));
+    out += static_cast<char>(0x80 | ((code >> 12) & 0x3F));
+    out += static_cast<char>(0x80 | ((code >> 6) & 0x3F));
+    out += static_cast<char>(0x80 | (code & 0x3F));
+  }
+}
+
+/// The code point of a character reference's body ("#65", "#x41"), or nothing.
+std::optional<std::uint32_t> character_code(std::string_view body) {
+  if (body.size() < 2 || body[0] != '#') return std::nullopt;
+  const bool hex = body[1] == 'x';
+  const auto digits = body.substr(hex ? 2 : 1);
+  if (digits.empty()) return std::nullopt;
+  std::uint32_t code = 0;
+  for (const char c : digits) {
+    const int digit = c >= '0' && c <= '9'                            ? c - '0'
+                      : hex && (c | 0x20) >= 'a' && (c | 0x20) <= 'f' ? (c | 0x20) - 'a' + 10
+                                                                      : -1;
+    if (digit < 0) return std::nullopt;
+    code = code * (hex ? 16 : 10) + static_cast<std::uint32_t>(digit);
+    if (code > 0x10FFFF) return 0;  // refused as no character
+  }
+  return code;
+}
+
+/// Text with its references resolved as ElementTree (expat), which pgmpy reads XMLBIF with,
+/// resolves them: character references, the five predefined entities, and the general entities
+/// the internal DTD subset declares (`<!ENTITY two "2">`), expanded within
+/// xml_max_entity_bytes (a "billion laughs" file is refused). What expat refuses is refused:
+/// undeclared, external, recursive and parameter entities, and markup inside an entity.
+class xml_text_decoder {
+ public:
+  /// Reads the entity declarations of a DOCTYPE's text (what follows `<!DOCTYPE`), which
+  /// starts at byte `offset` of the file.
+  void declare(std::string_view doctype, std::size_t offset) {
+    std::size_t i = 0;
+    const auto skip_quoted_to = [&](char end) {  // to just past `end`, outside quotes
+      while (i < doctype.size() && doctype[i] != end) {
+        if (doctype[i] == '"' || doctype[i] == '\'') {
+          const auto close = doctype.find(doctype[i], i + 1);
+          i = close == std::string_view::npos ? doctype.size() : close;
+        }
+        ++i;
+      }
+      ++i;
+    };
+    skip_quoted_to('[');
+    while (i < doctype.size()) {
+      const auto rest = doctype.substr(i);
+      if (std::string_view(" \t\r\n").find(rest[0]) != std::string_view::npos) {
+        ++i;
+      } else if (rest[0] == ']') {
+        return;
+      } else if (rest.starts_with("<!--")) {
+        const auto end = rest.find("-->");
+        i += end == std::string_view::npos ? rest.size() : end + 3;
+      } else if (rest.starts_with("<?")) {
+        const auto end = rest.find("?>");
+        i += end == std::string_view::npos ? rest.size() : end + 2;
+      } else if (rest.starts_with("<!ENTITY")) {
+        i += declare_entity(rest, offset + i);
+      } else if (rest[0] == '%') {
+        refuse(offset + i,
+               "a parameter entity reference in the DTD; pgm reads only general entities (<!ENTITY name "
+               "\"text\">), as pgmpy's ElementTree does");
+      } else if (rest.starts_with("<!")) {
+        skip_quoted_to('>');  // ELEMENT, ATTLIST, NOTATION: nothing pgm uses
+      } else {
+        refuse(offset + i, "unexpected text in the DTD");
+      }
+    }
+  }
+
+  /// The text of character data `raw` (as the file has it) at byte `offset`.
+  std::string decode(std::string_view raw, std::size_t offset) {
+    // pugixml lets '<' through in an attribute's value; XML (and ElementTree) refuse it.
+    if (const auto angle = raw.find('<'); angle != std::string_view::npos) {
+      refuse(offset, "a '<' in an attribute's value (write &lt; for '<')");
+    }
+    std::string out;
+    if (raw.find('&') == std::string_view::npos) return std::string(raw);
+    std::vector<std::string_view> open;
+    expand(raw, offset, out, open);
+    return out;
+  }
+
+ private:
+  struct entity {
+    std::string text;  // the replacement text, character references resolved
+    bool external = false;
+  };
+
+  /// Reads `<!ENTITY name "value">` at the start of `text`; returns the bytes read.
+  std::size_t declare_entity(std::string_view text, std::size_t offset) {
+    std::size_t i = std::string_view("<!ENTITY").size();
+    const auto spaces = [&] {
+      while (i < text.size() && std::string_view(" \t\r\n").find(text[i]) != std::string_view::npos) ++i;
+    };
+    spaces();
+    if (i < text.size() && text[i] == '%') {
+      refuse(offset + i,
+             "a parameter entity (<!ENTITY % …>); pgm reads only general entities, as pgmpy's "
+             "ElementTree does");
+    }
+    const auto name_start = i;
+    while (i < text.size() && std::string_view(" \t\r\n\"'>").find(text[i]) == std::string_view::npos) ++i;
+    const std::string name(text.substr(name_start, i - name_start));
+    if (name.empty()) refuse(offset + i, "an entity declaration without a name");
+    spaces();
+    entity declared;
+    if (i < text.size() && (text[i] == '"' || text[i] == '\'')) {
+      const auto close = text.find(text[i], i + 1);
+      if (close == std::string_view::npos) refuse(offset + i, "the value of the entity '" + name + "' is never closed");
+      declared.text = literal(text.substr(i + 1, close - i - 1), offset + i + 1);
+      i = close + 1;
+    } else {
+      declared.external = true;  // SYSTEM or PUBLIC: a file or address, never read
+    }
+    while (i < text.size() && text[i] != '>') {
+      if (text[i] == '"' || text[i] == '\'') {
+        const auto close = text.find(text[i], i + 1);
+        i = close == std::string_view::npos ? text.size() : close;
+      }
+      ++i;
+    }
+    if (i >= text.size()) refuse(offset, "the declaration of the entity '" + name + "' is never closed");
+    entities_.emplace(name, std::move(declared));  // the first declaration binds
+    return i + 1;
+  }
+
+  /// An entity's value as declared: character references resolved now, entity references
+  /// kept for when the entity is used.
+  std::string literal(std::string_view value, std::size_t offset) {
+    std::string out;
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      if (value[i] == '%') refuse(offset + i, "a parameter entity reference in an entity's value");
+      if (value[i] == '&' && i + 1 < value.size() && value[i + 1] == '#') {
+        const auto end = value.find(';', i);
+        const auto code =
+            end == std::string_view::npos ? std::nullopt : character_code(value.substr(i + 1, end - i - 1));
+        if (!code) refuse(offset + i, "a malformed character reference");
+        append_character(out, *code, offset + i);
+        i = end;
+        continue;
+      }
+      out += value[i];
+    }
+    return out;
+  }
+
+  void expand(std::string_view text, std::size_t offset, std::string& out, std::vector<std::string_view>& open) {
+    for (std::size_t i = 0; i < text.size(); ++i) {
+      // Inside an entity, positions are those of the outermost reference.
+      const auto at = open.empty() ? offset + i : offset;
+      const char c = text[i];
+      if (c == '<') {
+        refuse(at, "the entity '" + std::string(open.back()) +
+                       "' holds markup ('<'), which pgm does not read in an XMLBIF name, state or table");
+      }
+      if (c != '&') {
+        count(at, open);
+        out += c;
+        continue;
+      }
+      const auto end = text.find(';', i);
+      if (end == std::string_view::npos) {
+        refuse(at, "an '&' that starts no entity or character reference (write &amp; for '&')");
+      }
+      const auto body = text.substr(i + 1, end - i - 1);
+      i = end;
+      if (!body.empty() && body[0] == '#') {
+        const auto code = character_code(body);
+        if (!code) refuse(at, "a malformed character reference '&" + std::string(body) + ";'");
+        count(at, open);
+        append_character(out, *code, at);
+        continue;
+      }
+      if (const auto predefined = predefined_entity(body)) {
+        count(at, open);
+        out += *predefined;
+        continue;
+      }
+      const auto it = entities_.find(body);
+      if (it == entities_.end()) {
+        refuse(at, "an undefined entity '&" + std::string(body) + ";'" +
+                       (entities_.empty() ? " (the file declares no entities; write &amp; for '&')" : ""));
+      }
+      if (it->second.external) {
+        refuse(at, "'&" + std::string(body) +
+                       ";' is an external entity: pgm reads no other file an XMLBIF file names "
+                       "(nor does pgmpy's ElementTree)");
+      }
+      if (std::find(open.begin(), open.end(), body) != open.end()) {
+        refuse(at, "the entity '" + std::string(body) + "' refers to itself");
+      }
+      count(at, open);
+      open.push_back(it->first);
+      expand(it->second.text, at, out, open);
+      open.pop_back();
+    }
+  }
+
+  /// Counts one step of an entity's expansion against the limit (references count, so that
+  /// entities of empty text cannot amplify the work either).
+  void count(std::size_t at, const std::vector<std::string_view>& open) {
+    if (open.empty()) return;
+    if (++expanded_ > xml_max_entity_bytes || open.size() > max_nesting) {
+      refuse(at, "the file's entities expand to more than " + std::to_string(xml_max_entity_bytes >> 20) +
+                     " MiB or nest deeper than " + std::to_string(max_nesting) +
+                     " levels, pgm's limit of XML entities (docs/limits.md)");
+    }
+  }
+
+  static std::optional<char> predefined_entity(std::string_view name) {
+    if (name == "lt") return '<';
+    if (name == "gt") return '>';
+    if (name == "amp") return '&';
+    if (name == "apos") return '\'';
+    if (name == "quot") return '"';
+    return std::nullopt;
+  }
+
+  static constexpr std::size_t max_nesting = 64;
+  std::map<std::string, entity, std::less<>> entities_;
+  std::size_t expanded_ = 0;
+};
+
 class xmlbif_reader {
  public:
   xmlbif_reader(std::string_view text, const std::string& source) : text_(text), source_(source) {}
 
   bayesian_network read(const network_read_options& options) {
+    try {
+      return read_document(options);
+    } catch (const xml_problem& problem) {
+      fail(detail::position_of(text_, problem.offset), problem.what);
+    }
+  }
+
+ private:
+  bayesian_network read_document(const network_read_options& options) {
     pugi::xml_document document;
-    const auto result = document.load_buffer(text_.data(), text_.size(), pugi::parse_default);
+    // References are resolved by xml_text_decoder, as pgmpy's parser resolves them; pugixml
+    // would keep an entity it does not know as text ("&two;").
+    const auto flags = (pugi::parse_default | pugi::parse_doctype) & ~pugi::parse_escapes;
+    const auto result = document.load_buffer(text_.data(), text_.size(), flags);
     if (!result) {
       fail(detail::position_of(text_, static_cast<std::size_t>(std::max<std::ptrdiff_t>(result.offset, 0))),
            std::string("invalid XML: ") + result.description());
+    }
+    for (const auto& node : document.children()) {
+      if (node.type() == pugi::node_doctype) decoder_.declare(node.value(), offset_of(node));
     }
     const auto root = document.document_element();
     if (std::string_view(root.name()) != "BIF") {
@@ -33,13 +305,12 @@ class xmlbif_reader {
     if (!network) fail(at(root), "<BIF> has no <NETWORK>");
     std::vector<detail::declared_variable> variables;
     std::vector<detail::declared_table> tables;
+    for (const auto& node : network.children("VARIABLE")) variables.push_back(read_variable(node));
     for (const auto& node : network.children()) {
       if (node.type() != pugi::node_element) continue;
       const std::string_view name = node.name();
-      if (name == "VARIABLE") {
-        variables.push_back(read_variable(node));
-      } else if (name == "DEFINITION" || name == "PROBABILITY") {  // PROBABILITY: XMLBIF 0.2
-        tables.push_back(read_table(node));
+      if (name == "DEFINITION" || name == "PROBABILITY") {  // PROBABILITY: XMLBIF 0.2
+        tables.push_back(read_table(node, variables));
       }
       // NAME, PROPERTY and elements of later versions carry nothing pgm keeps.
     }
@@ -48,9 +319,12 @@ class xmlbif_reader {
                                  [this](detail::text_position p, const std::string& what) { fail(p, what); });
   }
 
- private:
   [[noreturn]] void fail(detail::text_position p, const std::string& what) const {
     throw parse_error(source_, p.line, p.column, what);
+  }
+
+  static std::size_t offset_of(const pugi::xml_node& node) {
+    return static_cast<std::size_t>(std::max<std::ptrdiff_t>(node.offset_debug(), 0));
   }
 
   detail::text_position at(const pugi::xml_node& node) const {
@@ -61,31 +335,52 @@ class xmlbif_reader {
     return detail::position_of(text_, node.type() == pugi::node_element && o > 0 ? o - 1 : o);
   }
 
+  /// An element's text as ElementTree's `.text` gives it (what pgmpy reads): its character
+  /// data and CDATA sections up to its first child element, references resolved.
+  std::string text_of(const pugi::xml_node& node) {
+    std::string text;
+    for (const auto& child : node.children()) {
+      if (child.type() == pugi::node_element) break;
+      if (child.type() == pugi::node_pcdata) text += decoder_.decode(child.value(), offset_of(child));
+      if (child.type() == pugi::node_cdata) text += child.value();
+    }
+    return text;
+  }
+
   /// The text of the one child `name` of `node`, failing when it is missing.
-  std::string single_text(const pugi::xml_node& node, const char* name) const {
+  std::string single_text(const pugi::xml_node& node, const char* name) {
     const auto child = node.child(name);
     if (!child) fail(at(node), "<" + std::string(node.name()) + "> has no <" + name + ">");
     if (child.next_sibling(name)) fail(at(child.next_sibling(name)), "a second <" + std::string(name) + ">");
-    return child.text().get();
+    return text_of(child);
   }
 
   detail::declared_variable read_variable(const pugi::xml_node& node) {
     detail::declared_variable v;
     v.at = at(node);
     v.name = single_text(node, "NAME");
-    const auto type = std::string_view(node.attribute("TYPE").value());
+    const auto type_attribute = node.attribute("TYPE");
+    const auto type = decoder_.decode(type_attribute.value(), offset_of(node));
     if (!type.empty() && type != "nature") {
-      fail(v.at, "variable '" + v.name + "' has TYPE=\"" + std::string(type) +
-                     "\"; only chance (\"nature\") variables are supported");
+      fail(v.at,
+           "variable '" + v.name + "' has TYPE=\"" + type + "\"; only chance (\"nature\") variables are supported");
     }
-    for (const auto& outcome : node.children("OUTCOME")) v.states.emplace_back(outcome.text().get());
+    for (const auto& outcome : node.children("OUTCOME")) {
+      // A variable with more states than a table has cells cannot have a table.
+      if (v.states.size() == max_table_cells) {
+        fail(at(outcome), "more than " + std::to_string(max_table_cells) + " states of '" + v.name +
+                              "', pgm's limit of cells per table (docs/limits.md)");
+      }
+      v.states.push_back(text_of(outcome));
+    }
     if (v.states.empty()) fail(v.at, "variable '" + v.name + "' has no <OUTCOME>");
     for (const auto& property : node.children("PROPERTY")) {
-      const std::string_view text = property.text().get();
+      const auto text = text_of(property);
       const auto eq = text.find('=');
-      if (eq == std::string_view::npos) continue;  // pgmpy writes an empty <PROPERTY/>
+      if (eq == std::string::npos) continue;  // pgmpy writes an empty <PROPERTY/>
+      const std::string_view view = text;
       try {
-        detail::apply_pgm_property(v, detail::trim(text.substr(0, eq)), detail::trim(text.substr(eq + 1)), ", \t\n");
+        detail::apply_pgm_property(v, detail::trim(view.substr(0, eq)), detail::trim(view.substr(eq + 1)), ", \t\n");
       } catch (const model_error& e) {
         fail(at(property), e.what());
       }
@@ -93,17 +388,23 @@ class xmlbif_reader {
     return v;
   }
 
-  detail::declared_table read_table(const pugi::xml_node& node) {
+  detail::declared_table read_table(const pugi::xml_node& node,
+                                    const std::vector<detail::declared_variable>& variables) {
     detail::declared_table table;
     table.at = at(node);
     table.child = single_text(node, "FOR");
-    for (const auto& given : node.children("GIVEN")) table.parents.emplace_back(given.text().get(), at(given));
+    for (const auto& given : node.children("GIVEN")) table.parents.emplace_back(text_of(given), at(given));
     const auto values = node.child("TABLE");
     if (!values) fail(at(node), "the definition of '" + table.child + "' has no <TABLE>");
     table.values_at = at(values);
+    detail::check_table_cells(variables, table.child, table.parents, table.at,
+                              [this](detail::text_position p, const std::string& what) { fail(p, what); });
     const auto text_node = values.first_child();
-    const std::string_view numbers = values.text().get();
-    const auto base = text_node ? at(text_node) : table.values_at;
+    const auto text = text_of(values);
+    const std::string_view numbers = text;
+    // Positions of the numbers are exact when the text is the file's, one piece without references.
+    const bool verbatim = text_node && text_node.type() == pugi::node_pcdata && !text_node.next_sibling() &&
+                          std::string_view(text_node.value()) == numbers && text_node.offset_debug() >= 0;
     std::size_t i = 0;
     while (i < numbers.size()) {
       while (i < numbers.size() && std::string_view(" \t\r\n").find(numbers[i]) != std::string_view::npos) ++i;
@@ -111,13 +412,14 @@ class xmlbif_reader {
       while (i < numbers.size() && std::string_view(" \t\r\n").find(numbers[i]) == std::string_view::npos) ++i;
       if (start == i) break;
       const auto word = numbers.substr(start, i - start);
+      const auto where = verbatim ? detail::position_of(text_, offset_of(text_node) + start) : table.values_at;
       const auto value = detail::parse_double(word);
       if (!value || !std::isfinite(*value)) {
-        auto p = base;
-        if (text_node && text_node.offset_debug() >= 0) {
-          p = detail::position_of(text_, static_cast<std::size_t>(text_node.offset_debug()) + start);
-        }
-        fail(p, "expected a probability in the table of '" + table.child + "', found '" + std::string(word) + "'");
+        fail(where, "expected a probability in the table of '" + table.child + "', found '" + std::string(word) + "'");
+      }
+      if (table.values.size() == max_table_cells) {
+        fail(where, "more than " + std::to_string(max_table_cells) + " probabilities in the table of '" + table.child +
+                        "', pgm's limit of cells per table (docs/limits.md)");
       }
       table.values.push_back(*value);
     }
@@ -126,6 +428,7 @@ class xmlbif_reader {
 
   std::string_view text_;
   const std::string& source_;
+  xml_text_decoder decoder_;
 };
 
 void add_text(pugi::xml_node parent, const char* name, const std::string& text) {

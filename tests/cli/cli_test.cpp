@@ -38,7 +38,7 @@ constexpr const char* stacking =
 TEST_F(cli_test, every_command_has_help) {
   for (const std::string command :
        {"", "fit ", "discretize ", "show ", "transfer ", "correspond ", "experiment ", "report ", "simulate ",
-        "predict ", "prevent ", "learn-structure ", "convert ", "query "}) {
+        "predict ", "prevent ", "learn-structure ", "convert ", "query ", "score "}) {
     const auto r = run(command + "--help");
     EXPECT_EQ(r.code, 0) << command;
     EXPECT_THAT(r.out, HasSubstr("Usage")) << command;
@@ -422,6 +422,8 @@ TEST_F(cli_test, counts_must_be_whole_numbers_in_range) {
        {"simulate --task 1-stack --rows -5 --out " + path("s.csv").string(),
         "simulate --task 1-stack --rows 18446744073709551615 --out " + path("s.csv").string(),
         "experiment --scenario 2-stack-reality --reps 0 --out " + path("r").string(),
+        "experiment --scenario 2-stack-reality --reps 100000 --out " + path("r").string(),  // kept in memory
+        std::string("calibrate --task 1-stack --rows 2000000000"),
         "discretize --in x.csv --bins 0 --out " + path("o.csv").string()}) {
     const auto r = run(arguments);
     EXPECT_EQ(r.code, 2) << arguments;
@@ -531,6 +533,47 @@ TEST_F(cli_test, discretize_checks_every_output_before_writing_any) {
   expect_failure("discretize --in " + data.string() + " --columns x --bins 2 --out " + data.string(),
                  "is the input file");
   EXPECT_EQ(slurp(data), "x,y\n1.5,0\n2.5,1\n3.5,0\n4.5,1\n");
+}
+
+// Output lost on the way to standard output (a full disk, /dev/full) is a failure: exit 1 and
+// a message, whichever command printed it (issue 28).
+TEST_F(cli_test, a_failed_write_to_standard_output_exits_1) {
+  const std::string sachs = std::string(PGM_NETWORKS_DIR) + "/sachs.bif";
+  const auto summary = file("summary.csv",
+                            "scenario,target,strategy,w,rows,metric,mean,sd,repetitions\n"
+                            "s,t,mle,0,0,failure_prevention,0.5,0.1,20\n");
+  const auto page = file("page.md", "{{pct:1 s/t/mle/0/0/failure_prevention}}\n");
+  const auto data = file("d.csv", stacking);
+  for (const auto& command : std::vector<std::string>{
+           "query --model " + sachs + " --query Akt", "show " + sachs, "convert " + sachs + " /dev/stdout --to bif",
+           "predict --model " + sachs + " --assign PKA=LOW --success Akt=HIGH --marginalize",
+           "report --template " + page.string() + " --summary " + summary.string(),
+           "fit --data " + data.string() + " --edges xOff1-\\>onTop1 --out " + path("f.bif").string(), "fit --help"}) {
+    const auto written = run(command);
+    ASSERT_EQ(written.code, 0) << command << ": " << written.err;
+    ASSERT_FALSE(written.out.empty()) << command;
+    const auto lost = run_to(command, "/dev/full");
+    EXPECT_EQ(lost.code, 1) << command;
+    EXPECT_THAT(lost.err, HasSubstr("cannot write")) << command;
+  }
+  // Written to standard output, a model is all that is there: what was done goes to stderr.
+  const auto converted = run("convert " + sachs + " /dev/stdout --to json");
+  ASSERT_EQ(converted.code, 0) << converted.err;
+  EXPECT_EQ(parse_network(converted.out, network_format::json, "stdout"), read_network(sachs));
+  EXPECT_THAT(converted.err, HasSubstr("converted " + sachs + " (bif) -> /dev/stdout (json)"));
+}
+
+// A message that quotes a bad file's bytes shows control characters escaped: a terminal never
+// obeys an escape sequence from a data file (issue 28).
+TEST_F(cli_test, bytes_a_message_quotes_from_a_file_are_escaped) {
+  const auto model = file("m.bif",
+                          "network n { }\nvariable a {\n  type discrete [ 2 ] { x, y };\n}\n"
+                          "probability ( a ) {\n  table 0.5, 0.5;\n}\n");
+  const auto data = file("d.csv", "a\nx\n\x1b[2Jgone\xe9\n");
+  const auto r = run("fit --model " + model.string() + " --data " + data.string() + " --out " + path("f.bif").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("'\\x1b[2Jgone\\xe9' is not a state of 'a'"));
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos);
 }
 
 }  // namespace

@@ -11,7 +11,9 @@
 #include <utility>
 #include <vector>
 
+#include "pgm/inference/sampling.hpp"
 #include "pgm/io/network_file.hpp"
+#include "pgm/learn/fit.hpp"
 #include "support/program_test.hpp"
 #include "support/random_csv.hpp"
 
@@ -123,6 +125,11 @@ TEST_F(data_input_test, missing_values_are_an_error_by_default_naming_line_and_c
   const auto out = path("f.json");
   expect_failure("fit --data " + data + " --edges \"b->a,a->c\" --out " + out.string(),
                  "m.csv:3:3: column 'b': 'NA' is a missing value", out);
+  // The program says how to read such data: the policies and the texts read as missing.
+  EXPECT_THAT(run("fit --data " + data + " --edges \"b->a,a->c\" --out " + out.string()).err,
+              HasSubstr("pgm: hint: --missing drop leaves out the rows that have a missing value, --missing available "
+                        "counts each table over the rows where its variables are present; --na names the texts read "
+                        "as missing (default NA,,?: NA, the empty field and ?)"));
   expect_failure("learn-structure --data " + data + " --out " + out.string(),
                  "m.csv:3:3: column 'b': 'NA' is a missing value", out);
   expect_failure("discretize --in " + data + " --out " + path("o.csv").string(), "m.csv:3:3: column 'b'",
@@ -139,7 +146,10 @@ TEST_F(data_input_test, missing_values_dropped_with_a_note) {
   const auto data = file("m.csv", incomplete).string();
   const auto r = run("fit --data " + data + " --edges \"b->a,a->c\" --missing drop --out " + path("f.json").string());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_THAT(r.err, HasSubstr("pgm: note: dropped 3 of 6 rows with a missing value (--missing drop)"));
+  EXPECT_THAT(
+      r.err,
+      HasSubstr("pgm: note: dropped 3 of 6 rows with a missing value (--missing drop; --na names the texts read as "
+                "missing)"));
   EXPECT_THAT(r.out, HasSubstr("from 3 rows"));
   // Rows 1, 3 and 6: a | b is x | 0, y | 1, x | 1.
   const auto net = read_network(path("f.json"));
@@ -187,6 +197,63 @@ TEST_F(data_input_test, discretize_keeps_missing_values_missing_as_the_first_na_
                          path("f.json").string());
   ASSERT_EQ(again.code, 0) << again.err;
   EXPECT_THAT(again.err, HasSubstr("'v' is counted over the 6 of 7 rows"));
+}
+
+// pathfinder declares the state NA in 35 variables: fitting it to its own samples reads NA as
+// that state, with a note, rather than refusing the first NA as a missing value (issue 28).
+TEST_F(data_input_test, a_state_the_model_spells_like_a_missing_value_is_that_state) {
+  const auto model = std::string(PGM_NETWORKS_DIR) + "/pathfinder.bif";
+  const auto network = read_network(model);
+  const auto sampled = sample(network, 300, 7);
+  std::string csv;
+  for (const auto& name : sampled.names()) csv += (csv.empty() ? "" : ",") + name;
+  csv += '\n';
+  std::size_t na = 0;
+  for (std::size_t row = 0; row < sampled.rows(); ++row) {
+    for (std::size_t c = 0; c < sampled.names().size(); ++c) {
+      const auto& column = sampled.discrete(sampled.names()[c]);
+      const auto& state = column.var().states()[column.code(row)];
+      na += state == "NA";
+      csv += (c ? "," : "") + state;
+    }
+    csv += '\n';
+  }
+  ASSERT_GT(na, 0U);
+  const auto data = file("sample.csv", csv);
+  for (const std::string missing : {"error", "drop"}) {
+    const auto out = path("fitted-" + missing + ".bif");
+    const auto r =
+        run("fit --model " + model + " --data " + data.string() + " --missing " + missing + " --out " + out.string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("from 300 rows"));
+    EXPECT_THAT(r.err, HasSubstr("pgm: note: 'NA' is a state of the model's variables F2, F78, F3, F4, F5, … (35 in "
+                                 "all): read as that state in their columns, not as a missing value (--na names the "
+                                 "texts read as missing)"));
+    EXPECT_THAT(r.err, ::testing::Not(HasSubstr("dropped")));
+    // The counts are those of the sample: the same tables as a fit from the data set in memory.
+    const auto fitted = read_network(out);
+    const auto expected = fit(network.structure(), sampled, {});
+    EXPECT_EQ(fitted.table("Fault").values().size(), expected.table("Fault").values().size());
+    for (const auto& table : expected.tables()) {
+      const auto& ours = fitted.table(table.child().name());
+      for (std::size_t i = 0; i < table.values().size(); ++i) {
+        ASSERT_NEAR(ours.values()[i], table.values()[i], 1e-12) << table.child().name();
+      }
+    }
+  }
+  // In a column whose variable has no such state, NA is still a missing value.
+  const auto small =
+      file("small.bif",
+           "network n { }\nvariable a {\n  type discrete [ 2 ] { NA, x };\n}\nvariable b {\n  type "
+           "discrete [ 2 ] { x, y };\n}\nprobability ( a ) {\n  table 0.5, 0.5;\n}\nprobability ( b | a ) {\n"
+           "  ( NA ) 0.5, 0.5;\n  ( x ) 0.5, 0.5;\n}\n");
+  const auto gap = file("gap.csv", "a,b\nNA,x\nx,NA\n");
+  const auto r = run("fit --model " + small.string() + " --data " + gap.string() + " --out " + path("g.bif").string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("pgm: note: 'NA' is a state of the model's variable a: read as that state in its "
+                               "column, not as a missing value"));
+  EXPECT_THAT(r.err, HasSubstr("gap.csv:3:3: column 'b': 'NA' is a missing value"));
+  EXPECT_FALSE(std::filesystem::exists(path("g.bif")));
 }
 
 }  // namespace

@@ -72,5 +72,18 @@ probability ( a ) { table 0.2, 0.8; }
   expect_failure(simulate + "0x10", "got '0x10' (hexadecimal is not accepted", path("s.csv"));
 }
 
+// A model path that is a device without end is refused at pgm's limit of a file read whole,
+// not read until memory runs out (issue 28).
+TEST_F(limits_cli_test, a_model_that_never_ends_is_refused_at_the_file_limit) {
+  std::filesystem::create_symlink("/dev/zero", path("zero.bif"));
+  std::filesystem::create_symlink("/dev/zero", path("zero.json"));
+  for (const auto& model : {path("zero.bif"), path("zero.json")}) {
+    expect_failure("show " + model.string(),
+                   "cannot read '" + model.string() +
+                       "': it is larger than 256 MiB, pgm's limit of a file it reads whole (models, tasks, scenarios; "
+                       "docs/limits.md)");
+  }
+}
+
 }  // namespace
 }  // namespace pgm

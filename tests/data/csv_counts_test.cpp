@@ -27,12 +27,12 @@ using ::testing::ThrowsMessage;
 
 using csv_input_test = pgm::testing::folder_test;
 
-const std::vector<csv_family> random_families{
+const std::vector<family_names> random_families{
     {"c4", {"c0", "c1"}}, {"c3", {"c2"}}, {"c1", {}}, {"c2", {"c4", "c0", "c3"}}, {"c0", {"c3", "c4"}}};
 
-csv_count_request request_for(const std::vector<csv_family>& families, unsigned threads = 0, std::size_t chunk = 0,
-                              std::size_t window = 0) {
-  csv_count_request request;
+family_count_request request_for(const std::vector<family_names>& families, unsigned threads = 0, std::size_t chunk = 0,
+                                 std::size_t window = 0) {
+  family_count_request request;
   for (const auto& family : families) {
     for (const auto* name : {&family.child}) request.columns.push_back(*name);
     for (const auto& parent : family.parents) request.columns.push_back(parent);
@@ -45,7 +45,7 @@ csv_count_request request_for(const std::vector<csv_family>& families, unsigned 
 }
 
 /// The reference: count_family over the data set read_csv gives.
-void expect_counts_of(const csv_counts& counts, const dataset& data, const std::vector<csv_family>& families,
+void expect_counts_of(const family_counts& counts, const dataset& data, const std::vector<family_names>& families,
                       const std::string& context) {
   ASSERT_EQ(counts.rows, data.rows()) << context;
   ASSERT_EQ(counts.families.size(), families.size()) << context;
@@ -143,7 +143,7 @@ TEST(csv_counts_test, known_states_and_binned_columns) {
   for (double v : raw.continuous("c1").values()) outside += v < -5 || v > 10;
   ASSERT_GT(outside, 0u);
 
-  const std::vector<csv_family> families{{"c0", {"c1", "c4"}}, {"c1", {"c0"}}};
+  const std::vector<family_names> families{{"c0", {"c1", "c4"}}, {"c1", {"c0"}}};
   for (std::size_t chunk : {3u, 0u}) {
     auto request = request_for(families, 3, chunk, 100);
     request.variables.emplace("c0", c0);
@@ -292,7 +292,7 @@ TEST(csv_counts_test, counts_over_processes_equal_one_process) {
     const auto csv = testing::make_random_csv(21, {.rows = 400, .quotes = quotes});
     const auto data = parse_csv(csv.text, "r.csv", discrete_options());
     for (std::size_t ranks = 1; ranks <= 6; ++ranks) {
-      std::vector<csv_counts> results(ranks);
+      std::vector<family_counts> results(ranks);
       testing::run_group(ranks, [&](detail::process_group& group) {
         csv_reader input(csv.text, "r.csv");
         results[group.rank()] = count_csv(input, request_for(random_families, 1, 64), group);
@@ -310,7 +310,7 @@ TEST(csv_counts_test, counts_over_processes_equal_one_process) {
 TEST(csv_counts_test, a_bad_record_over_processes_is_reported_by_every_process_with_its_line) {
   std::string text = "a,b\n";
   for (int row = 0; row < 200; ++row) text += row == 150 ? "1\n" : std::to_string(row % 3) + ",x\n";
-  csv_count_request request;
+  family_count_request request;
   request.columns = {"a", "b"};
   request.families = {{"a", {"b"}}};
   const auto outcomes = testing::run_group(4, [&](detail::process_group& group) {
@@ -322,11 +322,11 @@ TEST(csv_counts_test, a_bad_record_over_processes_is_reported_by_every_process_w
 
 // Counts `text` over 1 to 8 processes and expects process 0's counts to be those of one
 // process, the others' to be empty and no process to fail.
-void expect_as_one_process(const std::string& text, const csv_count_request& request, const std::string& what) {
+void expect_as_one_process(const std::string& text, const family_count_request& request, const std::string& what) {
   csv_reader input(text, "p.csv");
   const auto alone = count_csv(input, request);
   for (std::size_t ranks = 1; ranks <= 8; ++ranks) {
-    std::vector<csv_counts> results(ranks);
+    std::vector<family_counts> results(ranks);
     const auto outcomes = testing::run_group(ranks, [&](detail::process_group& group) {
       csv_reader theirs(text, "p.csv");
       results[group.rank()] = count_csv(theirs, request, group);
@@ -354,7 +354,7 @@ TEST(csv_counts_test, labels_met_first_on_different_processes_keep_the_order_of_
     text += std::string(row < 220 ? "0" : row % 2 ? "t" : "s") + ",";
     text += std::to_string(static_cast<int>(row % 17) - 3) + "," + (row % 5 ? "lo" : "hi") + "\n";
   }
-  csv_count_request request;
+  family_count_request request;
   request.columns = {"a", "b", "late", "n", "k"};
   request.families = {{"a", {"b", "late"}}, {"late", {"a"}}, {"n", {"a", "k"}}, {"b", {}}, {"k", {"late"}}};
   request.intervals.emplace("n", variable::intervals("n", {0, 4, 10}));
@@ -373,7 +373,7 @@ TEST(csv_counts_test, rows_dropped_for_missing_values_are_summed_over_processes)
     text += (row % 23 == 7 ? "" : row > 200 && row % 2 ? "v" : "u") + std::string(",");
     text += (row % 41 == 40 ? "?" : std::to_string(row % 3)) + "\n";
   }
-  csv_count_request request;
+  family_count_request request;
   request.columns = {"a", "b", "c"};
   request.families = {{"a", {"b"}}, {"c", {"a", "b"}}, {"b", {}}};
   request.threads = 1;
@@ -396,7 +396,7 @@ TEST(csv_counts_test, a_family_too_large_on_one_process_or_only_over_all_is_refu
     const auto label = std::to_string(row < 700 ? 0 : row - 699);
     text += label + "," + label + "," + label + "\n";
   }
-  csv_count_request request;
+  family_count_request request;
   request.columns = {"u", "v", "w"};
   request.families = {{"v", {}}, {"u", {"v", "w"}}};
   request.threads = 1;

@@ -26,8 +26,8 @@ using ::testing::ThrowsMessage;
 
 using csv_limits_test = pgm::testing::folder_test;
 
-csv_counts count_all(csv_reader& input) {
-  csv_count_request request;
+family_counts count_all(csv_reader& input) {
+  family_count_request request;
   request.columns = {input.header().front()};
   request.families = {{input.header().front(), {}}};
   return count_csv(input, request);

@@ -6,6 +6,7 @@
 #include <random>
 #include <sstream>
 
+#include "pgm/data/csv_counts.hpp"
 #include "support/random_csv.hpp"
 
 namespace pgm {
@@ -36,6 +37,44 @@ TEST(csv_test, discrete_numeric_labels_sort_numerically) {
   EXPECT_EQ(n.var().states(), (std::vector<std::string>{"-1", "0.5", "9", "10"}));  // "9.0" is 9
   EXPECT_EQ(n.code(0), 3u);
   EXPECT_EQ(n.code(3), 2u);
+}
+
+// Issue 28: two integers one double cannot tell apart are two states, read alike by the data
+// set and the streaming counter; "1", "1.0" and "1e0" (and "0" and "-0") are one.
+TEST(csv_test, labels_are_one_state_only_when_exactly_the_same_number) {
+  csv_options options;
+  options.default_kind = column_kind::discrete;
+  const std::string text = "n,w\n9007199254740992,a\n9007199254740993,b\n1,a\n1.0,b\n1e0,a\n-0,b\n0,a\n";
+  const auto data = parse(text, options);
+  const auto& n = data.discrete("n");
+  EXPECT_EQ(n.var().states(), (std::vector<std::string>{"-0", "1", "9007199254740992", "9007199254740993"}));
+  EXPECT_THAT(std::vector<unsigned>({n.code(0), n.code(1), n.code(2), n.code(3), n.code(4), n.code(5), n.code(6)}),
+              ElementsAre(2, 3, 1, 1, 1, 0, 0));
+  family_count_request request;
+  request.columns = {"n", "w"};
+  request.families = {{"n", {"w"}}};
+  csv_reader input(text, "runs.csv");
+  EXPECT_EQ(count_csv(input, request).variables[0].states(), n.var().states());
+}
+
+// A label is a model's state when it is the state's text or exactly the same number.
+TEST(csv_test, a_known_state_is_its_text_or_exactly_its_number) {
+  csv_options options;
+  options.variables.emplace("n", variable("n", {"0", "1", "2.5"}));
+  const auto data = parse("n\n1.0\n2.50\n-0\n1\n", options);
+  const auto& n = data.discrete("n");
+  EXPECT_THAT(std::vector<unsigned>({n.code(0), n.code(1), n.code(2), n.code(3)}), ElementsAre(1, 2, 0, 1));
+  family_count_request request;
+  request.columns = {"n"};
+  request.families = {{"n", {}}};
+  request.variables.emplace("n", options.variables.at("n"));
+  const std::string text = "n\n1.0\n2.50\n-0\n1\n";
+  csv_reader input(text, "runs.csv");
+  const auto counts = count_csv(input, request);
+  EXPECT_EQ(counts.families[0](state_index(1), config_index(0)), 2U);
+  EXPECT_THAT([&] { parse("n\n1.0\n2.51\n", options); },
+              ThrowsMessage<parse_error>(
+                  HasSubstr("runs.csv:3:1: column 'n': '2.51' is not a state of 'n' (states: 0, 1, 2.5)")));
 }
 
 TEST(csv_test, quoting_crlf_bom_and_blank_lines) {

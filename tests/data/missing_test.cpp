@@ -37,13 +37,13 @@ csv_options with_policy(missing_policy policy, column_kind kind = column_kind::d
 // a, b, c over six rows; row 2 lacks b (NA), row 4 lacks c (empty), row 5 lacks a (?).
 constexpr std::string_view small = "a,b,c\nx,0,1\nx,NA,0\ny,1,1\ny,0,\n?,1,0\nx,1,1\n";
 
-csv_counts count_text(std::string_view text, const csv_count_request& request) {
+family_counts count_text(std::string_view text, const family_count_request& request) {
   csv_reader input(text, "m.csv");
   return count_csv(input, request);
 }
 
-csv_count_request family_request(missing_policy policy, std::vector<csv_family> families) {
-  csv_count_request request;
+family_count_request family_request(missing_policy policy, std::vector<family_names> families) {
+  family_count_request request;
   request.columns = {"a", "b", "c"};
   request.families = std::move(families);
   request.missing.policy = policy;
@@ -83,6 +83,33 @@ TEST(missing_test, by_default_the_first_missing_value_is_an_error_naming_its_pla
   only_a.columns = {"a", "c"};
   EXPECT_THAT([&] { static_cast<void>(parse_csv(small, "m.csv", only_a)); },
               ThrowsMessage<parse_error>(HasSubstr("m.csv:5:5: column 'c': the value is empty")));
+}
+
+// Issue 28: a model that declares a state spelled like a missing token (pathfinder's "NA") has
+// it read as that state in the variable's column, by every reader and policy; elsewhere it is
+// still missing.
+TEST(missing_test, a_state_the_model_spells_like_a_missing_token_is_that_state) {
+  const std::string text = "a,b\nNA,x\nx,NA\nNA,y\n";
+  const variable a("a", {"NA", "x"});
+  for (const auto policy : {missing_policy::drop, missing_policy::available}) {
+    auto options = with_policy(policy);
+    options.variables.emplace("a", a);
+    const auto [data, dropped] = parse_csv_data(text, "m.csv", options);
+    EXPECT_EQ(dropped, policy == missing_policy::drop ? 1U : 0U);
+    EXPECT_EQ(data.discrete("a").var(), a);
+    EXPECT_EQ(data.discrete("a").missing(), 0U);
+    EXPECT_EQ(data.discrete("a").code(0), 0U);  // NA, the state
+    auto request = family_request(policy, {{"a", {"b"}}});
+    request.columns = {"a", "b"};
+    request.variables.emplace("a", a);
+    const auto counts = count_text(text, request);
+    EXPECT_EQ(counts.dropped, policy == missing_policy::drop ? 1U : 0U);
+    EXPECT_EQ(counts.families[0].total(), 2U);  // rows 1 and 3; row 2 lacks b
+  }
+  auto options = with_policy(missing_policy::error);
+  options.variables.emplace("a", a);
+  EXPECT_THAT([&] { static_cast<void>(parse_csv_data(text, "m.csv", options)); },
+              ThrowsMessage<missing_value_error>(HasSubstr("m.csv:3:3: column 'b': 'NA' is a missing value")));
 }
 
 TEST(missing_test, the_tokens_can_be_chosen) {
@@ -176,7 +203,7 @@ TEST(missing_test, available_counts_each_family_over_its_present_rows) {
   const auto bb = count_family(data, "b", {});
   EXPECT_THAT(std::vector<std::uint64_t>(bb.counts().begin(), bb.counts().end()), ElementsAre(2, 3));
   // The streaming counter gives the same tables, for any chunking and threads.
-  const std::vector<csv_family> families{{"a", {"b"}}, {"c", {"a"}}, {"b", {}}};
+  const std::vector<family_names> families{{"a", {"b"}}, {"c", {"a"}}, {"b", {}}};
   for (unsigned threads : {1u, 2u}) {
     for (std::size_t chunk : {std::size_t{1}, std::size_t{7}, std::size_t{0}}) {
       auto request = family_request(missing_policy::available, families);
@@ -210,10 +237,10 @@ std::string random_missing_csv(unsigned seed, std::size_t rows, double rate) {
 
 TEST(missing_test, streamed_counts_equal_the_data_set_counts_and_add_up_over_byte_ranges) {
   const auto text = random_missing_csv(7, 3000, 0.05);
-  const std::vector<csv_family> families{{"p", {"q", "r"}}, {"s", {}}, {"r", {"s", "p"}}};
+  const std::vector<family_names> families{{"p", {"q", "r"}}, {"s", {}}, {"r", {"s", "p"}}};
   for (auto policy : {missing_policy::drop, missing_policy::available}) {
     const auto read = parse_csv_data(text, "m.csv", with_policy(policy));
-    csv_count_request request;
+    family_count_request request;
     request.columns = {"p", "q", "r", "s"};
     request.families = families;
     request.missing.policy = policy;

@@ -24,6 +24,44 @@ TEST(state_order_test, numbers_by_value_and_one_state_per_number) {
   EXPECT_THAT(order.state_of, ElementsAre(3, 2, 1, 1, 0));
 }
 
+// Issue 28: labels are one state only when they are the same text or exactly the same number;
+// numbers that one double cannot tell apart stay two states.
+TEST(state_order_test, numbers_are_compared_exactly_not_as_doubles) {
+  const std::vector<std::string> labels{"9007199254740993",
+                                        "9007199254740992",
+                                        "0.10000000000000001",
+                                        "0.1",
+                                        "-0",
+                                        "0",
+                                        "1e2",
+                                        "100.00",
+                                        "-1.5",
+                                        "-1",
+                                        "1e-400",
+                                        "+7"};
+  const auto order = order_states(labels);
+  ASSERT_TRUE(order.numeric);
+  EXPECT_THAT(order.states, ElementsAre("-1.5", "-1", "-0", "1e-400", "0.1", "0.10000000000000001", "+7", "1e2",
+                                        "9007199254740992", "9007199254740993"));
+  EXPECT_THAT(order.state_of, ElementsAre(9, 8, 5, 4, 2, 2, 7, 7, 0, 1, 3, 6));
+}
+
+TEST(state_order_test, exact_decimals_by_hand) {
+  const auto value = [](const char* text) { return *detail::exact_decimal_of(text); };
+  EXPECT_EQ(value("100"), (detail::exact_decimal{false, "1", 3}));
+  EXPECT_EQ(value("1e2"), value("100.0"));
+  EXPECT_EQ(value("0.00150"), (detail::exact_decimal{false, "15", -2}));
+  EXPECT_EQ(value(".5"), value("5e-1"));
+  EXPECT_EQ(value("5."), value("5"));
+  EXPECT_EQ(value("-0.0e7"), detail::exact_decimal{});
+  EXPECT_EQ(detail::compare_exact(value("-2"), value("-10")), 1);
+  EXPECT_EQ(detail::compare_exact(value("12"), value("123")), -1);
+  EXPECT_EQ(detail::compare_exact(value("0.99"), value("1")), -1);
+  for (const char* text : {"", "-", "e5", "1e", "1e+", "0x10", "nan", "1,5", "1.2.3"}) {
+    EXPECT_FALSE(detail::exact_decimal_of(text)) << text;
+  }
+}
+
 TEST(state_order_test, other_labels_alphabetically_by_bytes) {
   const auto order = order_states(std::vector<std::string>{"b", "Red", "10", "B"});
   EXPECT_FALSE(order.numeric);

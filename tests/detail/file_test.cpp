@@ -66,4 +66,19 @@ TEST_F(file_test, a_missing_folder_is_named) {
               ::testing::ThrowsMessage<pgm::io_error>(::testing::HasSubstr("does not exist")));
 }
 
+// A file read whole is bounded (pgm::max_file_bytes): a regular file by its size before it is
+// read, a device that never ends (/dev/zero) once it has given more (issue 28).
+TEST_F(file_test, reading_a_file_whole_stops_at_the_limit) {
+  write_text(folder_ / "m.bif", std::string(2000, 'x'));
+  EXPECT_EQ(pgm::detail::read_file(folder_ / "m.bif", 2000).size(), 2000U);
+  EXPECT_THAT([&] { static_cast<void>(pgm::detail::read_file(folder_ / "m.bif", 1999)); },
+              ::testing::ThrowsMessage<pgm::io_error>(
+                  ::testing::HasSubstr("m.bif': it is larger than 1999 bytes, pgm's limit of a file it reads whole")));
+  EXPECT_THAT([&] { static_cast<void>(pgm::detail::read_file("/dev/zero", std::uint64_t{1} << 20)); },
+              ::testing::ThrowsMessage<pgm::io_error>(::testing::HasSubstr(
+                  "cannot read '/dev/zero': it is larger than 1 MiB, pgm's limit of a file it reads whole "
+                  "(models, tasks, scenarios; docs/limits.md)")));
+  EXPECT_EQ(pgm::max_file_bytes, std::uint64_t{256} << 20);
+}
+
 }  // namespace

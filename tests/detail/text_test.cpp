@@ -56,5 +56,35 @@ TEST(numbers_test, quoted_number_puts_the_reason_in_parentheses) {
   EXPECT_EQ(quoted_number("1,5"), "'1,5' (a comma is no decimal mark: write 1.5)");
 }
 
+// What a message quotes from a bad file reaches the terminal escaped (issue 28).
+TEST(printable_test, control_bytes_and_broken_utf8_are_escaped_and_the_rest_kept) {
+  EXPECT_EQ(printable("plain ASCII, × and ≥ and ü"), "plain ASCII, × and ≥ and ü");
+  EXPECT_EQ(printable("a\tb\nc\rd"), "a\\tb\\nc\\rd");
+  EXPECT_EQ(printable("\x1b[31mred\x1b[0m"), "\\x1b[31mred\\x1b[0m");
+  EXPECT_EQ(printable(std::string("nul\0here", 8)), "nul\\x00here");
+  EXPECT_EQ(printable("del\x7f"), "del\\x7f");
+  EXPECT_EQ(printable("c1 \xc2\x9b"), "c1 \\xc2\\x9b");         // CSI as a C1 control
+  EXPECT_EQ(printable("latin1 caf\xe9!"), "latin1 caf\\xe9!");  // not UTF-8
+  EXPECT_EQ(printable("cut \xe2\x82"), "cut \\xe2\\x82");       // a sequence cut short
+  EXPECT_EQ(printable("overlong \xc0\xaf"), "overlong \\xc0\\xaf");
+  EXPECT_EQ(printable("surrogate \xed\xa0\x80"), "surrogate \\xed\\xa0\\x80");
+  EXPECT_EQ(printable("bidi \xe2\x80\xae"
+                      "evil"),
+            "bidi \\xe2\\x80\\xaeevil");  // U+202E
+  EXPECT_EQ(printable("emoji \xf0\x9f\x99\x82"), "emoji \xf0\x9f\x99\x82");
+}
+
+TEST(closest_name_test, a_name_within_two_edits_is_suggested) {
+  const std::vector<std::string> keys{"repetitions", "subsets", "epsilon", "bins", "map"};
+  EXPECT_EQ(closest_name("repetitons", keys), "repetitions");
+  EXPECT_EQ(closest_name("subests", keys), "subsets");  // a swap is one edit
+  EXPECT_EQ(closest_name("bin", keys), "bins");
+  EXPECT_EQ(closest_name("mpa", keys), "map");
+  EXPECT_EQ(closest_name("colour", keys), std::nullopt);
+  EXPECT_EQ(closest_name("x", keys), std::nullopt);
+  EXPECT_EQ(edit_distance("kitten", "sitting"), 3U);
+  EXPECT_EQ(edit_distance("", "abc"), 3U);
+}
+
 }  // namespace
 }  // namespace pgm::detail

@@ -122,6 +122,19 @@ TEST(scenario_test, errors_name_the_file_and_the_key) {
   bad.replace(bad.find("\"weights\": [0, 5]"), 17, "\"weights\": [0, -5]");
   EXPECT_THAT([&] { static_cast<void>(parse_scenario(bad, "s.json")); },
               ThrowsMessage<data_error>(HasSubstr("/weights: weights must be finite and ≥ 0")));
+  // A misspelt optional key would change nothing without a word: it is an error (issue 28).
+  std::string typo = tiny_scenario;
+  typo.replace(typo.find("\"weights\""), 9, "\"repetitons\": 2, \"weights\"");
+  EXPECT_THAT([&] { static_cast<void>(parse_scenario(typo, "s.json")); },
+              ThrowsMessage<data_error>(HasSubstr(
+                  "s.json: /repetitons: unknown key 'repetitons'; did you mean 'repetitions'? (the keys here: format, "
+                  "version, name, title, order, prior, target, map, strategies, weights, bins, subsets, repetitions, "
+                  "epsilon)")));
+  std::string nested = tiny_scenario;
+  nested.replace(nested.find("\"train_rows\""), 12, "\"train_row\"");
+  EXPECT_THAT([&] { static_cast<void>(parse_scenario(nested, "s.json")); },
+              ThrowsMessage<data_error>(HasSubstr("/target/tasks/0/train_row: unknown key 'train_row'; did you mean "
+                                                  "'train_rows'?")));
 }
 
 TEST(scenario_test, the_shipped_scenarios_load) {

@@ -114,6 +114,75 @@ TEST(xmlbif_test, errors_are_located) {
         "a table for 'b', which is not declared");
 }
 
+// An XMLBIF file with a DTD, as JavaBayes and Weka write them, whose entities stand for a
+// state. ElementTree, which pgmpy reads XMLBIF with, expands internal entities (`&two;` is "2")
+// and refuses undeclared, external and recursive ones; pgm reads the same network or refuses.
+std::string xmlbif_with_dtd(const std::string& declarations, const std::string& state) {
+  return "<?xml version=\"1.0\"?>\n<!DOCTYPE BIF [\n  <!ELEMENT BIF ( NETWORK )*>\n  <!ATTLIST BIF VERSION CDATA "
+         "#REQUIRED>\n  <!-- <!ENTITY two \"commented out\"> -->\n" +
+         declarations +
+         "]>\n<BIF VERSION=\"0.3\"><NETWORK>\n<VARIABLE TYPE=\"nature\"><NAME>a</NAME><OUTCOME>1</OUTCOME>"
+         "<OUTCOME>" +
+         state +
+         "</OUTCOME></VARIABLE>\n<DEFINITION><FOR>a</FOR><TABLE>0.25 0.75</TABLE></DEFINITION>\n"
+         "</NETWORK></BIF>\n";
+}
+
+TEST(xmlbif_test, internal_entities_expand_as_pgmpys_parser_expands_them) {
+  const auto state_of = [](const std::string& declarations, const std::string& state) {
+    return parse_xmlbif(xmlbif_with_dtd(declarations, state), "m.xml").at("a").states()[1];
+  };
+  EXPECT_EQ(state_of("  <!ENTITY two \"2\">\n", "&two;"), "2");
+  EXPECT_EQ(state_of("  <!ENTITY two '2'>\n  <!ENTITY two \"second\">\n", "&two;"), "2");  // the first binds
+  EXPECT_EQ(state_of("  <!ENTITY t \"&#x74;&w;\">\n  <!ENTITY w \"wo\">\n", "&t;"), "two");
+  EXPECT_EQ(state_of("  <!ENTITY a \"&#38;#65;\">\n", "x&a;&lt;&#x3e;&amp;"), "xA<>&");
+  EXPECT_EQ(state_of("", "a<![CDATA[&b]]>c"), "a&bc");  // CDATA stays as written
+  EXPECT_EQ(state_of("", "caf&#xE9;"), "caf\xC3\xA9");
+  // The same file without entities reads as before.
+  EXPECT_EQ(state_of("  <!ENTITY unused \"x\">\n", "2"), "2");
+}
+
+TEST(xmlbif_test, entities_pgmpy_refuses_are_refused_and_a_billion_laughs_is_bounded) {
+  const auto fails = [](const std::string& declarations, const std::string& state, const std::string& message) {
+    EXPECT_THAT([&] { static_cast<void>(parse_xmlbif(xmlbif_with_dtd(declarations, state), "m.xml")); },
+                ThrowsMessage<parse_error>(HasSubstr(message)))
+        << declarations << state;
+  };
+  fails("", "&two;", "m.xml:8:68: an undefined entity '&two;'");
+  fails("  <!ENTITY x SYSTEM \"file:///etc/passwd\">\n", "&x;",
+        "'&x;' is an external entity: pgm reads no other file an XMLBIF file names");
+  fails("  <!ENTITY a \"&b;\">\n  <!ENTITY b \"&a;\">\n", "&a;", "the entity 'a' refers to itself");
+  fails("  <!ENTITY a \"<i>z</i>\">\n", "&a;", "the entity 'a' holds markup ('<')");
+  fails("  <!ENTITY a \"&#60;i&#62;\">\n", "&a;", "the entity 'a' holds markup ('<')");
+  fails("  <!ENTITY % p \"<!ENTITY q 'Q'>\">\n  %p;\n", "&q;", "m.xml:6:12: a parameter entity (<!ENTITY % …>)");
+  fails("", "a & b", "an '&' that starts no entity or character reference (write &amp; for '&')");
+  fails("", "&#0;", "a reference to a character XML does not allow");
+  fails("", "&#xD800;", "a reference to a character XML does not allow");
+  // pugixml passes a '<' in an attribute's value through; ElementTree refuses the file.
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(parse_xmlbif(R"(<BIF><NETWORK>
+<VARIABLE TYPE="a<&amp;"><NAME>a</NAME><OUTCOME>x</OUTCOME></VARIABLE></NETWORK></BIF>)",
+                                       "m.xml"));
+      },
+      ThrowsMessage<parse_error>(HasSubstr("m.xml:2:1: a '<' in an attribute's value (write &lt; for '<')")));
+  // `levels` entities, each ten references to the one below, over `text`.
+  const auto nested = [](const std::string& text, int levels) {
+    std::string declarations = "  <!ENTITY l0 \"" + text + "\">\n";
+    for (int level = 1; level <= levels; ++level) {
+      std::string references;
+      for (int i = 0; i < 10; ++i) references += "&l" + std::to_string(level - 1) + ";";
+      declarations += "  <!ENTITY l" + std::to_string(level) + " \"" + references + "\">\n";
+    }
+    return declarations;
+  };
+  // Ten levels: 10^10 laughs asked for, refused after 1 MiB.
+  fails(nested("laugh", 10), "&l10;",
+        "the file's entities expand to more than 1 MiB or nest deeper than 64 levels, pgm's limit");
+  // Entities of nothing amplify work, not text: bounded the same way.
+  fails(nested("", 12), "&l12;", "pgm's limit of XML entities");
+}
+
 // A file in the style of bnlearn's write.net: attributes first, data nested per parent, a
 // comment, and a state with a quote escaped as Hugin does.
 constexpr const char* bnlearn_net = R"(net {

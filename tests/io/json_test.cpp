@@ -34,6 +34,39 @@ TEST(json_model_test, structure_only_with_tags_and_edges) {
 TEST(json_model_test, syntax_errors_have_line_and_column) {
   EXPECT_THAT([] { static_cast<void>(parse_model_json("{\n  \"format\": \"pgm-model\",\n  oops\n}", "m.json")); },
               ThrowsMessage<parse_error>(HasSubstr("m.json:3:3: invalid JSON")));
+  // The parser's reason is kept with what it read (issue 28: only "'0,<U+000A> N'" was left).
+  EXPECT_THAT([] { static_cast<void>(parse_model_json("{\"version\": 0,\n N", "m.json")); },
+              ThrowsMessage<parse_error>(HasSubstr("m.json:2:2: invalid JSON: syntax error while parsing object key - "
+                                                   "invalid literal; last read: '0,<U+000A> N'; expected string "
+                                                   "literal")));
+  EXPECT_THAT([] { static_cast<void>(parse_model_json("[1, ]", "m.json")); },
+              ThrowsMessage<parse_error>(HasSubstr("m.json:1:5: invalid JSON: syntax error while parsing value - "
+                                                   "unexpected ']'; expected '[', '{', or a literal")));
+}
+
+TEST(json_model_test, unknown_keys_are_errors_naming_the_nearest_known_one) {
+  const auto model = [](const std::string& variable, const std::string& top) {
+    return R"({"format":"pgm-model","version":1,"variables":[{"name":"a","states":["0","1"])" + variable + "}]" + top +
+           "}";
+  };
+  EXPECT_NO_THROW(
+      static_cast<void>(parse_model_json(model("", R"(,"metadata":{"success":"a=1","mine":2})"), "m.json")));
+  EXPECT_THAT(
+      [&] { static_cast<void>(parse_model_json(model("", R"(,"egdes":[])"), "m.json")); },
+      ThrowsMessage<data_error>(HasSubstr("m.json: /egdes: unknown key 'egdes'; did you mean 'edges'? (the keys "
+                                          "here: format, version, variables, edges, tables, metadata, learned)")));
+  EXPECT_THAT([&] { static_cast<void>(parse_model_json(model(R"(,"tags":{"units":"cm"})", ""), "m.json")); },
+              ThrowsMessage<data_error>(HasSubstr("m.json: /variables/0/tags/units: unknown key 'units'; did you "
+                                                  "mean 'unit'?")));
+  EXPECT_THAT([&] { static_cast<void>(parse_model_json(model(R"(,"colour":"red")", ""), "m.json")); },
+              ThrowsMessage<data_error>(HasSubstr("/variables/0/colour: unknown key 'colour' (the keys here: name, "
+                                                  "states, edges, tags)")));
+  EXPECT_THAT(
+      [] {
+        static_cast<void>(parse_discretization_json(
+            R"({"format":"pgm-discretization","version":1,"variables":[],"bins":3})", "d.json"));
+      },
+      ThrowsMessage<data_error>(HasSubstr("d.json: /bins: unknown key 'bins'")));
 }
 
 TEST(json_model_test, content_errors_name_the_path) {

@@ -8,10 +8,14 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "pgm/eval/scenario.hpp"
 #include "pgm/io/bif.hpp"
 #include "pgm/io/json_model.hpp"
+#include "pgm/io/net.hpp"
+#include "pgm/io/xmlbif.hpp"
 #include "pgm/sim/task_file.hpp"
 
 namespace pgm {
@@ -39,6 +43,59 @@ TEST(limits_test, a_bif_table_of_a_billion_entries_is_refused_before_it_is_alloc
               ThrowsMessage<parse_error>(
                   HasSubstr("big.bif:17:15: the table of 'y' would have 1000000000 cells (1000 states × 1000000 parent "
                             "configurations), more than pgm's limit of 16777216 cells per table (docs/limits.md)")));
+}
+
+// y with two states under two parents of 4,096 states: 2^25 cells, one over the limit, in every
+// format, refused before a value of the table is read (a NET file of this kind peaked at
+// 2.2 GB before; issue 28).
+std::vector<std::string> states_named(const std::string& stem, int count) {
+  std::vector<std::string> states;
+  for (int i = 0; i < count; ++i) states.push_back(stem + std::to_string(i));
+  return states;
+}
+
+const std::string limit_message =
+    "the table of 'y' would have 33554432 cells (2 states × 16777216 parent configurations), more than pgm's limit "
+    "of 16777216 cells per table (docs/limits.md)";
+
+TEST(limits_test, every_model_format_refuses_a_table_beyond_the_limit_before_reading_it) {
+  std::string net;
+  std::string xml = "<BIF><NETWORK>\n";
+  nlohmann::json json = {
+      {"format", "pgm-model"},
+      {"version", 1},
+      {"edges", nlohmann::json::array({nlohmann::json::array({"a", "y"}), nlohmann::json::array({"b", "y"})})}};
+  for (const auto& [name, count] : {std::pair<std::string, int>{"a", 4096}, {"b", 4096}, {"y", 2}}) {
+    const auto states = states_named("s", count);
+    net += "node " + name + " {\n  states = (";
+    xml += "<VARIABLE TYPE=\"nature\"><NAME>" + name + "</NAME>";
+    for (const auto& state : states) {
+      net += " \"" + state + "\"";
+      xml += "<OUTCOME>" + state + "</OUTCOME>";
+    }
+    net += " );\n}\n";
+    xml += "</VARIABLE>\n";
+    json["variables"].push_back({{"name", name}, {"states", states}});
+  }
+  net += "potential ( y | a b ) {\n  data = ( 0.5 0.5 );\n}\n";
+  xml += "<DEFINITION><FOR>y</FOR><GIVEN>a</GIVEN><GIVEN>b</GIVEN><TABLE>0.5 0.5</TABLE></DEFINITION>\n";
+  xml += "</NETWORK></BIF>\n";
+  json["tables"] = {{{"variable", "y"}, {"parents", {"a", "b"}}, {"values", {{0.5, 0.5}}}}};
+  EXPECT_THAT([&] { static_cast<void>(parse_net(net, "big.net")); },
+              ThrowsMessage<parse_error>(HasSubstr("big.net:10:13: " + limit_message)));
+  EXPECT_THAT([&] { static_cast<void>(parse_xmlbif(xml, "big.xml")); },
+              ThrowsMessage<parse_error>(HasSubstr("big.xml:5:1: " + limit_message)));
+  EXPECT_THAT([&] { static_cast<void>(parse_model_json(json.dump(), "big.json")); },
+              ThrowsMessage<data_error>(HasSubstr("big.json: /tables/0: " + limit_message)));
+}
+
+// A NET value list nested deeper than JSON's limit is refused, not a stack overflow.
+TEST(limits_test, net_lists_nested_a_million_deep_are_refused) {
+  const auto text =
+      "node a {\n  states = " + std::string(1'000'000, '(') + "\"x\"" + std::string(1'000'000, ')') + ";\n}\n";
+  EXPECT_THAT(
+      [&] { static_cast<void>(parse_net(text, "deep.net")); },
+      ThrowsMessage<parse_error>(HasSubstr("deep.net:2:268: lists nested deeper than 256 levels, pgm's limit")));
 }
 
 TEST(limits_test, bif_numbers_of_states_are_whole_numbers_in_digits) {
@@ -85,6 +142,16 @@ TEST(limits_test, a_scenario_asking_for_a_quadrillion_rows_is_refused) {
               ThrowsMessage<data_error>(HasSubstr("/prior/rows: expected a whole number ≥ 0")));
   EXPECT_THAT([] { static_cast<void>(parse_scenario(scenario_with_rows("1e400"), "s.json")); },
               ThrowsMessage<parse_error>(HasSubstr("number out of range: '1e400'")));
+  // Repetitions and subsets: every point is kept until the tables are written (issue 28).
+  auto many = scenario_with_rows("10");
+  many.replace(many.find("\"weights\""), 9, "\"repetitions\": 5000, \"weights\"");
+  EXPECT_THAT([&] { static_cast<void>(parse_scenario(many, "s.json")); },
+              ThrowsMessage<data_error>(HasSubstr(
+                  "s.json: /repetitions: 5000 are more than 1000, pgm's limit of repetitions (docs/limits.md)")));
+  auto parts = scenario_with_rows("10");
+  parts.replace(parts.find("\"weights\""), 9, "\"subsets\": 101, \"weights\"");
+  EXPECT_THAT([&] { static_cast<void>(parse_scenario(parts, "s.json")); },
+              ThrowsMessage<data_error>(HasSubstr("s.json: /subsets: 101 are more than 100, pgm's limit of subsets")));
 }
 
 std::string bif_with(const std::string& probabilities) {

@@ -7,7 +7,9 @@
                                                        #  "rewrite": [{"in": .., "bif": .., "xmlbif": ..}]}
 
 prints JSON on stdout: for queries, per request the list of {"states": {var: state}, "p": value}
-from pgmpy's VariableElimination (joint over the query variables); for ci, per request the
+from pgmpy's VariableElimination (joint over the query variables), or for a request with
+"mpe": true, {"mpe": {var: state}} from its map_query over the query variables, or for a request
+with "do": {var: state}, the joint from CausalInference.query; for ci, per request the
 statistic, p-value and degrees of freedom of pgmpy's chi_square and g_sq (which correct 2 x 2
 strata by Yates through scipy); for formats, per file to read (BIFReader or XMLBIFReader by
 extension) per CPD its variable, parents, states and values (one row per parent configuration,
@@ -18,6 +20,7 @@ pgmpy must be importable (PYTHONPATH); it is not part of pgm.
 
 import itertools
 import json
+import math
 import logging
 import sys
 
@@ -26,12 +29,28 @@ logging.disable(logging.WARNING)
 
 def queries(network_path, requests):
     from pgmpy.inference import VariableElimination
-    from pgmpy.readwrite import BIFReader
 
-    model = BIFReader(network_path).get_model()
+    model = read_model(network_path)
     engine = VariableElimination(model)
     answers = []
     for request in requests:
+        if request.get("do"):
+            from pgmpy.inference import CausalInference
+
+            factor = CausalInference(model).query(
+                request["query"], do=request["do"], evidence=request["evidence"] or None, show_progress=False
+            )
+            names = [factor.state_names[v] for v in factor.variables]
+            rows = []
+            for states in itertools.product(*names):
+                p = float(factor.get_value(**dict(zip(factor.variables, states))))
+                rows.append({"states": dict(zip(factor.variables, states)), "p": None if math.isnan(p) else p})
+            answers.append(rows)  # NaN (0/0 in pgmpy's adjustment) crosses as null
+            continue
+        if request.get("mpe"):
+            best = engine.map_query(request["query"], evidence=request["evidence"] or None, show_progress=False)
+            answers.append({"mpe": {k: str(v) for k, v in best.items()}})
+            continue
         factor = engine.query(request["query"], evidence=request["evidence"] or None, joint=True,
                               show_progress=False)
         rows = []

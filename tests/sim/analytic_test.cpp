@@ -6,7 +6,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <sstream>
 
+#include "pgm/data/csv.hpp"
 #include "pgm/data/discretizer.hpp"
 #include "sim/sim_support.hpp"
 
@@ -98,6 +100,29 @@ TEST(analytic_test, same_data_for_any_thread_count) {
     o.seed = 43;
     EXPECT_FALSE(simulate(task, o) == one) << name;
   }
+}
+
+// Rows made in blocks (first_row) are the rows of one run: pgm simulate writes its rows so.
+TEST(analytic_test, a_run_in_blocks_gives_the_data_of_one_piece) {
+  const auto task = shipped("2-stack");
+  simulate_options o;
+  o.rows = 10'000;
+  o.seed = 7;
+  const auto whole = simulate(task, o);
+  std::ostringstream blocks;
+  for (const std::size_t first : {0U, 3'000U, 3'001U, 9'999U}) {
+    o.first_row = first;
+    o.rows = (first == 0 ? 3'000U : first == 3'000U ? 1U : first == 3'001U ? 6'998U : 1U);
+    const auto block = simulate(task, o);
+    if (first == 0) {
+      write_csv(block, blocks);
+    } else {
+      write_csv_rows(block, blocks);
+    }
+  }
+  std::ostringstream one;
+  write_csv(whole, one);
+  EXPECT_EQ(blocks.str(), one.str());
 }
 
 TEST(analytic_test, columns_and_progress) {

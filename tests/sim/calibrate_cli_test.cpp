@@ -81,7 +81,12 @@ TEST_F(calibrate_cli_test, clear_errors_and_no_output) {
   EXPECT_THAT(r.err, HasSubstr("--check only prints a table"));
   r = run("calibrate --task 1-stack --backend unity --rows 10 --out " + out.string());
   EXPECT_THAT(r.err, HasSubstr("unknown simulator back-end 'unity'"));
+  r = run("calibrate --task 1-stack --backend analytic --rows 100000000 --out " + out.string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("100000000 experiments are more than 10000000, pgm's limit of a calibration"));
   EXPECT_FALSE(fs::exists(out));
+  // Printing the task file to a full disk fails as writing it does.
+  EXPECT_EQ(run_to("calibrate --task 1-stack --backend analytic --rows 200", "/dev/full").code, 1);
 }
 
 }  // namespace

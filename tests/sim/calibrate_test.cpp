@@ -104,6 +104,12 @@ TEST(calibrate_test, needs_experiments) {
               ::testing::ThrowsMessage<data_error>(HasSubstr("rows must be positive")));
   EXPECT_THAT([&] { (void)calibrate(task, dataset("none"), 1); },
               ::testing::ThrowsMessage<data_error>(HasSubstr("at least one experiment")));
+  // More than a fit can hold is refused before anything is simulated (issue 28: 10^8 rows ran
+  // out of memory after seconds).
+  EXPECT_THAT([&] { (void)calibrate(task, {.reference = "analytic", .rows = 100'000'000}); },
+              ::testing::ThrowsMessage<data_error>(
+                  HasSubstr("100000000 experiments are more than 10000000, pgm's limit of a calibration (its fit keeps "
+                            "every experiment in memory; docs/limits.md)")));
 }
 
 }  // namespace

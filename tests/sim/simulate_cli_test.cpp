@@ -7,9 +7,12 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "pgm/data/csv.hpp"
+#include "pgm/sim/simulator.hpp"
+#include "pgm/sim/task_file.hpp"
 #include "support/program_test.hpp"
 
 namespace pgm {
@@ -82,6 +85,18 @@ TEST_F(simulate_cli_test, output_is_replaced_atomically) {
   std::size_t files = 0;
   for ([[maybe_unused]] const auto& entry : fs::directory_iterator(dir_)) ++files;
   EXPECT_EQ(files, 3U);  // raw.csv, stdout.txt, stderr.txt
+}
+
+// More rows than one block: written as they are made, the file is byte for byte the one the
+// library writes for the data set made in one piece (issue 28: memory grew with --rows).
+TEST_F(simulate_cli_test, rows_beyond_a_block_are_written_as_they_come_and_equal_one_piece) {
+  const auto out = path("many.csv");
+  const auto r = run("simulate --task 1-stack --rows 300001 --seed 3 --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto task = sim::load_task(fs::path(PGM_SOURCE_DIR) / "tasks" / "1-stack.json");
+  std::ostringstream one;
+  write_csv(sim::simulate(task, {.rows = 300'001, .seed = 3}), one);
+  EXPECT_TRUE(slurp(out) == one.str());
 }
 
 }  // namespace

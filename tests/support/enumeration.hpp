@@ -54,6 +54,68 @@ inline std::vector<double> enumerate_joint(const bayesian_network& network, std:
   return out;
 }
 
+/// Calls visit(state, p) for every joint state of the network, p = Π tables × Π likelihoods of
+/// `observed`'s soft evidence, 0 for states against its hard evidence or interventions, an
+/// intervened variable's own table left out (the truncated factorisation); tables read as their
+/// columns' distributions, as the engines read them.
+template <class Visit>
+void enumerate_states(const bayesian_network& network, const evidence_set& observed, Visit&& visit) {
+  const auto n = network.size();
+  std::vector<std::size_t> cards(n);
+  for (std::size_t i = 0; i < n; ++i) cards[i] = network.variables()[i].cardinality();
+  std::vector<std::vector<variable_id>> parents(n);
+  for (std::size_t i = 0; i < n; ++i)
+    parents[i] = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
+  std::vector<std::size_t> state(n, 0);
+  while (true) {
+    bool consistent = true;
+    for (const auto& o : observed.hard) consistent = consistent && state[o.variable.value()] == o.state.value();
+    for (const auto& o : observed.intervened) consistent = consistent && state[o.variable.value()] == o.state.value();
+    double p = 0.0;
+    if (consistent) {
+      p = 1.0;
+      for (std::size_t i = 0; i < n; ++i) {
+        if (observed.intervenes(variable_id(static_cast<variable_id::rep>(i)))) continue;
+        const auto& table = network.tables()[i];
+        std::size_t u = 0;
+        for (auto parent : parents[i]) u = u * cards[parent.value()] + state[parent.value()];
+        double column = 0.0;
+        for (std::size_t x = 0; x < cards[i]; ++x) column += table.values()[u * cards[i] + x];
+        p *= table.values()[u * cards[i] + state[i]] / column;
+      }
+      for (const auto& l : observed.soft) p *= l.weights[state[l.variable.value()]];
+    }
+    visit(state, p);
+    std::size_t k = n;
+    while (k-- > 0) {
+      if (++state[k] < cards[k]) break;
+      state[k] = 0;
+    }
+    if (k == static_cast<std::size_t>(-1)) break;
+  }
+}
+
+/// The unnormalized joint of `query` (in order) with hard and soft evidence, by enumeration.
+inline std::vector<double> enumerate_joint(const bayesian_network& network, std::span<const variable_id> query,
+                                           const evidence_set& observed) {
+  std::size_t size = 1;
+  for (auto q : query) size *= network.variables()[q.value()].cardinality();
+  std::vector<double> out(size, 0.0);
+  enumerate_states(network, observed, [&](const std::vector<std::size_t>& state, double p) {
+    std::size_t index = 0;
+    for (auto q : query) index = index * network.variables()[q.value()].cardinality() + state[q.value()];
+    out[index] += p;
+  });
+  return out;
+}
+
+/// max over the states of `variables` of Σ over the others of the joint with the evidence.
+inline double enumerate_maximum(const bayesian_network& network, std::span<const variable_id> variables,
+                                const evidence_set& observed) {
+  const auto joint = enumerate_joint(network, variables, observed);
+  return *std::max_element(joint.begin(), joint.end());
+}
+
 /// Prevention targets the slow, obvious way: for each u below ε, a breadth-first search over
 /// configurations (one controllable parent ± one bin per step), layer by layer, until a layer
 /// holds a configuration above ε; if none does, the best configuration reached.

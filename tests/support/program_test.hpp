@@ -24,12 +24,15 @@ struct program_result {
 class program_test : public folder_test {
  protected:
   /// Runs `pgm <arguments>` through the shell (quote what the shell would split).
-  program_result run(const std::string& arguments) const {
-    const auto out = dir_ / "stdout.txt";
+  program_result run(const std::string& arguments) const { return run_to(arguments, dir_ / "stdout.txt"); }
+
+  /// Runs `pgm <arguments>` with its standard output sent to `output` (e.g. /dev/full).
+  program_result run_to(const std::string& arguments, const std::filesystem::path& output) const {
     const auto err = dir_ / "stderr.txt";
-    const auto command = std::string(PGM_PROGRAM) + " " + arguments + " >" + out.string() + " 2>" + err.string();
+    const auto command = std::string(PGM_PROGRAM) + " " + arguments + " >" + output.string() + " 2>" + err.string();
     const int status = std::system(command.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
+    const bool file = std::filesystem::is_regular_file(output);
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, file ? slurp(output) : std::string(), slurp(err)};
   }
 
   /// Expects a non-zero exit with `message` on stderr and, if given, no file at `output`.

@@ -20,6 +20,9 @@ class bayesian_network {
  public:
   using table_type = cpt<double>;
 
+  /// The empty network: no variables.
+  bayesian_network() = default;
+
   /// One table per variable, in any order. Throws model_error if a table is missing, extra,
   /// or disagrees with the structure.
   bayesian_network(network_structure structure, std::vector<table_type> tables) : structure_(std::move(structure)) {

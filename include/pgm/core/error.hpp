@@ -42,6 +42,13 @@ class parse_error : public data_error {
   std::size_t column_;
 };
 
+/// A missing value (or an empty field) in a CSV file where the reader's missing-value policy
+/// refuses it (pgm/data/missing.hpp): the program adds how to read such data.
+class missing_value_error : public parse_error {
+ public:
+  using parse_error::parse_error;
+};
+
 /// A model that is inconsistent: unknown variables or states, mismatched cardinalities, tables
 /// that are not distributions.
 class model_error : public error {

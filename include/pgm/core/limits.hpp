@@ -27,8 +27,37 @@ inline constexpr std::size_t csv_max_record_bytes = std::size_t{64} << 20;
 /// Nesting of arrays and objects in a JSON file (models, discretizations, tasks, scenarios).
 inline constexpr std::size_t json_max_depth = 256;
 
+/// Bytes of a file pgm reads whole into memory — a model (BIF, XMLBIF, NET, JSON), a
+/// discretization, a task or scenario file, a report template or summary: 256 MiB, some 50
+/// times the largest published network (diabetes, 5.5 MB of BIF). Checked before reading a
+/// regular file, and while reading a device or pipe (/dev/zero never ends).
+inline constexpr std::uint64_t max_file_bytes = std::uint64_t{256} << 20;
+
+/// Text that entities of an XMLBIF file's DTD may expand to, in all: 1 MiB (a name or a state
+/// needs a few bytes; a "billion laughs" file asks for gigabytes).
+inline constexpr std::size_t xml_max_entity_bytes = std::size_t{1} << 20;
+
 /// Rows a scenario may ask to simulate for one data set, as `pgm simulate --rows` allows.
 inline constexpr std::uint64_t max_simulated_rows = 1'000'000'000;
+
+/// Repetitions and subsets of an experiment (a scenario's `repetitions` and `subsets`,
+/// `pgm experiment --reps`): 1,000 and 100, 50 and 5 times the paper's 20. Every point is kept
+/// until the tables are written, about 4,600 of them a repetition for the shipped scenarios.
+inline constexpr std::size_t max_repetitions = 1000;
+inline constexpr std::size_t max_subsets = 100;
+
+namespace detail {
+
+/// a·b, or the largest size_t where it would overflow: sizes compared with a limit.
+[[nodiscard]] constexpr std::size_t saturating_multiply(std::size_t a, std::size_t b) noexcept {
+  if (a != 0 && b > std::numeric_limits<std::size_t>::max() / a) return std::numeric_limits<std::size_t>::max();
+  return a * b;
+}
+[[nodiscard]] constexpr std::size_t saturating_add(std::size_t a, std::size_t b) noexcept {
+  return b > std::numeric_limits<std::size_t>::max() - a ? std::numeric_limits<std::size_t>::max() : a + b;
+}
+
+}  // namespace detail
 
 /// The cells of a table whose child has `child_states` states and whose parents have
 /// `configurations` configurations; throws model_error naming `child` and the limit when

@@ -132,6 +132,10 @@ struct csv_data {
 /// shortest decimal text that reads back to the same double, a missing value as `missing`.
 void write_csv(const dataset& data, std::ostream& out, char delimiter = ',', std::string_view missing = "NA");
 
+/// The records of write_csv without the header: a data set made in blocks of rows is written
+/// as one file by writing the first block with write_csv and appending the others with this.
+void write_csv_rows(const dataset& data, std::ostream& out, char delimiter = ',', std::string_view missing = "NA");
+
 /// Writes a data set to a CSV file atomically (see write_csv).
 void write_csv(const dataset& data, const std::filesystem::path& path, char delimiter = ',',
                std::string_view missing = "NA");

@@ -23,6 +23,7 @@
 
 #include "pgm/core/variable.hpp"
 #include "pgm/data/csv.hpp"
+#include "pgm/data/family_counts.hpp"
 #include "pgm/data/missing.hpp"
 #include "pgm/detail/process_group.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
@@ -32,51 +33,6 @@ namespace pgm {
 namespace detail {
 struct csv_access;  // the implementation's way in (src/data)
 }  // namespace detail
-
-/// One family to count: a child column and its parent columns, by name.
-struct csv_family {
-  std::string child;
-  std::vector<std::string> parents;
-};
-
-struct csv_count_request {
-  /// The columns to read, by name; each value is checked as `read_csv` would. Every family's
-  /// columns must be among them. Naming a column the file lacks is an error.
-  std::vector<std::string> columns;
-  /// Columns whose variable is known (from a model): their values must be its state labels,
-  /// and the counts follow its state order.
-  std::map<std::string, variable, std::less<>> variables;
-  /// Raw numeric columns binned into these interval variables while they are read (values
-  /// outside the edges go to the outer bins).
-  std::map<std::string, variable, std::less<>> intervals;
-  /// The families to count.
-  std::vector<csv_family> families;
-  /// Missing values, as csv_options::missing: an error, rows dropped, or each family counted
-  /// over the rows where its child and parents are present (policy available).
-  missing_values missing;
-  /// Counting threads; 0 uses every hardware thread. The counts are the same for any number.
-  unsigned threads = 0;
-  /// Bytes per chunk (split at a line end) and per window (what is in memory at once); 0
-  /// chooses. Tests set them small to put boundaries everywhere.
-  std::size_t chunk_bytes = 0;
-  std::size_t window_bytes = 0;
-};
-
-struct csv_counts {
-  /// Data rows read (those dropped for a missing value not included).
-  std::size_t rows = 0;
-  /// Rows left out for a missing value (policy drop).
-  std::size_t dropped = 0;
-  /// The columns read, in file order, with their states: the values seen, sorted as
-  /// `read_csv` sorts them, or the given variable, or the interval variable.
-  std::vector<variable> variables;
-  /// One table per requested family, in request order, over `variables`. With the policy
-  /// available a table counts only the rows where its family is present, so it may sum to
-  /// less than `rows`.
-  std::vector<count_table> families;
-  /// For each binned column, how many values lie outside its edges' range.
-  std::map<std::string, std::size_t, std::less<>> outside;
-};
 
 /// A CSV input opened and its header read: a file (mapped), standard input ("-", named
 /// "<stdin>"), or gzip-compressed data (a .gz file, or gzip bytes on standard input), or text
@@ -106,7 +62,7 @@ class csv_reader {
 
 /// Reads the rest of `input` and counts the requested families. Errors are those `read_csv`
 /// reports for the same columns (file:line:column), plus "no data rows" for an empty body.
-[[nodiscard]] csv_counts count_csv(csv_reader& input, const csv_count_request& request);
+[[nodiscard]] family_counts count_csv(csv_reader& input, const family_count_request& request);
 
 /// As above, with the records split over the processes of `group` (pgm::detail::processes()
 /// under mpirun), every one of which opened the same file: each counts its own byte range, cut
@@ -116,7 +72,8 @@ class csv_reader {
 /// memory (standard input, compressed data) or that holds quotes (a quoted field may span
 /// lines) is counted whole by process 0. A failure is agreed on by all processes
 /// (pgm::detail::agree): the first in the file wins.
-[[nodiscard]] csv_counts count_csv(csv_reader& input, const csv_count_request& request, detail::process_group& group);
+[[nodiscard]] family_counts count_csv(csv_reader& input, const family_count_request& request,
+                                      detail::process_group& group);
 
 /// Counts of some of a file's records, over provisional ids: add up those of one counter with
 /// `+=` (in any order) and turn them into tables with csv_counter::finish. They refer to their
@@ -150,7 +107,7 @@ class csv_counter {
  public:
   /// Throws data_error for a requested column the header lacks or a family column that is
   /// not requested.
-  csv_counter(std::string source, std::vector<std::string> header, const csv_count_request& request,
+  csv_counter(std::string source, std::vector<std::string> header, const family_count_request& request,
               char delimiter = ',');
   ~csv_counter();
   csv_counter(csv_counter&&) noexcept;
@@ -162,7 +119,7 @@ class csv_counter {
   [[nodiscard]] csv_partial_counts count(std::string_view bytes, std::size_t first_line) const;
 
   /// The tables of all the counts added up. Throws data_error when there are no rows.
-  [[nodiscard]] csv_counts finish(const csv_partial_counts& counts) const;
+  [[nodiscard]] family_counts finish(const csv_partial_counts& counts) const;
 
   struct impl;
 

@@ -133,16 +133,19 @@ struct prevention_plan {
   explanation why;
 };
 
-/// Predicts, explains and prevents for `planned` on `network`. The decision table's parents are
-/// the controllable variables and the assigned parents of the success variable; when they are
-/// exactly its parents (the usual case) no inference runs, otherwise variable elimination
-/// conditions on the rest of the assignment. Every controllable variable must be assigned, and
-/// every parent unless `marginalize_missing`.
-[[nodiscard]] inline prevention_plan plan_prevention(const bayesian_network& network, const success_event& success,
-                                                     const assignment& planned,
-                                                     std::span<const std::string> controllable,
-                                                     const prevention_options& options = {},
-                                                     const prediction_options& prediction = {}) {
+/// Predicts, explains and prevents for `planned` on the engine's network. The decision table's
+/// parents are the controllable variables and the assigned parents of the success variable,
+/// and it holds P(success | do(controllable), the other assigned variables): prevention sets
+/// the controllable variables, it does not observe them (intervened_success_table). When the
+/// table's parents are exactly the success variable's (the usual case) no inference runs;
+/// otherwise `engine` answers, its evidence restored afterwards. Every controllable variable
+/// must be assigned, and every parent unless `marginalize_missing`.
+template <InferenceEngine Engine>
+[[nodiscard]] prevention_plan plan_prevention(Engine& engine, const success_event& success, const assignment& planned,
+                                              std::span<const std::string> controllable,
+                                              const prevention_options& options = {},
+                                              const prediction_options& prediction = {}) {
+  const auto& network = engine.network();
   detail::check_epsilon(options.epsilon);
   const auto target = detail::node_of(network, success.variable);
   const auto state = network.at(success.variable).state(success.state);
@@ -183,7 +186,7 @@ struct prevention_plan {
     const observation one[] = {o};
     if (!all_parents || detail::observes_descendant(network, target, one)) informative.push_back(o);
   }
-  auto table = success_table(network, success.variable, given, informative, prediction.heuristic);
+  auto table = intervened_success_table(engine, success.variable, given, controllable, informative);
   std::vector<std::size_t> codes;
   std::vector<bool> flags;
   for (const auto& p : table.parents()) {
@@ -196,6 +199,16 @@ struct prevention_plan {
   for (std::size_t i = 0; i < flags.size(); ++i) mask[i] = flags[i];
   auto why = explain(table, state.value(), u, std::span<const bool>(mask.get(), flags.size()), options);
   return {std::move(table), std::move(why)};
+}
+
+/// The same with variable elimination on `network`.
+[[nodiscard]] inline prevention_plan plan_prevention(const bayesian_network& network, const success_event& success,
+                                                     const assignment& planned,
+                                                     std::span<const std::string> controllable,
+                                                     const prevention_options& options = {},
+                                                     const prediction_options& prediction = {}) {
+  variable_elimination engine(network, {prediction.heuristic});
+  return plan_prevention(engine, success, planned, controllable, options, prediction);
 }
 
 /// The variables prevention may move when the user names none: every parent of the success

@@ -2,8 +2,9 @@
 /// \file
 /// Success prediction: the probability that the task succeeds (the success variable takes its
 /// success state) for a planned assignment. With every parent of the success variable assigned
-/// it is one lookup in the node's table, normalized by its column; otherwise — by request only, since a forgotten value
-/// should not pass silently — the unassigned variables are summed out by variable elimination.
+/// it is one lookup in the node's table, normalized by its column; otherwise — by request only,
+/// since a forgotten value should not pass silently — the inference engine sums out the
+/// unassigned variables (variable elimination unless an engine is given).
 
 #include <algorithm>
 #include <string>
@@ -13,6 +14,7 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/decide/assignment.hpp"
+#include "pgm/inference/inference_engine.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 
 namespace pgm {
@@ -99,11 +101,14 @@ namespace detail {
 
 }  // namespace detail
 
-/// P(success | planned). Throws model_error for unknown variables or states, numbers that
-/// cannot be binned, an assigned success variable, or (unless marginalizing) unassigned
-/// parents; impossible_evidence if the assignment has probability zero.
-[[nodiscard]] inline double predict_success(const bayesian_network& network, const success_event& success,
-                                            const assignment& planned, const prediction_options& options = {}) {
+/// P(success | planned), by `engine` where a lookup does not do (its evidence is restored
+/// afterwards). Throws model_error for unknown variables or states, numbers that cannot be
+/// binned, an assigned success variable, or (unless marginalizing) unassigned parents;
+/// impossible_evidence if the assignment has probability zero.
+template <InferenceEngine Engine>
+[[nodiscard]] double predict_success(Engine& engine, const success_event& success, const assignment& planned,
+                                     const prediction_options& options = {}) {
+  const auto& network = engine.network();
   const auto target = detail::node_of(network, success.variable);
   const auto state = network.at(success.variable).state(success.state);
   if (planned.contains(success.variable)) {
@@ -118,17 +123,35 @@ namespace detail {
     for (const auto& parent : table.parents())
       codes.push_back(state_of(parent, planned.find(parent.name())->second).value());
     // The column as stored may miss 1 by rounding (published tables are printed to a few
-    // digits); the answer is the normalized entry, as variable elimination would give it.
+    // digits); the answer is the normalized entry, as the engines read the column.
     const auto column = table.configuration(codes);
     double sum = 0.0;
     for (std::size_t s = 0; s < table.child().cardinality(); ++s)
       sum += table(state_index(static_cast<state_index::rep>(s)), column);
     return table(state, column) / sum;
   }
+  const evidence_set before = engine.evidence();
+  engine.set_evidence({observed, {}});
   const variable_id query_ids[] = {target};
-  auto joint = joint_with_evidence(network, query_ids, observed, options.heuristic);
-  if (!(joint.normalize() > 0.0)) throw impossible_evidence("the assignment has probability 0 under the network");
-  return joint.values()[state.value()];
+  posterior answer;
+  try {
+    answer = engine.joint(query_ids);
+  } catch (const impossible_evidence&) {
+    engine.set_evidence(before);
+    throw impossible_evidence("the assignment has probability 0 under the network");
+  } catch (...) {
+    engine.set_evidence(before);
+    throw;
+  }
+  engine.set_evidence(before);
+  return answer.table.values()[state.value()];
+}
+
+/// The same with variable elimination on `network`.
+[[nodiscard]] inline double predict_success(const bayesian_network& network, const success_event& success,
+                                            const assignment& planned, const prediction_options& options = {}) {
+  variable_elimination engine(network, {options.heuristic});
+  return predict_success(engine, success, planned, options);
 }
 
 }  // namespace pgm

@@ -6,6 +6,8 @@
 // that names the JSON path of anything amiss ("tasks/x.json: /variables/2/kind: expected a
 // string").
 
+#include <algorithm>
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -33,6 +35,20 @@ class json_reader {
     const auto it = object.find(key);
     if (it == object.end()) fail(path, std::string("the key '") + key + "' is missing");
     return *it;
+  }
+  /// Refuses a key of `object` that is none of `known`, naming it, the known key it was most
+  /// likely meant to be and all of them: a misspelt optional key ("repetitons") would otherwise
+  /// be ignored without a word.
+  void only_keys(const nlohmann::json& object, const std::string& path,
+                 std::initializer_list<std::string_view> known) const {
+    if (!object.is_object()) return;
+    for (const auto& item : object.items()) {
+      const auto& key = item.key();
+      if (std::find(known.begin(), known.end(), key) != known.end()) continue;
+      const auto near = closest_name(key, known);
+      fail(path + "/" + key, "unknown key '" + key + "'" + (near ? "; did you mean '" + *near + "'?" : "") +
+                                 " (the keys here: " + join(known) + ")");
+    }
   }
   const nlohmann::json* optional_member(const nlohmann::json& object, const char* key) const {
     const auto it = object.find(key);
@@ -65,11 +81,13 @@ class json_reader {
 
   variable read_variable(const nlohmann::json& value, const std::string& path) const {
     const auto name = string(member(value, path, "name"), path + "/name");
+    only_keys(value, path, {"name", "states", "edges", "tags"});
     auto states = strings(member(value, path, "states"), path + "/states");
     semantic_tags tags;
     if (const auto* t = optional_member(value, "tags")) {
       const auto tags_path = path + "/tags";
       if (!t->is_object()) fail(tags_path, "expected an object");
+      only_keys(*t, tags_path, {"quantity", "unit", "role"});
       if (const auto* q = optional_member(*t, "quantity")) tags.quantity = string(*q, tags_path + "/quantity");
       if (const auto* u = optional_member(*t, "unit")) tags.unit = string(*u, tags_path + "/unit");
       if (const auto* r = optional_member(*t, "role")) tags.role = string(*r, tags_path + "/role");
@@ -99,8 +117,15 @@ class json_reader {
           ++column;
         }
       }
+      // "[json.exception.parse_error.101] parse error at line 3, column 2: syntax error while
+      // parsing value - invalid literal; last read: '0,<U+000A> N'": the place is ours, the
+      // reason and what was read are kept.
       std::string what = e.what();
-      if (const auto colon = what.rfind(": "); colon != std::string::npos) what = what.substr(colon + 2);
+      if (const auto at = what.find(", column "); at != std::string::npos) {
+        if (const auto colon = what.find(": ", at); colon != std::string::npos) what = what.substr(colon + 2);
+      } else if (const auto bracket = what.find("] "); bracket != std::string::npos) {
+        what = what.substr(bracket + 2);
+      }
       throw parse_error(source_, line, column, "invalid JSON: " + what);
     } catch (const nlohmann::json::out_of_range& e) {
       // A number too large for a double ("1e999"): nlohmann gives no position, so find the

@@ -3,6 +3,7 @@
 /// Internal, do not depend on it: number parsing and formatting shared by the readers and
 /// writers, so that every file pgm writes reads back to the same bits.
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -131,6 +132,102 @@ template <class Range>
   }
   if (count > limit) text += ", … (" + std::to_string(count) + " in all)";
   return text;
+}
+
+/// The length of a valid UTF-8 sequence at the start of `text` (1 to 4), or 0 if it is none.
+[[nodiscard]] inline std::size_t utf8_sequence(std::string_view text) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  const auto lead = byte(0);
+  if (lead < 0x80) return 1;
+  const std::size_t length = lead >= 0xC2 && lead <= 0xDF   ? 2
+                             : lead >= 0xE0 && lead <= 0xEF ? 3
+                             : lead >= 0xF0 && lead <= 0xF4 ? 4
+                                                            : 0;
+  if (length == 0 || text.size() < length) return 0;
+  for (std::size_t i = 1; i < length; ++i) {
+    if ((byte(i) & 0xC0) != 0x80) return 0;
+  }
+  // Overlong forms, UTF-16 surrogates and code points past U+10FFFF are not UTF-8.
+  if ((lead == 0xE0 && byte(1) < 0xA0) || (lead == 0xED && byte(1) >= 0xA0) || (lead == 0xF0 && byte(1) < 0x90) ||
+      (lead == 0xF4 && byte(1) >= 0x90)) {
+    return 0;
+  }
+  return length;
+}
+
+/// `text` as a terminal should show it in a message: control characters (a file's escape
+/// sequences included, which a terminal would obey), the C1 controls, the bidirectional
+/// overrides and bytes that are not UTF-8 written as `\n`, `\t`, `\r` or `\xNN`; printable
+/// text, UTF-8 included, unchanged. The program prints every error and note through it.
+[[nodiscard]] inline std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  const auto escape = [&](unsigned char c) {
+    static constexpr char digits[] = "0123456789abcdef";
+    if (c == '\n') {
+      out += "\\n";
+    } else if (c == '\t') {
+      out += "\\t";
+    } else if (c == '\r') {
+      out += "\\r";
+    } else {
+      out += "\\x";
+      out += digits[c >> 4];
+      out += digits[c & 0xF];
+    }
+  };
+  for (std::size_t i = 0; i < text.size();) {
+    const auto c = static_cast<unsigned char>(text[i]);
+    const auto length = utf8_sequence(text.substr(i));
+    const auto second = length > 1 ? static_cast<unsigned char>(text[i + 1]) : 0;
+    const auto third = length > 2 ? static_cast<unsigned char>(text[i + 2]) : 0;
+    const bool control = c < 0x20 || c == 0x7F || (c == 0xC2 && second < 0xA0);  // C0, DEL, C1
+    // U+202A–U+202E and U+2066–U+2069 reorder the text around them.
+    const bool bidi = c == 0xE2 && ((second == 0x80 && third >= 0xAA && third <= 0xAE) ||
+                                    (second == 0x81 && third >= 0xA6 && third <= 0xA9));
+    if (length == 0 || control || bidi) {
+      for (std::size_t k = 0; k < std::max<std::size_t>(length, 1); ++k)
+        escape(static_cast<unsigned char>(text[i + k]));
+      i += std::max<std::size_t>(length, 1);
+      continue;
+    }
+    out.append(text.substr(i, length));
+    i += length;
+  }
+  return out;
+}
+
+/// How many single-character insertions, deletions, substitutions and swaps of neighbours turn
+/// `a` into `b` (optimal string alignment).
+[[nodiscard]] inline std::size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<std::vector<std::size_t>> d(a.size() + 1, std::vector<std::size_t>(b.size() + 1));
+  for (std::size_t i = 0; i <= a.size(); ++i) d[i][0] = i;
+  for (std::size_t j = 0; j <= b.size(); ++j) d[0][j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+      d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+      if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+        d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+    }
+  }
+  return d[a.size()][b.size()];
+}
+
+/// The one of `names` `word` was most likely meant to be — within two edits, and fewer than half
+/// its length — for "did you mean" in messages; nothing when none is that close.
+template <class Range>
+[[nodiscard]] std::optional<std::string> closest_name(std::string_view word, const Range& names) {
+  std::optional<std::string> best;
+  std::size_t best_distance = 3;
+  for (const auto& name : names) {
+    const auto distance = edit_distance(word, name);
+    if (distance < best_distance && 2 * distance < std::max<std::size_t>(std::string_view(name).size(), 2)) {
+      best = std::string(name);
+      best_distance = distance;
+    }
+  }
+  return best;
 }
 
 }  // namespace pgm::detail

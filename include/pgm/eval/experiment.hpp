@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "pgm/core/limits.hpp"
 #include "pgm/decide/prevent.hpp"
 #include "pgm/detail/parallel_for.hpp"
 #include "pgm/detail/splitmix.hpp"
@@ -122,6 +123,10 @@ struct prepared_target {
                                                                   const experiment_options& options = {}) {
   auto& group = options.across_processes ? detail::processes() : detail::lone_process();
   const std::size_t repetitions = options.repetitions ? options.repetitions : s.repetitions;
+  if (repetitions > max_repetitions) {
+    throw data_error(std::to_string(repetitions) + " repetitions are more than " + std::to_string(max_repetitions) +
+                     ", pgm's limit (every point is kept until the tables are written; docs/limits.md)");
+  }
   const std::size_t total = s.targets.size() * repetitions;
   const auto share = detail::process_share{group.rank(), group.size()}.of(total);
   // Over several processes a target's notes wait for the gather, to come out in target order

@@ -56,19 +56,25 @@ class scenario_reader : public json_reader {
   scenario read(std::string_view text) const {
     const auto doc = parse(text);
     check_format(doc, "pgm-scenario");
+    only_keys(doc, "",
+              {"format", "version", "name", "title", "order", "prior", "target", "map", "strategies", "weights", "bins",
+               "subsets", "repetitions", "epsilon"});
     scenario s;
     s.name = string(member(doc, "", "name"), "/name");
     s.title = string(member(doc, "", "title"), "/title");
     const auto& prior = member(doc, "", "prior");
+    only_keys(prior, "/prior", {"task", "rows", "node"});
     s.prior_task = string(member(prior, "/prior", "task"), "/prior/task");
     s.prior_rows = rows(member(prior, "/prior", "rows"), "/prior/rows");
     if (s.prior_rows == 0) fail("/prior/rows", "the prior needs at least one row");
     s.prior_node = string(member(prior, "/prior", "node"), "/prior/node");
     const auto& target = member(doc, "", "target");
+    only_keys(target, "/target", {"node", "tasks"});
     s.target_node = string(member(target, "/target", "node"), "/target/node");
     std::size_t i = 0;
     for (const auto& t : array(member(target, "/target", "tasks"), "/target/tasks")) {
       const std::string path = "/target/tasks/" + std::to_string(i++);
+      only_keys(t, path, {"task", "train_rows", "ground_truth_rows"});
       s.targets.push_back({string(member(t, path, "task"), path + "/task"),
                            rows(member(t, path, "train_rows"), path + "/train_rows"),
                            rows(member(t, path, "ground_truth_rows"), path + "/ground_truth_rows")});
@@ -91,6 +97,14 @@ class scenario_reader : public json_reader {
     if (const auto* v = optional_member(doc, "order")) s.order = count(*v, "/order");
     if (s.bins < 2) fail("/bins", "needs at least 2 bins");
     if (s.subsets == 0 || s.repetitions == 0) fail("/subsets", "subsets and repetitions must be positive");
+    if (s.repetitions > max_repetitions) {
+      fail("/repetitions", std::to_string(s.repetitions) + " are more than " + std::to_string(max_repetitions) +
+                               ", pgm's limit of repetitions (docs/limits.md)");
+    }
+    if (s.subsets > max_subsets) {
+      fail("/subsets", std::to_string(s.subsets) + " are more than " + std::to_string(max_subsets) +
+                           ", pgm's limit of subsets (docs/limits.md)");
+    }
     if (!(s.epsilon > 0 && s.epsilon < 1)) fail("/epsilon", "must lie strictly between 0 and 1");
     return s;
   }

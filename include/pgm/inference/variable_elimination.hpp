@@ -1,87 +1,46 @@
 #pragma once
 /// \file
-/// Exact inference by variable elimination: P(query | evidence) for any set of query variables.
-/// Only the ancestors of the query and evidence variables take part (the others sum to one),
-/// the evidence is applied to each table before any product, and the remaining variables are
-/// eliminated greedily in min-fill (default) or min-degree order over the interaction graph.
+/// Exact inference by variable elimination, over any semiring: P(query | evidence) for any set
+/// of query variables, P(evidence), the most probable explanation (max-product) and the most
+/// probable state of a subset with the rest summed out (sums first, then maxima: marginal MAP).
+///
+/// Only the ancestors of the query and evidence variables take part (the others are barren: they
+/// sum to one), the hard evidence is applied to each table before any product, soft evidence
+/// enters as one factor per variable, and the remaining variables are eliminated greedily in
+/// min-fill (default), min-degree or min-weight order (triangulation.hpp). Each query starts
+/// afresh; for many queries on one network the junction tree engine keeps its work.
+///
+/// `variable_elimination` is the engine ("ve"); `query` and `joint_with_evidence` are the
+/// one-call forms.
 
 #include <algorithm>
 #include <cstddef>
 #include <initializer_list>
-#include <limits>
-#include <map>
+#include <memory>
 #include <span>
 #include <string>
 #include <string_view>
+#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/inference/exact.hpp"
 #include "pgm/inference/factor.hpp"
+#include "pgm/inference/query.hpp"
+#include "pgm/inference/semiring.hpp"
+#include "pgm/inference/triangulation.hpp"
 
 namespace pgm {
 
-/// Evidence whose probability is zero under the network: nothing can be conditioned on it.
-class impossible_evidence : public model_error {
- public:
-  using model_error::model_error;
-};
-
-/// Observed states by variable name.
-using evidence = std::map<std::string, std::string, std::less<>>;
-
-/// One observed state by id, the form the library passes around internally.
-struct observation {
-  variable_id variable;
-  state_index state;
-  friend bool operator==(const observation&, const observation&) = default;
-};
-
-enum class elimination_heuristic {
-  min_fill,   ///< fewest new edges among the neighbours; ties by degree, then id
-  min_degree  ///< fewest neighbours; ties by id
-};
-
-/// A normalized distribution over `variables` (in the order asked), with P(evidence).
-struct posterior {
-  std::vector<variable> variables;
-  /// Over the variables' network ids in the same order, values summing to one.
-  factor table;
-  double evidence_probability = 1.0;
-
-  /// The probability of these states (labels, one per variable in order).
-  [[nodiscard]] double probability(std::span<const std::string> states) const {
-    if (states.size() != variables.size()) {
-      throw model_error("the posterior is over " + std::to_string(variables.size()) + " variables, got " +
-                        std::to_string(states.size()) + " states");
-    }
-    std::vector<std::size_t> codes(states.size());
-    for (std::size_t i = 0; i < codes.size(); ++i) codes[i] = variables[i].state(states[i]).value();
-    return table.at(codes);
-  }
-  [[nodiscard]] double probability(std::initializer_list<std::string> states) const {
-    return probability(std::span<const std::string>(states.begin(), states.size()));
-  }
-};
-
 namespace detail {
 
-/// The node ids of `names`, throwing model_error naming an unknown one.
-[[nodiscard]] inline variable_id node_of(const bayesian_network& network, std::string_view name) {
-  if (!network.structure().contains(name)) {
-    std::vector<std::string> names;
-    for (const auto& v : network.variables()) names.push_back(v.name());
-    throw model_error("the network has no variable '" + std::string(name) +
-                      "' (variables: " + detail::list_for_message(names) + ")");
-  }
-  return network.id(name);
-}
-
-/// Whether each node is an ancestor of (or one of) `targets`.
+/// Whether each node is an ancestor of (or one of) `targets`, in the network with the edges into
+/// the intervened variables of `observed` cut.
 [[nodiscard]] inline std::vector<bool> ancestral_set(const bayesian_network& network,
-                                                     std::span<const variable_id> targets) {
+                                                     std::span<const variable_id> targets,
+                                                     const evidence_set& observed = {}) {
   std::vector<bool> in(network.size(), false);
   std::vector<variable_id> stack(targets.begin(), targets.end());
   while (!stack.empty()) {
@@ -89,73 +48,183 @@ namespace detail {
     stack.pop_back();
     if (in[node.value()]) continue;
     in[node.value()] = true;
+    if (observed.intervenes(node)) continue;
     for (auto parent : network.graph().parents(node)) stack.push_back(parent);
   }
   return in;
 }
 
+/// The ancestral set of `query` and every variable the evidence names.
+[[nodiscard]] inline std::vector<bool> relevant_set(const bayesian_network& network, std::span<const variable_id> query,
+                                                    const evidence_set& observed) {
+  std::vector<variable_id> targets(query.begin(), query.end());
+  for (const auto& o : observed.hard) targets.push_back(o.variable);
+  for (const auto& l : observed.soft) targets.push_back(l.variable);
+  for (const auto& o : observed.intervened) targets.push_back(o.variable);
+  return ancestral_set(network, targets, observed);
+}
+
+/// A factor shared rather than copied: a network's tables stay where they are kept until the
+/// evidence or an elimination makes a new one.
+template <Semiring S>
+using shared_factor = std::shared_ptr<const factor_of<S>>;
+
+/// The factors of the ancestral set of `keep` and the evidence, in semiring S: each table with
+/// the hard evidence and interventions applied (an intervened variable's own table left out:
+/// the truncated factorisation), and a factor per soft evidence. `eliminate` receives the
+/// relevant variables that are neither kept nor fixed. `table_of(node)` gives a node's
+/// table as a shared factor (made by table_factor<S>, or kept).
+template <Semiring S, class TableOf>
+[[nodiscard]] std::vector<shared_factor<S>> evidence_factors(const bayesian_network& network,
+                                                             std::span<const variable_id> keep,
+                                                             const evidence_set& observed,
+                                                             std::vector<variable_id>& eliminate, TableOf&& table_of) {
+  const auto relevant = relevant_set(network, keep, observed);
+
+  std::vector<std::ptrdiff_t> fixed(network.size(), -1);
+  for (const auto& o : observed.hard) fixed[o.variable.value()] = static_cast<std::ptrdiff_t>(o.state.value());
+  for (const auto& o : observed.intervened) fixed[o.variable.value()] = static_cast<std::ptrdiff_t>(o.state.value());
+
+  std::vector<shared_factor<S>> factors;
+  eliminate.clear();
+  for (std::size_t i = 0; i < network.size(); ++i) {
+    if (!relevant[i]) continue;
+    const variable_id node(static_cast<variable_id::rep>(i));
+    if (observed.intervenes(node)) continue;
+    shared_factor<S> table = table_of(node);
+    const auto scope = table->scope();  // a copy: reducing replaces the table
+    for (auto id : scope) {
+      if (fixed[id.value()] >= 0) {
+        table = std::make_shared<const factor_of<S>>(table->reduce(id, static_cast<std::size_t>(fixed[id.value()])));
+      }
+    }
+    factors.push_back(std::move(table));
+    const bool kept = std::find(keep.begin(), keep.end(), node) != keep.end();
+    if (!kept && fixed[i] < 0) eliminate.push_back(node);
+  }
+  for (const auto& l : observed.soft) {
+    std::vector<typename S::value_type> weights;
+    for (double w : l.weights) weights.push_back(S::from_probability(w));
+    factors.push_back(std::make_shared<const factor_of<S>>(
+        std::vector<variable_id>{l.variable}, std::vector<std::size_t>{l.weights.size()}, std::move(weights)));
+  }
+  return factors;
+}
+
+/// Eliminates `variable` from `factors` with S's ⊕; returns the product it eliminated from.
+template <Semiring S>
+shared_factor<S> eliminate_one(std::vector<shared_factor<S>>& factors, variable_id variable) {
+  std::vector<shared_factor<S>> with;
+  std::vector<shared_factor<S>> rest;
+  rest.reserve(factors.size());
+  for (auto& f : factors) (f->contains(variable) ? with : rest).push_back(std::move(f));
+  shared_factor<S> product = with.empty() ? std::make_shared<const factor_of<S>>(unit<S>()) : with.front();
+  for (std::size_t k = 1; k < with.size(); ++k) {
+    product = std::make_shared<const factor_of<S>>(combine<S>(*product, *with[k]));
+  }
+  rest.push_back(std::make_shared<const factor_of<S>>(eliminate<S>(*product, variable)));
+  factors = std::move(rest);
+  return product;
+}
+
+/// The product of `factors` as one factor over `scope` (with these cardinalities), in that order:
+/// starting from the one-valued factor over `scope` puts the result in its order.
+template <Semiring S>
+[[nodiscard]] factor_of<S> product_over(const std::vector<shared_factor<S>>& factors,
+                                        std::span<const variable_id> scope, std::span<const std::size_t> cards) {
+  std::size_t cells = 1;
+  for (auto c : cards) cells *= c;
+  auto result = factor_of<S>(std::vector<variable_id>(scope.begin(), scope.end()),
+                             std::vector<std::size_t>(cards.begin(), cards.end()),
+                             std::vector<typename S::value_type>(cells, S::one()));
+  for (const auto& f : factors) result = combine<S>(result, *f);
+  return result;
+}
+
+/// The product of `factors` over `scope`, the cardinalities from `network`.
+template <Semiring S>
+[[nodiscard]] factor_of<S> product_over(const std::vector<shared_factor<S>>& factors,
+                                        std::span<const variable_id> scope, const bayesian_network& network) {
+  std::vector<std::size_t> cards;
+  for (auto id : scope) cards.push_back(network.variables()[id.value()].cardinality());
+  return product_over<S>(factors, scope, cards);
+}
+
 }  // namespace detail
 
-/// A greedy elimination order of `eliminate` for the interaction graph of `factors`.
-[[nodiscard]] inline std::vector<variable_id> elimination_order(
-    const std::vector<factor>& factors, std::vector<variable_id> eliminate,
+namespace detail {
+
+template <std::floating_point T>
+const basic_factor<T>& factor_at(const basic_factor<T>& f) {
+  return f;
+}
+template <std::floating_point T>
+const basic_factor<T>& factor_at(const std::shared_ptr<const basic_factor<T>>& f) {
+  return *f;
+}
+
+}  // namespace detail
+
+/// A greedy elimination order of `eliminate` for the interaction graph of `factors` (factors or
+/// shared factors).
+template <class Factor>
+[[nodiscard]] std::vector<variable_id> elimination_order(
+    const std::vector<Factor>& factors, std::vector<variable_id> eliminate,
     elimination_heuristic heuristic = elimination_heuristic::min_fill) {
-  // Dense adjacency over the variables that occur: networks here have a few dozen nodes.
   std::vector<variable_id> nodes;
-  for (const auto& f : factors) nodes.insert(nodes.end(), f.scope().begin(), f.scope().end());
+  for (const auto& f : factors) {
+    const auto& scope = detail::factor_at(f).scope();
+    nodes.insert(nodes.end(), scope.begin(), scope.end());
+  }
   nodes.insert(nodes.end(), eliminate.begin(), eliminate.end());
   std::sort(nodes.begin(), nodes.end());
   nodes.erase(std::unique(nodes.begin(), nodes.end()), nodes.end());
-  const auto n = nodes.size();
-  auto index = [&](variable_id id) {
+  auto local = [&](variable_id id) {
     return static_cast<std::size_t>(std::lower_bound(nodes.begin(), nodes.end(), id) - nodes.begin());
   };
-  std::vector<std::vector<char>> adjacent(n, std::vector<char>(n, 0));
-  for (const auto& f : factors) {
-    for (auto a : f.scope()) {
-      for (auto b : f.scope()) {
-        if (a != b) adjacent[index(a)][index(b)] = 1;
+  interaction_graph graph(nodes.size());
+  std::vector<std::size_t> cards(nodes.size(), 1);
+  for (const auto& held : factors) {
+    const auto& f = detail::factor_at(held);
+    for (std::size_t a = 0; a < f.scope().size(); ++a) {
+      cards[local(f.scope()[a])] = f.cardinalities()[a];
+      for (std::size_t b = a + 1; b < f.scope().size(); ++b) {
+        const auto u = local(f.scope()[a]);
+        const auto w = local(f.scope()[b]);
+        if (!boost::edge(u, w, graph).second) boost::add_edge(u, w, graph);
       }
     }
   }
-  std::vector<char> gone(n, 0);
-  std::vector<variable_id> order;
-  order.reserve(eliminate.size());
-  std::sort(eliminate.begin(), eliminate.end());
-  while (!eliminate.empty()) {
-    std::size_t best = 0;
-    auto best_cost = std::make_pair(std::numeric_limits<std::size_t>::max(), std::numeric_limits<std::size_t>::max());
-    for (std::size_t c = 0; c < eliminate.size(); ++c) {
-      const auto v = index(eliminate[c]);
-      std::vector<std::size_t> neighbours;
-      for (std::size_t w = 0; w < n; ++w) {
-        if (!gone[w] && adjacent[v][w]) neighbours.push_back(w);
-      }
-      std::size_t fill = 0;
-      if (heuristic == elimination_heuristic::min_fill) {
-        for (std::size_t i = 0; i < neighbours.size(); ++i) {
-          for (std::size_t j = i + 1; j < neighbours.size(); ++j)
-            fill += adjacent[neighbours[i]][neighbours[j]] ? 0 : 1;
-        }
-      }
-      const auto cost = std::make_pair(fill, neighbours.size());
-      if (cost < best_cost) {
-        best_cost = cost;
-        best = c;
-      }
-    }
-    const auto v = index(eliminate[best]);
-    for (std::size_t a = 0; a < n; ++a) {
-      if (gone[a] || !adjacent[v][a]) continue;
-      for (std::size_t b = 0; b < n; ++b) {
-        if (b != a && !gone[b] && adjacent[v][b]) adjacent[a][b] = 1;
-      }
-    }
-    gone[v] = 1;
-    order.push_back(eliminate[best]);
-    eliminate.erase(eliminate.begin() + static_cast<std::ptrdiff_t>(best));
+  std::unique_ptr<bool[]> flags(new bool[nodes.size()]());
+  for (auto id : eliminate) flags[local(id)] = true;
+  const auto order =
+      greedy_elimination(graph, cards, heuristic, std::span<const bool>(flags.get(), nodes.size())).order;
+  std::vector<variable_id> result;
+  result.reserve(order.size());
+  for (auto v : order) result.push_back(nodes[v]);
+  return result;
+}
+
+/// The unnormalized joint of `query` (in that order) with the evidence, in semiring S; its
+/// ⊕-total is P(evidence) for sum-product. Query and evidence variables must be distinct.
+template <Semiring S, class TableOf>
+[[nodiscard]] factor_of<S> joint_in(const bayesian_network& network, std::span<const variable_id> query,
+                                    const evidence_set& observed, elimination_heuristic heuristic, TableOf&& table_of) {
+  std::vector<variable_id> eliminate;
+  auto factors = detail::evidence_factors<S>(network, query, observed, eliminate, table_of);
+  for (auto variable : elimination_order(factors, std::move(eliminate), heuristic)) {
+    static_cast<void>(detail::eliminate_one<S>(factors, variable));
   }
-  return order;
+  return detail::product_over<S>(factors, query, network);
+}
+
+template <Semiring S>
+[[nodiscard]] factor_of<S> joint_in(const bayesian_network& network, std::span<const variable_id> query,
+                                    const evidence_set& observed,
+                                    elimination_heuristic heuristic = elimination_heuristic::min_fill) {
+  return joint_in<S>(network, query, observed, heuristic, [&](variable_id node) {
+    return std::make_shared<const factor_of<S>>(detail::table_factor<S>(network, node));
+  });
 }
 
 /// The unnormalized P(query, evidence) over `query` in the order given; its sum is P(evidence).
@@ -163,85 +232,152 @@ namespace detail {
 [[nodiscard]] inline factor joint_with_evidence(const bayesian_network& network, std::span<const variable_id> query,
                                                 std::span<const observation> observed,
                                                 elimination_heuristic heuristic = elimination_heuristic::min_fill) {
-  std::vector<variable_id> targets(query.begin(), query.end());
-  for (const auto& o : observed) targets.push_back(o.variable);
-  const auto relevant = detail::ancestral_set(network, targets);
+  evidence_set set;
+  set.hard.assign(observed.begin(), observed.end());
+  return joint_in<sum_product<double>>(network, query, set, heuristic);
+}
 
-  std::vector<std::ptrdiff_t> observed_state(network.size(), -1);
-  for (const auto& o : observed) observed_state[o.variable.value()] = static_cast<std::ptrdiff_t>(o.state.value());
+/// The most probable joint state of `variables` with the rest summed out (marginal MAP; the
+/// most probable explanation when `variables` are all the unobserved ones), in the max
+/// semiring Max, with Max's sum counterpart for the summing. Returns the states and the value
+/// max P(variables, evidence). Ties: the lowest state of each variable, settled from the last
+/// eliminated back.
+template <Semiring Max, class TableOf>
+requires(Max::idempotent) [[nodiscard]] std::pair<std::vector<std::size_t>, typename Max::value_type> maximum_in(
+    const bayesian_network& network, std::span<const variable_id> variables, const evidence_set& observed,
+    elimination_heuristic heuristic, TableOf&& table_of) {
+  // The sums run in the same representation as the maxima: probabilities or logarithms.
+  using Sum = std::conditional_t<stores_logarithms<Max>, log_sum_product<typename Max::value_type>,
+                                 sum_product<typename Max::value_type>>;
+  std::vector<variable_id> summed;
+  auto factors = detail::evidence_factors<Max>(network, variables, observed, summed, table_of);
+  for (auto variable : elimination_order(factors, std::move(summed), heuristic)) {
+    static_cast<void>(detail::eliminate_one<Sum>(factors, variable));
+  }
+  const std::vector<variable_id> maximized(variables.begin(), variables.end());
+  const auto order = elimination_order(factors, maximized, heuristic);
+  std::vector<detail::shared_factor<Max>> buckets;
+  buckets.reserve(order.size());
+  for (auto variable : order) buckets.push_back(detail::eliminate_one<Max>(factors, variable));
+  auto value = Max::one();
+  for (const auto& f : factors) value = Max::times(value, total_of<Max>(*f));
 
-  std::vector<factor> factors;
-  std::vector<variable_id> eliminate;
-  for (std::size_t i = 0; i < network.size(); ++i) {
-    if (!relevant[i]) continue;
-    const variable_id node(static_cast<variable_id::rep>(i));
-    const auto parents = network.graph().parents(node);
-    factor f = factor::from_cpt(network.table(node), node, parents);
-    const auto scope = f.scope();  // a copy: reducing replaces f
+  std::vector<std::size_t> state_of(network.size(), 0);
+  for (std::size_t k = order.size(); k-- > 0;) {
+    auto bucket = *buckets[k];
+    const auto scope = bucket.scope();
     for (auto id : scope) {
-      if (observed_state[id.value()] >= 0) f = f.reduce(id, static_cast<std::size_t>(observed_state[id.value()]));
+      if (id != order[k]) bucket = bucket.reduce(id, state_of[id.value()]);
     }
-    factors.push_back(std::move(f));
-    const bool queried = std::find(query.begin(), query.end(), node) != query.end();
-    if (!queried && observed_state[i] < 0) eliminate.push_back(node);
+    const auto values = bucket.values();
+    state_of[order[k].value()] =
+        static_cast<std::size_t>(std::max_element(values.begin(), values.end()) - values.begin());
+  }
+  std::vector<std::size_t> states;
+  states.reserve(variables.size());
+  for (auto id : variables) states.push_back(state_of[id.value()]);
+  return {std::move(states), value};
+}
+
+template <Semiring Max>
+requires(Max::idempotent) [[nodiscard]] std::pair<std::vector<std::size_t>, typename Max::value_type> maximum_in(
+    const bayesian_network& network, std::span<const variable_id> variables, const evidence_set& observed,
+    elimination_heuristic heuristic = elimination_heuristic::min_fill) {
+  return maximum_in<Max>(network, variables, observed, heuristic, [&](variable_id node) {
+    return std::make_shared<const factor_of<Max>>(detail::table_factor<Max>(network, node));
+  });
+}
+
+struct variable_elimination_options {
+  elimination_heuristic heuristic = elimination_heuristic::min_fill;
+};
+
+/// The variable elimination engine: holds the network and the evidence; every query eliminates
+/// afresh. `network` must outlive the engine.
+class variable_elimination {
+ public:
+  explicit variable_elimination(const bayesian_network& network, variable_elimination_options options = {})
+      : network_(&network), options_(options) {}
+
+  static constexpr bool handles_interventions = true;
+  [[nodiscard]] std::string_view name() const noexcept { return "ve"; }
+  [[nodiscard]] const bayesian_network& network() const noexcept { return *network_; }
+  [[nodiscard]] const evidence_set& evidence() const noexcept { return evidence_; }
+  void set_evidence(evidence_set observed) { evidence_ = std::move(observed); }
+
+  /// P(query | evidence), `query` in the order wanted.
+  [[nodiscard]] posterior joint(std::span<const variable_id> query) const {
+    return detail::exact_posterior(*network_, query, evidence_, std::string(name()), [&]<Semiring S>() {
+      return joint_in<S>(*network_, query, evidence_, options_.heuristic, tables<S>());
+    });
   }
 
-  for (auto variable : elimination_order(factors, std::move(eliminate), heuristic)) {
-    factor product;
-    std::vector<factor> rest;
-    rest.reserve(factors.size());
-    for (auto& f : factors) {
-      if (f.contains(variable)) {
-        product = product * f;
-      } else {
-        rest.push_back(std::move(f));
+  [[nodiscard]] double log_probability_of_evidence() const {
+    return detail::exact_log_evidence([&]<Semiring S>() {
+      return total_of<S>(joint_in<S>(*network_, {}, evidence_, options_.heuristic, tables<S>()));
+    });
+  }
+
+  /// The most probable joint state of `variables` (every unobserved variable when empty) given
+  /// the evidence, the others summed out.
+  [[nodiscard]] mpe_result mpe(std::span<const variable_id> variables = {}) const {
+    const auto chosen = variables.empty() ? unobserved() : std::vector<variable_id>(variables.begin(), variables.end());
+    const double log_evidence = log_probability_of_evidence();
+    return detail::exact_mpe(*network_, chosen, evidence_, log_evidence, std::string(name()), [&]<Semiring S>() {
+      return maximum_in<S>(*network_, chosen, evidence_, options_.heuristic, tables<S>());
+    });
+  }
+
+ private:
+  [[nodiscard]] std::vector<variable_id> unobserved() const {
+    std::vector<variable_id> ids;
+    for (std::size_t i = 0; i < network_->size(); ++i) {
+      const variable_id id(static_cast<variable_id::rep>(i));
+      if (!evidence_.fixes(id)) ids.push_back(id);
+    }
+    return ids;
+  }
+
+  /// Every node's table as a factor in S, made once per semiring on first use.
+  template <Semiring S>
+  [[nodiscard]] auto tables() const {
+    auto& kept = std::get<kept_tables<S>>(tables_).factors;
+    if (kept.empty()) {
+      for (std::size_t i = 0; i < network_->size(); ++i) {
+        kept.push_back(std::make_shared<const factor_of<S>>(
+            detail::table_factor<S>(*network_, variable_id(static_cast<variable_id::rep>(i)))));
       }
     }
-    rest.push_back(product.sum_out(variable));
-    factors = std::move(rest);
+    return [&kept](variable_id node) { return kept[node.value()]; };
   }
-  factor result;
-  for (const auto& f : factors) result = result * f;
-  return result.permuted(query);
-}
+
+  template <Semiring S>
+  struct kept_tables {
+    std::vector<detail::shared_factor<S>> factors;
+  };
+
+  const bayesian_network* network_;
+  variable_elimination_options options_;
+  evidence_set evidence_;
+  mutable std::tuple<kept_tables<sum_product<double>>, kept_tables<log_sum_product<double>>,
+                     kept_tables<max_product<double>>, kept_tables<log_max_product<double>>>
+      tables_;
+};
 
 /// P(query | evidence) by name. Throws model_error for an unknown variable or state, a
 /// variable asked twice or both asked and observed; impossible_evidence when P(evidence) = 0.
 [[nodiscard]] inline posterior query(const bayesian_network& network, std::span<const std::string> variables,
                                      const evidence& observed = {},
                                      elimination_heuristic heuristic = elimination_heuristic::min_fill) {
-  std::vector<variable_id> ids;
-  posterior result;
-  for (const auto& name : variables) {
-    const auto id = detail::node_of(network, name);
-    if (std::find(ids.begin(), ids.end(), id) != ids.end()) {
-      throw model_error("the query names '" + name + "' twice");
-    }
-    if (observed.contains(name)) {
-      throw model_error("'" + name + "' is both queried and observed");
-    }
-    ids.push_back(id);
-    result.variables.push_back(network.at(name));
-  }
-  std::vector<observation> codes;
-  for (const auto& [name, state] : observed) {
-    const auto id = detail::node_of(network, name);
-    codes.push_back({id, network.at(name).state(state)});
-  }
-  result.table = joint_with_evidence(network, ids, codes, heuristic);
-  result.evidence_probability = result.table.normalize();
-  if (!(result.evidence_probability > 0.0)) {
-    std::string text;
-    for (const auto& [name, state] : observed) text += (text.empty() ? "" : ", ") + name + "=" + state;
-    throw impossible_evidence("the evidence " + text + " has probability 0 under the network");
-  }
-  return result;
+  variable_elimination engine(network, {heuristic});
+  engine.set_evidence(resolve_evidence(network, observed));
+  return engine.joint(resolve_query(network, variables, engine.evidence()));
 }
 
 [[nodiscard]] inline posterior query(const bayesian_network& network, std::initializer_list<std::string> variables,
                                      const evidence& observed = {},
                                      elimination_heuristic heuristic = elimination_heuristic::min_fill) {
-  return query(network, std::span<const std::string>(variables.begin(), variables.size()), observed, heuristic);
+  return query(network, std::span<const std::string>(variables.begin(), variables.end()), observed, heuristic);
 }
 
 }  // namespace pgm

@@ -351,6 +351,25 @@ class bif_parser {
     return values;
   }
 
+  /// A table beyond max_table_cells whose variables are declared already (as they usually are)
+  /// is refused before its rows are read; the others are checked when the network is built.
+  void check_declared_cells(const probability_block& block) const {
+    const auto child = declared_.find(block.header.text);
+    if (child == declared_.end()) return;
+    std::vector<std::size_t> cards;
+    for (const auto& parent : block.parents) {
+      const auto it = declared_.find(parent);
+      if (it == declared_.end()) return;
+      cards.push_back(it->second.var.cardinality());
+    }
+    try {
+      static_cast<void>(
+          checked_table_cells(block.header.text, child->second.var.cardinality(), mixed_radix(cards).size()));
+    } catch (const model_error& e) {
+      fail(block.where, e.what());
+    }
+  }
+
   void parse_probability() {
     expect_symbol('(');
     const auto child = expect_word("the variable's name");
@@ -367,6 +386,7 @@ class bif_parser {
     } else {
       expect_symbol(')');
     }
+    check_declared_cells(block);
     expect_symbol('{');
     while (!accept_symbol('}')) {
       const auto at = current_;

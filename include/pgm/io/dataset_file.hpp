@@ -20,6 +20,7 @@
 #include <bit>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -236,9 +237,10 @@ inline void write_dataset_file(const std::filesystem::path& path, const dataset&
       path, [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
 }
 
-/// Reads a dataset file; errors name it.
+/// Reads a dataset file; errors name it. Its size is not bounded: the file holds the data set
+/// it is read into (and its header's length and checksum are checked).
 [[nodiscard]] inline dataset_file_content read_dataset_file(const std::filesystem::path& path) {
-  return decode_dataset(detail::read_file(path), path.string());
+  return decode_dataset(detail::read_file(path, std::numeric_limits<std::uint64_t>::max()), path.string());
 }
 
 }  // namespace pgm

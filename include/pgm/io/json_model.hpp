@@ -25,6 +25,8 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
+#include "pgm/core/mixed_radix.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/discretizer.hpp"
 #include "pgm/detail/file.hpp"
@@ -92,6 +94,9 @@ inline nlohmann::json variable_to_json(const variable& v) {
   const detail::json_reader reader(source);
   const auto document = reader.parse(text);
   reader.check_format(document, "pgm-model");
+  // Free for people and tools: "metadata" (decide/decision_model.hpp reads its "success") and
+  // "learned" (how pgm learn-structure found the structure).
+  reader.only_keys(document, "", {"format", "version", "variables", "edges", "tables", "metadata", "learned"});
   std::vector<variable> variables;
   const auto& vars = reader.array(reader.member(document, "", "variables"), "/variables");
   for (std::size_t i = 0; i < vars.size(); ++i) {
@@ -122,18 +127,25 @@ inline nlohmann::json variable_to_json(const variable& v) {
     for (std::size_t i = 0; i < tables->size(); ++i) {
       const auto path = "/tables/" + std::to_string(i);
       const auto& entry = (*tables)[i];
+      reader.only_keys(entry, path, {"variable", "parents", "values"});
       const auto child = reader.string(reader.member(entry, path, "variable"), path + "/variable");
       const auto parent_names = reader.strings(reader.member(entry, path, "parents"), path + "/parents");
       const auto& rows = reader.array(reader.member(entry, path, "values"), path + "/values");
-      std::vector<double> values;
-      for (std::size_t u = 0; u < rows.size(); ++u) {
-        const auto row = reader.numbers(rows[u], path + "/values/" + std::to_string(u));
-        values.insert(values.end(), row.begin(), row.end());
-      }
       try {
         std::vector<variable> parents;
-        for (const auto& name : parent_names) parents.push_back(result.structure.at(name));
+        std::vector<std::size_t> cards;
+        for (const auto& name : parent_names) {
+          parents.push_back(result.structure.at(name));
+          cards.push_back(parents.back().cardinality());
+        }
         const auto& child_variable = result.structure.at(child);
+        // A table beyond pgm's limit is refused before its values are copied.
+        static_cast<void>(checked_table_cells(child, child_variable.cardinality(), mixed_radix(cards).size()));
+        std::vector<double> values;
+        for (std::size_t u = 0; u < rows.size(); ++u) {
+          const auto row = reader.numbers(rows[u], path + "/values/" + std::to_string(u));
+          values.insert(values.end(), row.begin(), row.end());
+        }
         if (rows.size() > 0 && rows[0].size() != child_variable.cardinality()) {
           reader.fail(path + "/values/0", "expected " + std::to_string(child_variable.cardinality()) +
                                               " probabilities, one per state of '" + child + "'");
@@ -176,6 +188,7 @@ inline void write_model_json(const nlohmann::json& document, const std::filesyst
   const detail::json_reader reader(source);
   const auto document = reader.parse(text);
   reader.check_format(document, "pgm-discretization");
+  reader.only_keys(document, "", {"format", "version", "variables"});
   discretization result;
   const auto& vars = reader.array(reader.member(document, "", "variables"), "/variables");
   for (std::size_t i = 0; i < vars.size(); ++i) {

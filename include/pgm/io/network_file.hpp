@@ -6,6 +6,7 @@
 /// so every command reads every format. docs/formats.md says what each format carries.
 
 #include <array>
+#include <cctype>
 #include <filesystem>
 #include <optional>
 #include <ostream>
@@ -18,6 +19,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/io/bif.hpp"
+#include "pgm/io/gzip.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/net.hpp"
 #include "pgm/io/read_options.hpp"
@@ -73,10 +75,20 @@ inline constexpr std::array<network_format_entry, 4> network_formats{{
   throw error("unknown network format '" + std::string(name) + "' (formats: " + detail::join(names) + ")");
 }
 
-/// The format a path's extension names (case-insensitive), or nothing.
-[[nodiscard]] inline std::optional<network_format> find_format_of(const std::filesystem::path& path) {
+namespace detail {
+
+/// A path's extension in lower case (".BIF" -> ".bif").
+[[nodiscard]] inline std::string lowercase_extension(const std::filesystem::path& path) {
   auto extension = path.extension().string();
   for (auto& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
+
+}  // namespace detail
+
+/// The format a path's extension names (case-insensitive), or nothing.
+[[nodiscard]] inline std::optional<network_format> find_format_of(const std::filesystem::path& path) {
+  const auto extension = detail::lowercase_extension(path);
   for (const auto& entry : detail::network_formats) {
     for (const auto known : entry.extensions) {
       if (!known.empty() && extension == known) return entry.format;
@@ -113,21 +125,43 @@ inline constexpr std::array<network_format_entry, 4> network_formats{{
   }
 }
 
-/// A model file of any format: a structure, with tables unless it is a JSON structure file
-/// (BIF, XMLBIF and NET files always hold tables).
+/// The format of a model file to read: its extension's, or for a compressed file (`.bif.gz`,
+/// `.xml.gz`, `.net.gz`, `.json.gz`) that of the name without `.gz`.
+[[nodiscard]] inline network_format format_to_read(const std::filesystem::path& path) {
+  const auto format = find_format_of(detail::lowercase_extension(path) == ".gz" ? path.stem() : path);
+  if (format) return *format;
+  throw io_error("'" + path.string() + "': not a network file; expected one of " +
+                 detail::join(network_file_extensions()) +
+                 " (BIF, XMLBIF, Hugin NET, pgm JSON), or one of them compressed with gzip (.bif.gz, ...)");
+}
+
+namespace detail {
+
+/// A model file's text, inflated when it is gzip data (known by its magic bytes, which a .gz
+/// name requires); compressed or not, at most max_file_bytes.
+[[nodiscard]] inline std::string read_model_text(const std::filesystem::path& path) {
+  auto bytes = read_file(path);
+  if (is_gzip(bytes) || lowercase_extension(path) == ".gz") return inflate_gzip(bytes, path.string(), max_file_bytes);
+  return bytes;
+}
+
+}  // namespace detail
+
+/// A model file of any format, compressed with gzip or not: a structure, with tables unless it
+/// is a JSON structure file (BIF, XMLBIF and NET files always hold tables).
 [[nodiscard]] inline model_document read_model(const std::filesystem::path& path,
                                                const network_read_options& options = {}) {
-  const auto format = format_of(path);
-  if (format == network_format::json) return read_model_json(path);
-  auto network = parse_network(detail::read_file(path), format, path.string(), options);
+  const auto format = format_to_read(path);
+  if (format == network_format::json) return parse_model_json(detail::read_model_text(path), path.string());
+  auto network = parse_network(detail::read_model_text(path), format, path.string(), options);
   return model_document{network.structure(), network.tables()};
 }
 
-/// A fitted network from a file of any supported format.
+/// A fitted network from a file of any supported format, compressed with gzip or not.
 [[nodiscard]] inline bayesian_network read_network(const std::filesystem::path& path,
                                                    const network_read_options& options = {}) {
-  const auto format = format_of(path);
-  return parse_network(detail::read_file(path), format, path.string(), options);
+  const auto format = format_to_read(path);
+  return parse_network(detail::read_model_text(path), format, path.string(), options);
 }
 
 struct network_write_options {

@@ -31,14 +31,14 @@ struct estimate_options {
 namespace detail {
 
 /// θ[x,u] = (α[x,u] + M[x,u]) / (α_u + M[u]) with α given cell by cell and α_u per column.
-template <class CellAlpha, class ColumnAlpha>
-std::vector<double> dirichlet_posterior_mean(const count_table& counts, CellAlpha cell_alpha, ColumnAlpha column_alpha,
-                                             const estimate_options& options) {
+template <class Count, class CellAlpha, class ColumnAlpha>
+std::vector<double> dirichlet_posterior_mean(const basic_count_table<Count>& counts, CellAlpha cell_alpha,
+                                             ColumnAlpha column_alpha, const estimate_options& options) {
   const std::size_t j = counts.child_cardinality();
   std::vector<double> values(counts.counts().size());
   for (std::size_t u = 0; u < counts.configurations(); ++u) {
     const auto column = counts.column(config_index(u));
-    std::uint64_t total = 0;
+    Count total = 0;
     for (auto c : column) total += c;
     const double denominator = column_alpha(u) + static_cast<double>(total);
     auto where = [&] {
@@ -71,13 +71,15 @@ std::vector<double> dirichlet_posterior_mean(const count_table& counts, CellAlph
   return values;
 }
 
-inline cpt<double> table_of(const count_table& counts, std::vector<double> values) {
+template <class Count>
+cpt<double> table_of(const basic_count_table<Count>& counts, std::vector<double> values) {
   return cpt<double>(counts.child(), counts.parents(), std::move(values));
 }
 
 /// Eq. 6 with explicit pseudo-counts α[x, u]; `who` prefixes error messages (names a user's prior).
-inline cpt<double> estimate_from_pseudo_counts(const count_table& counts, const std::vector<double>& alpha,
-                                               const std::string& who, const estimate_options& options) {
+template <class Count>
+cpt<double> estimate_from_pseudo_counts(const basic_count_table<Count>& counts, const std::vector<double>& alpha,
+                                        const std::string& who, const estimate_options& options) {
   if (alpha.size() != counts.counts().size()) {
     throw model_error(who + "the pseudo-counts of '" + counts.child().name() + "' need " +
                       std::to_string(counts.counts().size()) + " values, got " + std::to_string(alpha.size()));
@@ -94,7 +96,8 @@ inline cpt<double> estimate_from_pseudo_counts(const count_table& counts, const 
                               [&](std::size_t u) { return column_sums[u]; }, options));
 }
 
-inline void check_shape(const count_table& counts, const cpt<double>& prior) {
+template <class Count>
+void check_shape(const basic_count_table<Count>& counts, const cpt<double>& prior) {
   if (prior.child_cardinality() != counts.child_cardinality() || prior.parent_radix() != counts.parent_radix()) {
     throw model_error("the prior table of '" + prior.child().name() + "' (" +
                       std::to_string(prior.child_cardinality()) + " states × " +
@@ -106,16 +109,19 @@ inline void check_shape(const count_table& counts, const cpt<double>& prior) {
 
 }  // namespace detail
 
-/// Maximum likelihood, eq. 3: θ[x,u] = M[x,u] / M[u].
-[[nodiscard]] inline cpt<double> estimate_mle(const count_table& counts, const estimate_options& options = {}) {
+/// Maximum likelihood, eq. 3: θ[x,u] = M[x,u] / M[u]. The counts may be rows counted or the
+/// expected counts of EM.
+template <class Count>
+[[nodiscard]] cpt<double> estimate_mle(const basic_count_table<Count>& counts, const estimate_options& options = {}) {
   return detail::table_of(counts,
                           detail::dirichlet_posterior_mean(
                               counts, [](std::size_t) { return 0.0; }, [](std::size_t) { return 0.0; }, options));
 }
 
 /// The estimate under any parameter prior (eq. 6; eq. 7/8 for `weighted_prior`).
-[[nodiscard]] inline cpt<double> estimate(const count_table& counts, const parameter_prior& prior,
-                                          const estimate_options& options = {}) {
+template <class Count>
+[[nodiscard]] cpt<double> estimate(const basic_count_table<Count>& counts, const parameter_prior& prior,
+                                   const estimate_options& options = {}) {
   const double j = static_cast<double>(counts.child_cardinality());
   return std::visit(
       [&](const auto& p) -> cpt<double> {

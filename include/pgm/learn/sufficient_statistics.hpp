@@ -30,11 +30,16 @@
 namespace pgm {
 
 /// Counts M[x, u], laid out like a cpt: configuration major, the child's states contiguous.
-class count_table {
+/// `Count` is std::uint64_t for rows counted (`count_table`) and double for the expected counts
+/// of EM (`expected_count_table`, pgm/learn/expectation_maximization.hpp); the estimators take
+/// either.
+template <class Count>
+class basic_count_table {
  public:
-  using count_type = std::uint64_t;
+  using count_type = Count;
 
-  count_table(variable child, std::vector<variable> parents) : child_(std::move(child)), parents_(std::move(parents)) {
+  basic_count_table(variable child, std::vector<variable> parents)
+      : child_(std::move(child)), parents_(std::move(parents)) {
     std::vector<std::size_t> cards;
     for (const auto& p : parents_) cards.push_back(p.cardinality());
     radix_ = mixed_radix(std::move(cards));
@@ -72,7 +77,7 @@ class count_table {
 
   /// The same counts under other variables with the same numbers of states (the structure's
   /// own, say, which may carry intervals and tags). Throws model_error otherwise.
-  [[nodiscard]] count_table with_variables(variable child, std::vector<variable> parents) const {
+  [[nodiscard]] basic_count_table with_variables(variable child, std::vector<variable> parents) const {
     bool same_shape = child.cardinality() == child_.cardinality() && parents.size() == parents_.size();
     for (std::size_t k = 0; same_shape && k < parents.size(); ++k) {
       same_shape = parents[k].cardinality() == parents_[k].cardinality();
@@ -81,13 +86,13 @@ class count_table {
       throw model_error("the counts of '" + child_.name() + "' cannot be given the variables of '" + child.name() +
                         "' and its parents: the numbers of states differ");
     }
-    count_table result(std::move(child), std::move(parents));
+    basic_count_table result(std::move(child), std::move(parents));
     result.counts_ = counts_;
     return result;
   }
 
   /// Adds the counts of another table of the same family.
-  count_table& operator+=(const count_table& other) {
+  basic_count_table& operator+=(const basic_count_table& other) {
     if (other.child_ != child_ || other.parents_ != parents_) {
       throw model_error("cannot add the counts of '" + other.child_.name() + "' to those of '" + child_.name() +
                         "': the families differ");
@@ -96,7 +101,7 @@ class count_table {
     return *this;
   }
 
-  friend bool operator==(const count_table&, const count_table&) = default;
+  friend bool operator==(const basic_count_table&, const basic_count_table&) = default;
 
  private:
   variable child_;
@@ -104,6 +109,11 @@ class count_table {
   mixed_radix radix_;
   std::vector<count_type> counts_;
 };
+
+/// Rows counted.
+using count_table = basic_count_table<std::uint64_t>;
+/// Expected counts: sums of posterior probabilities over rows with missing values.
+using expected_count_table = basic_count_table<double>;
 
 struct count_options {
   /// Worker threads; 0 uses every hardware thread. The counts are the same for any number.

@@ -119,12 +119,12 @@ inline agreement_axis grid_axis(const task_definition& task, const std::string& 
       rest /= 3;
     }
   }
-  // Success counts per cell of one data set.
-  auto tally = [&](const dataset& data, bool reference) {
+  // Success counts per cell, added up over the blocks of one back-end's rows.
+  std::vector<double> hits(count), rows(count);
+  auto tally = [&](const dataset& data) {
     const auto& success = data.discrete(task.success);
     std::vector<std::span<const double>> columns;
     for (const auto& axis : table.axes) columns.push_back(data.continuous(axis.variable).values());
-    std::vector<double> hits(count, 0.0), rows(count, 0.0);
     for (std::size_t row = 0; row < data.rows(); ++row) {
       std::size_t c = 0;
       for (std::size_t i = 0; i < dims; ++i) {
@@ -135,6 +135,28 @@ inline agreement_axis grid_axis(const task_definition& task, const std::string& 
       rows[c] += 1;
       hits[c] += success.code(row);
     }
+  };
+  // The rows are simulated in blocks (the data of one run, simulate_options::first_row), so that
+  // memory stays that of a block however many rows are asked for.
+  constexpr std::size_t block_rows = std::size_t{1} << 18;
+  auto run = [&](const std::string& backend, std::size_t total_rows, bool reference) {
+    std::fill(hits.begin(), hits.end(), 0.0);
+    std::fill(rows.begin(), rows.end(), 0.0);
+    simulate_options o;
+    o.backend = backend;
+    o.seed = options.seed;
+    o.threads = options.threads;
+    const auto start = std::chrono::steady_clock::now();
+    for (std::size_t done = 0; done < total_rows; done += o.rows) {
+      o.first_row = done;
+      o.rows = std::min(block_rows, total_rows - done);
+      if (reference && options.progress) {
+        o.progress = [&options, done](std::size_t block_done) { options.progress(done + block_done); };
+      }
+      tally(simulate(task, o));
+    }
+    (reference ? table.reference_seconds : table.analytic_seconds) =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     double total = 0;
     for (std::size_t c = 0; c < count; ++c) {
       auto& cell = table.cells[c];
@@ -142,20 +164,7 @@ inline agreement_axis grid_axis(const task_definition& task, const std::string& 
       (reference ? cell.reference_rows : cell.analytic_rows) = static_cast<std::size_t>(rows[c]);
       (reference ? cell.reference_rate : cell.analytic_rate) = rows[c] > 0 ? hits[c] / rows[c] : 0.0;
     }
-    (reference ? table.reference_rate : table.analytic_rate) = total / static_cast<double>(data.rows());
-  };
-  auto run = [&](const std::string& backend, std::size_t rows, bool reference) {
-    simulate_options o;
-    o.backend = backend;
-    o.rows = rows;
-    o.seed = options.seed;
-    o.threads = options.threads;
-    if (reference) o.progress = options.progress;
-    const auto start = std::chrono::steady_clock::now();
-    const auto data = simulate(task, o);
-    (reference ? table.reference_seconds : table.analytic_seconds) =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    tally(data, reference);
+    (reference ? table.reference_rate : table.analytic_rate) = total / static_cast<double>(total_rows);
   };
   run(options.reference, options.reference_rows, true);
   run("analytic", options.analytic_rows, false);

@@ -40,6 +40,10 @@
 
 namespace pgm::sim {
 
+/// Experiments a calibration may fit to: the fit replays every one of them at each step, so
+/// all are kept in memory with their simulated data (docs/limits.md).
+inline constexpr std::size_t max_calibration_rows = 10'000'000;
+
 struct calibration_options {
   /// The reference back-end whose experiments are fitted.
   std::string reference = "bullet";
@@ -329,6 +333,11 @@ class dropping_likelihood {
 /// Simulates options.rows experiments of `task` on options.reference and fits to them.
 [[nodiscard]] inline calibration_result calibrate(const task_definition& task, const calibration_options& options) {
   if (options.rows == 0) throw data_error("calibrate needs at least one experiment (rows must be positive)");
+  if (options.rows > max_calibration_rows) {
+    throw data_error(std::to_string(options.rows) + " experiments are more than " +
+                     std::to_string(max_calibration_rows) +
+                     ", pgm's limit of a calibration (its fit keeps every experiment in memory; docs/limits.md)");
+  }
   simulate_options o;
   o.backend = options.reference;
   o.rows = options.rows;

@@ -2,7 +2,7 @@
 /// \file
 /// `run_experiments`: the driver every back-end shares. It samples each experiment's inputs
 /// from the task's distributions, lets a Simulator compute the outcomes, and assembles the
-/// columns. Experiment i always uses the streams keyed by (seed, i) and writes row i, and rows
+/// columns. Experiment i always uses the streams keyed by (seed, first_row + i) and writes row i, and rows
 /// are spread over threads in chunks (pgm/detail/parallel_for.hpp), so the result is
 /// byte-identical for any thread count. With `across_processes`, each process runs its block of
 /// rows and process 0 gathers them (pgm::detail::parallel_for_on, gather_slots): the same data
@@ -60,8 +60,8 @@ template <Simulator S>
       },
       [&](worker& w, pgm::detail::item_range items) {
         for (std::size_t row = items.begin; row < items.end; ++row) {
-          sample_inputs(task, options.seed, row, w.values);
-          random_stream noise(options.seed, row, stream_purpose::noise);
+          sample_inputs(task, options.seed, options.first_row + row, w.values);
+          random_stream noise(options.seed, options.first_row + row, stream_purpose::noise);
           w.simulator->run(std::span<double>(w.values), noise);
           for (std::size_t k = 0; k < width; ++k) columns[k][row] = w.values[k];
         }

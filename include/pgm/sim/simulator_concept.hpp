@@ -50,6 +50,10 @@ struct simulate_options {
   /// Experiment i draws from streams keyed by (seed, i): the same seed gives the same data
   /// whatever `threads` is.
   std::uint64_t seed = 0;
+  /// The index of the first experiment: the run makes experiments first_row, …, first_row +
+  /// rows − 1 of its seed, so that a long run made in blocks (`pgm simulate` writes its rows as
+  /// they come) gives the same data as in one piece.
+  std::uint64_t first_row = 0;
   /// Worker threads; 0 uses every hardware thread.
   unsigned threads = 0;
   /// Called now and then with the number of experiments finished so far: one call at a time

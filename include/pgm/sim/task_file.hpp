@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "pgm/core/dag.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/detail/file.hpp"
@@ -38,6 +39,10 @@ class task_reader : public pgm::detail::json_reader {
     if (format != "pgm-task") fail("/format", "expected \"pgm-task\", found \"" + format + "\"");
     const auto version = number(member(doc, "", "version"), "/version");
     if (version != 1) fail("/version", "version " + pgm::detail::format_double(version) + " is not supported (1 is)");
+    // sample_sizes: free, for people (the paper's sizes of a reality task).
+    only_keys(doc, "",
+              {"format", "version", "name", "variant", "description", "note", "sample_sizes", "variables", "success",
+               "structure", "physics"});
     task.name = string(member(doc, "", "name"), "/name");
     task.variant = optional_string(doc, "variant", "/variant", "sim");
     if (task.variant != "sim" && task.variant != "reality") fail("/variant", "expected \"sim\" or \"reality\"");
@@ -57,6 +62,10 @@ class task_reader : public pgm::detail::json_reader {
       fail("/success", "'" + task.success + "' is not an outcome variable of the task");
     }
     const auto edges = strings(member(doc, "", "structure"), "/structure");
+    // The known causal structure is a DAG: an edge that closes a cycle is refused, naming it.
+    std::vector<std::string> names;
+    for (const auto& v : task.variables) names.push_back(v.name);
+    dag graph(names);
     for (std::size_t i = 0; i < edges.size(); ++i) {
       const auto where = "/structure/" + std::to_string(i);
       std::vector<named_edge> parsed;
@@ -68,6 +77,14 @@ class task_reader : public pgm::detail::json_reader {
       for (const auto& e : parsed) {
         for (const auto* end : {&e.from, &e.to}) {
           if (!task.contains(*end)) fail(where, "'" + *end + "' is not a variable of the task");
+        }
+        try {
+          graph.add_edge(e.from, e.to);
+        } catch (const not_a_dag& cycle) {
+          fail(where, "the structure is not a DAG: " + e.from + " -> " + e.to + " closes the cycle " +
+                          pgm::detail::join(cycle.cycle(), " -> "));
+        } catch (const model_error& problem) {
+          fail(where, problem.what());
         }
         task.structure.push_back(e);
       }
@@ -107,6 +124,8 @@ class task_reader : public pgm::detail::json_reader {
   task_variable read_task_variable(const nlohmann::json& value, const std::string& path) const {
     task_variable v;
     if (!value.is_object()) fail(path, "expected an object");
+    only_keys(value, path,
+              {"name", "kind", "quantity", "unit", "role", "controllable", "description", "states", "distribution"});
     v.name = string(member(value, path, "name"), path + "/name");
     const auto kind = string(member(value, path, "kind"), path + "/kind");
     if (kind == "continuous") {
@@ -154,22 +173,26 @@ class task_reader : public pgm::detail::json_reader {
     const auto inf = std::numeric_limits<double>::infinity();
     if (v.kind == variable_kind::categorical) {
       if (type != "categorical") fail(path + "/type", "a categorical variable is sampled from \"categorical\"");
+      only_keys(value, path, {"type"});
       d.kind = distribution_kind::categorical;
       d.states = v.states.size();
       return d;
     }
     if (type == "normal") {
       d.kind = distribution_kind::normal;
+      only_keys(value, path, {"type", "mean", "sd", "min", "max"});
       d.location = number(member(value, path, "mean"), path + "/mean");
       d.scale = positive(value, "sd", path);
       d.min = optional_number(value, "min", path, -inf);
       d.max = optional_number(value, "max", path, inf);
     } else if (type == "uniform") {
       d.kind = distribution_kind::uniform;
+      only_keys(value, path, {"type", "min", "max"});
       d.min = number(member(value, path, "min"), path + "/min");
       d.max = number(member(value, path, "max"), path + "/max");
     } else if (type == "lognormal") {
       d.kind = distribution_kind::lognormal;
+      only_keys(value, path, {"type", "mu", "sigma", "shift", "max"});
       d.location = number(member(value, path, "mu"), path + "/mu");
       d.scale = positive(value, "sigma", path);
       d.shift = optional_number(value, "shift", path, 0.0);
@@ -177,10 +200,12 @@ class task_reader : public pgm::detail::json_reader {
       d.max = optional_number(value, "max", path, inf);
     } else if (type == "grid") {
       d.kind = distribution_kind::grid;
+      only_keys(value, path, {"type", "values"});
       d.values = numbers(member(value, path, "values"), path + "/values");
       if (d.values.empty()) fail(path + "/values", "a grid needs at least one value");
     } else if (type == "constant") {
       d.kind = distribution_kind::constant;
+      only_keys(value, path, {"type", "value"});
       d.values = {number(member(value, path, "value"), path + "/value")};
     } else {
       fail(path + "/type",
@@ -211,6 +236,9 @@ class task_reader : public pgm::detail::json_reader {
     if (!value.is_object()) fail(path, "expected an object");
     const auto model = string(member(value, path, "model"), path + "/model");
     if (model == "stacking") {
+      only_keys(value, path,
+                {"model", "cube_size", "support_margin", "release_noise", "friction", "restitution", "cube_mass",
+                 "time_step", "analytic"});
       stacking_physics p;
       p.cubes = 0;
       while (task.contains("onTop" + std::to_string(p.cubes + 1))) ++p.cubes;
@@ -224,6 +252,7 @@ class task_reader : public pgm::detail::json_reader {
       p.support_margin = non_negative(value, "support_margin", path, 0.0);
       if (!(p.support_margin < p.cube_size / 2)) fail(path + "/support_margin", "must be below half the cube size");
       const auto& noise = member(value, path, "release_noise");
+      only_keys(noise, path + "/release_noise", {"base", "per_cm_drop"});
       p.noise_base = positive(noise, "base", path + "/release_noise");
       p.noise_per_cm = non_negative(noise, "per_cm_drop", path + "/release_noise", 0.0);
       p.friction = non_negative(value, "friction", path, p.friction);
@@ -233,9 +262,12 @@ class task_reader : public pgm::detail::json_reader {
       if (const auto* analytic = optional_member(value, "analytic")) {
         const auto at = path + "/analytic";
         if (!analytic->is_object()) fail(at, "expected an object");
+        // note: how pgm calibrate fitted the constants.
+        only_keys(*analytic, at, {"tipping_margin", "settle_noise", "note"});
         auto pair = [&](const char* key, double& first, double& later) {
           if (const auto* v = optional_member(*analytic, key)) {
             if (!v->is_object()) fail(at + "/" + key, "expected an object with \"first\" and \"later\"");
+            only_keys(*v, at + "/" + key, {"first", "later"});
             first = non_negative(*v, "first", at + "/" + key, first);
             later = non_negative(*v, "later", at + "/" + key, later);
           }
@@ -255,6 +287,11 @@ class task_reader : public pgm::detail::json_reader {
     if (model == "dropping") {
       for (const auto* name : {"xOff", "yOff", "scalingFactor"}) require(task, name, variable_kind::continuous, model);
       require(task, "inside", variable_kind::outcome, model);
+      // bounce_out and rim_catch are known to be refused with the reason below.
+      only_keys(value, path,
+                {"model", "container", "sphere_diameter", "drop_height", "diameter_at_scale_1", "height_at_scale_1",
+                 "floor_fraction", "landing_noise", "bounce_out", "rim_catch", "friction", "restitution", "sphere_mass",
+                 "time_step", "analytic"});
       dropping_physics p;
       p.container = string(member(value, path, "container"), path + "/container");
       p.sphere_diameter = positive(value, "sphere_diameter", path);
@@ -280,6 +317,7 @@ class task_reader : public pgm::detail::json_reader {
       if (const auto* analytic = optional_member(value, "analytic")) {
         const auto at = path + "/analytic";
         if (!analytic->is_object()) fail(at, "expected an object");
+        only_keys(*analytic, at, {"restitution", "tangential", "scatter", "rim_clearance", "note"});
         p.impact_restitution = non_negative(*analytic, "restitution", at, p.impact_restitution);
         p.impact_tangential = non_negative(*analytic, "tangential", at, p.impact_tangential);
         p.landing_scatter = non_negative(*analytic, "scatter", at, p.landing_scatter);

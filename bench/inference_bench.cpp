@@ -1,0 +1,283 @@
+// The inference engines on the published networks (tests/data/networks), model loaded and
+// engine compiled outside the timed loop: one query under 0–3 observed variables (a fixed,
+// seeded mix drawn once), do-queries beside the same queries on the mutilated network, every
+// marginal under ten observations, the most probable explanation, and likelihood weighting;
+// each beside the simple approach — variable elimination afresh per query, or per variable for
+// all marginals. Each check after the loop compares the answers with variable elimination.
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "pgm/causal/intervention.hpp"
+#include "pgm/inference/engine_registry.hpp"
+#include "pgm/io/bif.hpp"
+
+namespace {
+
+const std::vector<std::string> networks = {"asia", "child", "insurance", "alarm", "hailfinder", "pathfinder"};
+
+const pgm::bayesian_network& network(std::size_t index) {
+  static std::map<std::size_t, pgm::bayesian_network> loaded;
+  auto it = loaded.find(index);
+  if (it == loaded.end()) {
+    const auto path = std::filesystem::path(PGM_NETWORKS_DIR) / (networks[index] + ".bif");
+    it = loaded.emplace(index, pgm::read_bif(path)).first;
+  }
+  return it->second;
+}
+
+struct single_query {
+  pgm::variable_id query;
+  pgm::evidence_set observed;
+};
+
+/// 256 queries of one variable, a quarter each under 0, 1, 2 and 3 observed variables, drawn
+/// by a fixed seed and kept only where the evidence is possible.
+const std::vector<single_query>& query_mix(std::size_t index) {
+  static std::map<std::size_t, std::vector<single_query>> mixes;
+  auto it = mixes.find(index);
+  if (it != mixes.end()) return it->second;
+  const auto& net = network(index);
+  std::mt19937_64 random(7);
+  pgm::variable_elimination ve(net);
+  std::vector<single_query> mix;
+  while (mix.size() < 256) {
+    single_query q;
+    q.query = pgm::variable_id(static_cast<pgm::variable_id::rep>(random() % net.size()));
+    const auto observed = mix.size() % 4;
+    while (q.observed.hard.size() < observed) {
+      const pgm::variable_id v(static_cast<pgm::variable_id::rep>(random() % net.size()));
+      if (v == q.query || q.observed.fixes(v)) continue;
+      const auto states = net.variables()[v.value()].cardinality();
+      q.observed.hard.push_back({v, pgm::state_index(static_cast<pgm::state_index::rep>(random() % states))});
+    }
+    ve.set_evidence(q.observed);
+    try {
+      const pgm::variable_id one[] = {q.query};
+      static_cast<void>(ve.joint(one));
+      mix.push_back(std::move(q));
+    } catch (const pgm::impossible_evidence&) {
+    }
+  }
+  return mixes.emplace(index, std::move(mix)).first->second;
+}
+
+void check_against_elimination(benchmark::State& state, pgm::any_inference_engine& engine, std::size_t index) {
+  pgm::variable_elimination ve(network(index));
+  for (const auto& q : query_mix(index)) {
+    const pgm::variable_id one[] = {q.query};
+    engine.set_evidence(q.observed);
+    ve.set_evidence(q.observed);
+    const auto a = engine.joint(one);
+    const auto b = ve.joint(one);
+    for (std::size_t k = 0; k < a.table.size(); ++k) {
+      if (std::abs(a.table.values()[k] - b.table.values()[k]) > 1e-12) {
+        state.SkipWithError("an answer differs from variable elimination's");
+        return;
+      }
+    }
+  }
+}
+
+// range(0): the network; the engine by name in the benchmark's name.
+void single_queries(benchmark::State& state, const char* engine_name) {
+  const auto index = static_cast<std::size_t>(state.range(0));
+  auto engine = pgm::make_engine(engine_name, network(index));
+  const auto& mix = query_mix(index);
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const auto& q = mix[next++ % mix.size()];
+    engine.set_evidence(q.observed);
+    const pgm::variable_id one[] = {q.query};
+    benchmark::DoNotOptimize(engine.joint(one));
+  }
+  state.SetLabel(networks[index]);
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+  check_against_elimination(state, engine, index);
+}
+BENCHMARK_CAPTURE(single_queries, jt, "jt")->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(single_queries, ve, "ve")->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
+
+/// do(X = first state) for the variable with the most parents (the first such), and the
+/// query mix without X, kept where its evidence stays possible under the intervention.
+struct do_mix {
+  pgm::observation set;
+  std::vector<single_query> queries;
+};
+
+const do_mix& intervention_mix(std::size_t index) {
+  static std::map<std::size_t, do_mix> mixes;
+  auto it = mixes.find(index);
+  if (it != mixes.end()) return it->second;
+  const auto& net = network(index);
+  do_mix mix;
+  std::size_t most = 0;
+  for (std::size_t v = 0; v < net.size(); ++v) {
+    const pgm::variable_id id(static_cast<pgm::variable_id::rep>(v));
+    if (net.graph().parents(id).size() > most) {
+      most = net.graph().parents(id).size();
+      mix.set = {id, pgm::state_index(0)};
+    }
+  }
+  pgm::variable_elimination ve(net);
+  for (auto q : query_mix(index)) {
+    if (q.query == mix.set.variable || q.observed.fixes(mix.set.variable)) continue;
+    q.observed.intervened = {mix.set};
+    ve.set_evidence(q.observed);
+    if (std::isfinite(ve.log_probability_of_evidence())) mix.queries.push_back(std::move(q));
+  }
+  return mixes.emplace(index, std::move(mix)).first->second;
+}
+
+// A do-query against the same query on the mutilated network, compiled once
+// (pgm::intervene): the surgery is a view, so the first should cost no more than the second.
+void do_queries(benchmark::State& state, const char* engine_name, bool on_mutilated) {
+  const auto index = static_cast<std::size_t>(state.range(0));
+  const auto& mix = intervention_mix(index);
+  const auto& net = network(index);
+  const auto& x = net.variables()[mix.set.variable.value()];
+  const auto mutilated = pgm::intervene(net, {{x.name(), x.states()[mix.set.state.value()]}});
+  auto engine = pgm::make_engine(engine_name, on_mutilated ? mutilated : net);
+  auto plain = [&](pgm::evidence_set e) {
+    if (on_mutilated) e.intervened.clear();
+    return e;
+  };
+  std::size_t next = 0;
+  for (auto _ : state) {
+    const auto& q = mix.queries[next++ % mix.queries.size()];
+    engine.set_evidence(plain(q.observed));
+    const pgm::variable_id one[] = {q.query};
+    benchmark::DoNotOptimize(engine.joint(one));
+  }
+  state.SetLabel(networks[index] + ", do(" + x.name() + ")");
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations()));
+  pgm::variable_elimination check(mutilated);
+  for (const auto& q : mix.queries) {
+    const pgm::variable_id one[] = {q.query};
+    engine.set_evidence(plain(q.observed));
+    auto e = q.observed;
+    e.intervened.clear();
+    check.set_evidence(e);
+    const auto a = engine.joint(one);
+    const auto b = check.joint(one);
+    for (std::size_t k = 0; k < a.table.size(); ++k) {
+      if (std::abs(a.table.values()[k] - b.table.values()[k]) > 1e-12) {
+        state.SkipWithError("a do-query differs from the query on the mutilated network");
+        return;
+      }
+    }
+  }
+}
+BENCHMARK_CAPTURE(do_queries, jt, "jt", false)->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(do_queries, jt_on_mutilated, "jt", true)->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(do_queries, ve, "ve", false)->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(do_queries, ve_on_mutilated, "ve", true)->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
+
+/// Ten observations spread over the network (the first state of every tenth variable; a
+/// quarter of the variables for a small network), each kept only where the evidence stays possible.
+pgm::evidence_set ten_observations(std::size_t index) {
+  const auto& net = network(index);
+  pgm::variable_elimination ve(net);
+  pgm::evidence_set observed;
+  const auto wanted = std::min<std::size_t>(10, net.size() / 4);
+  for (std::size_t v = 0; v < net.size() && observed.hard.size() < wanted; v += 1 + net.size() / 10) {
+    auto trial = observed;
+    trial.hard.push_back({pgm::variable_id(static_cast<pgm::variable_id::rep>(v)), pgm::state_index(0)});
+    ve.set_evidence(trial);
+    if (std::isfinite(ve.log_probability_of_evidence())) observed = std::move(trial);
+  }
+  return observed;
+}
+
+std::vector<pgm::variable_id> unobserved(std::size_t index, const pgm::evidence_set& observed) {
+  std::vector<pgm::variable_id> ids;
+  for (std::size_t v = 0; v < network(index).size(); ++v) {
+    const pgm::variable_id id(static_cast<pgm::variable_id::rep>(v));
+    if (!observed.fixes(id)) ids.push_back(id);
+  }
+  return ids;
+}
+
+// Every marginal under ten observations: one propagation (set_evidence retracts and enters
+// the evidence anew each time, so nothing is kept from the last iteration).
+void all_marginals_jt(benchmark::State& state) {
+  const auto index = static_cast<std::size_t>(state.range(0));
+  pgm::junction_tree_engine jt(network(index));
+  const auto observed = ten_observations(index);
+  const auto free = unobserved(index, observed);
+  for (auto _ : state) {
+    jt.set_evidence({});
+    benchmark::DoNotOptimize(jt.log_probability_of_evidence());
+    jt.set_evidence(observed);
+    benchmark::DoNotOptimize(jt.marginals(free));
+  }
+  state.SetLabel(networks[index] + ", " + std::to_string(free.size()) + " marginals");
+}
+BENCHMARK(all_marginals_jt)->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
+
+// The simple approach: variable elimination once per variable.
+void all_marginals_ve(benchmark::State& state) {
+  const auto index = static_cast<std::size_t>(state.range(0));
+  pgm::variable_elimination ve(network(index));
+  const auto observed = ten_observations(index);
+  const auto free = unobserved(index, observed);
+  ve.set_evidence(observed);
+  for (auto _ : state) {
+    for (auto id : free) {
+      const pgm::variable_id one[] = {id};
+      benchmark::DoNotOptimize(ve.joint(one));
+    }
+  }
+  state.SetLabel(networks[index] + ", " + std::to_string(free.size()) + " marginals");
+}
+BENCHMARK(all_marginals_ve)->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
+
+// The most probable explanation with no evidence, by max-product on the tree and by variable
+// elimination with traceback.
+void mpe(benchmark::State& state, const char* engine_name) {
+  const auto index = static_cast<std::size_t>(state.range(0));
+  auto engine = pgm::make_engine(engine_name, network(index));
+  for (auto _ : state) {
+    engine.set_evidence({});
+    benchmark::DoNotOptimize(engine.mpe({}));
+  }
+  state.SetLabel(networks[index]);
+  pgm::variable_elimination ve(network(index));
+  const auto a = engine.mpe({});
+  const auto b = ve.mpe({});
+  if (std::abs(a.log_joint_probability - b.log_joint_probability) > 1e-9) {
+    state.SkipWithError("the most probable explanation differs from variable elimination's");
+  }
+}
+BENCHMARK_CAPTURE(mpe, jt, "jt")->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(mpe, ve, "ve")->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
+
+// Likelihood weighting: every marginal under two observations, 10^5 samples, in samples/s.
+void likelihood_weighting_samples(benchmark::State& state) {
+  const auto index = static_cast<std::size_t>(state.range(0));
+  const auto threads = static_cast<unsigned>(state.range(1));
+  pgm::likelihood_weighting lw(network(index), {.samples = 100'000, .seed = 1, .threads = threads});
+  auto observed = ten_observations(index);
+  observed.hard.resize(std::min<std::size_t>(2, observed.hard.size()));
+  lw.set_evidence(observed);
+  const auto free = unobserved(index, observed);
+  for (auto _ : state) benchmark::DoNotOptimize(lw.marginals(free));
+  state.SetLabel(networks[index] + ", " + std::to_string(threads) + " thread(s)");
+  state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * 100'000));
+}
+BENCHMARK(likelihood_weighting_samples)
+    ->Args({3, 1})
+    ->Args({3, 2})
+    ->Args({5, 1})
+    ->Args({5, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->UseRealTime();
+
+}  // namespace

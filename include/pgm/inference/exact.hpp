@@ -1,0 +1,127 @@
+#pragma once
+/// \file
+/// What the exact engines share: turning an unnormalized joint into a `posterior`, in
+/// probabilities when P(evidence) is a normal double and in logarithms when it underflows, and
+/// the same for the most probable explanation. Each engine supplies one computation generic
+/// over the semiring; these run it in the semiring that fits.
+
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pgm/core/bayesian_network.hpp"
+#include "pgm/inference/factor.hpp"
+#include "pgm/inference/query.hpp"
+#include "pgm/inference/semiring.hpp"
+
+namespace pgm::detail {
+
+/// A column of a table whose sum is off 1 by more than this is read as the distribution it
+/// rounds: divided by its sum. Published files print 4 to 6 digits, so their columns miss 1 by
+/// up to 1e-6; inference assumes they sum to 1 (a barren node is left out because it sums to
+/// 1), and reading each column as its distribution makes every engine, and leaving barren
+/// nodes out, exact. Tables that sum to 1 within rounding of the last bits are used as they are.
+inline constexpr double column_sum_slack = 1e-12;
+
+/// The table of `node` as a factor over (its parents…, node) in semiring S, each column read as
+/// a distribution (see column_sum_slack).
+template <Semiring S>
+[[nodiscard]] factor_of<S> table_factor(const bayesian_network& network, variable_id node) {
+  const auto& table = network.table(node);
+  const auto j = table.child_cardinality();
+  std::vector<double> probabilities(table.values().begin(), table.values().end());
+  for (std::size_t u = 0; u * j < probabilities.size(); ++u) {
+    double sum = 0.0;
+    for (std::size_t x = 0; x < j; ++x) sum += probabilities[u * j + x];
+    if (std::abs(sum - 1.0) > column_sum_slack && sum > 0.0) {
+      for (std::size_t x = 0; x < j; ++x) probabilities[u * j + x] /= sum;
+    }
+  }
+  std::vector<typename S::value_type> values;
+  values.reserve(probabilities.size());
+  for (double p : probabilities) values.push_back(S::from_probability(p));
+  auto scope = network.graph().parents(node);
+  scope.push_back(node);
+  std::vector<std::size_t> cards = table.parent_radix().radices();
+  cards.push_back(j);
+  return factor_of<S>(std::move(scope), std::move(cards), std::move(values));
+}
+
+/// Whether a probability computed in doubles can be trusted as it is: positive and not
+/// subnormal (a subnormal total has lost digits, so its ratios would be rough).
+[[nodiscard]] inline bool well_represented(double p) noexcept { return p >= std::numeric_limits<double>::min(); }
+
+/// P(query | evidence) from `joint_in<S>()`, an unnormalized joint over `query` computed in
+/// semiring S: first with sum_product, then, when its total underflows, with log_sum_product.
+/// Throws impossible_evidence when the evidence has probability 0.
+template <class JointIn>
+[[nodiscard]] posterior exact_posterior(const bayesian_network& network, std::span<const variable_id> query,
+                                        const evidence_set& observed, std::string engine, JointIn&& joint_in) {
+  posterior result;
+  result.engine = std::move(engine);
+  for (auto id : query) result.variables.push_back(network.variables()[id.value()]);
+  auto joint = joint_in.template operator()<sum_product<double>>();
+  const double total = joint.sum();
+  if (well_represented(total)) {
+    joint.normalize();
+    result.table = std::move(joint);
+    result.evidence_probability = total;
+    result.log_evidence_probability = std::log(total);
+    return result;
+  }
+  using log_space = log_sum_product<double>;
+  auto logs = joint_in.template operator()<log_space>();
+  const double log_total = total_of<log_space>(logs);
+  if (log_total == log_space::zero()) throw_impossible(network, observed);
+  std::vector<double> values;
+  values.reserve(logs.size());
+  for (double v : logs.values()) values.push_back(std::exp(v - log_total));
+  result.table = factor(logs.scope(), logs.cardinalities(), std::move(values));
+  result.evidence_probability = std::exp(log_total);
+  result.log_evidence_probability = log_total;
+  return result;
+}
+
+/// ln P(evidence) from `total_in<S>()`, the evidence's probability in semiring S; −∞ for
+/// impossible evidence (a probability, not a condition, so 0 is an answer).
+template <class TotalIn>
+[[nodiscard]] double exact_log_evidence(TotalIn&& total_in) {
+  const double total = total_in.template operator()<sum_product<double>>();
+  if (well_represented(total)) return std::log(total);
+  return total_in.template operator()<log_sum_product<double>>();
+}
+
+/// The most probable explanation from `maximum_in<S>()`, which returns (states of `variables`,
+/// the largest value of the joint with the evidence) in a max semiring S; in probabilities
+/// first, in logarithms when the maximum underflows. `log_evidence` is ln P(evidence); throws
+/// impossible_evidence when it is −∞.
+template <class MaximumIn>
+[[nodiscard]] mpe_result exact_mpe(const bayesian_network& network, std::span<const variable_id> variables,
+                                   const evidence_set& observed, double log_evidence, std::string engine,
+                                   MaximumIn&& maximum_in) {
+  if (log_evidence == -std::numeric_limits<double>::infinity()) throw_impossible(network, observed);
+  mpe_result result;
+  result.engine = std::move(engine);
+  for (auto id : variables) result.variables.push_back(network.variables()[id.value()]);
+  auto [states, value] = maximum_in.template operator()<max_product<double>>();
+  double log_joint = 0.0;
+  if (well_represented(value)) {
+    log_joint = std::log(value);
+  } else {
+    auto logs = maximum_in.template operator()<log_max_product<double>>();
+    states = std::move(logs.first);
+    log_joint = logs.second;
+  }
+  for (auto s : states) result.states.push_back(state_index(static_cast<state_index::rep>(s)));
+  result.log_joint_probability = log_joint;
+  result.joint_probability = std::exp(log_joint);
+  result.log_probability = log_joint - log_evidence;
+  result.probability = std::exp(result.log_probability);
+  return result;
+}
+
+}  // namespace pgm::detail

@@ -1,0 +1,564 @@
+#pragma once
+/// \file
+/// `propagation<S>`: Shafer–Shenoy message passing over a compiled `junction_tree`, in any
+/// semiring S (sums for marginals, maxima for the most probable explanation, their logarithms
+/// where probabilities underflow).
+///
+/// Why Shafer–Shenoy rather than Hugin: it never divides, so every semiring works unchanged
+/// (Hugin's division has no counterpart for max in log space without care for −∞ − −∞), and its
+/// messages are separate values that can be kept and reused. Each message is computed on demand
+/// and cached:
+///   - a message whose source side holds no evidence is the same under any evidence: it is
+///     computed once, the first time some query needs it, and kept for the life of the object
+///     (this is where barren parts of the network cost nothing, as lazy propagation prunes them);
+///   - a message with evidence on its source side is kept until evidence there changes.
+/// So a query computes only the messages toward its clique that changed, one `marginals()` call
+/// is the two-pass propagation, and entering or retracting evidence recompiles nothing.
+
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <utility>
+#include <vector>
+
+#include "pgm/core/assert.hpp"
+#include "pgm/core/bayesian_network.hpp"
+#include "pgm/detail/table_walk.hpp"
+#include "pgm/inference/exact.hpp"
+#include "pgm/inference/factor.hpp"
+#include "pgm/inference/junction_tree.hpp"
+#include "pgm/inference/query.hpp"
+#include "pgm/inference/semiring.hpp"
+#include "pgm/inference/triangulation.hpp"
+#include "pgm/inference/variable_elimination.hpp"
+
+namespace pgm {
+
+template <Semiring S>
+class propagation {
+ public:
+  using value_type = typename S::value_type;
+
+  /// Propagation over `tree`, compiled from `network` (which must outlive this object).
+  propagation(std::shared_ptr<const junction_tree> tree, const bayesian_network& network)
+      : tree_(std::move(tree)), network_(&network) {
+    const auto& cliques = tree_->cliques();
+    base_.resize(cliques.size());
+    for (std::size_t c = 0; c < cliques.size(); ++c) base_[c].assign(cliques[c].cells, S::one());
+    families_.resize(cliques.size());
+    for (std::size_t i = 0; i < network.size(); ++i) {
+      const variable_id node(static_cast<variable_id::rep>(i));
+      const auto c = tree_->family_clique(node);
+      families_[c].push_back(node);
+      multiply_table(base_[c], c, node);
+    }
+    prior_.resize(2 * tree_->edges().size());
+    working_.resize(2 * tree_->edges().size());
+    potential_version_.assign(cliques.size(), 0);
+    group_folds_.resize(cliques.size());
+    group_of_.resize(cliques.size());
+    for (std::size_t c = 0; c < cliques.size(); ++c) {
+      group_folds_[c].resize(cliques[c].groups.size());
+      group_of_[c].resize(cliques[c].edges.size());
+      for (std::size_t g = 0; g < cliques[c].groups.size(); ++g) {
+        for (auto k : cliques[c].groups[g]) group_of_[c][k] = g;
+      }
+    }
+    evidence_at_.resize(cliques.size());
+    cut_at_.resize(cliques.size());
+    with_evidence_.resize(cliques.size());
+  }
+
+  [[nodiscard]] const junction_tree& tree() const noexcept { return *tree_; }
+
+  /// Replaces the evidence and interventions; only the cliques whose evidence changed lose their
+  /// messages. do(X = x) takes X's table out of its family's clique and fixes X there at x, in
+  /// that clique's base potential: the kept prior messages then hold for the interventions, so
+  /// queries under one set of interventions cost what they cost on the mutilated network.
+  void set_evidence(const evidence_set& observed) {
+    std::vector<std::vector<observation>> cut(tree_->cliques().size());
+    for (const auto& o : observed.intervened) cut[tree_->family_clique(o.variable)].push_back(o);
+    for (std::size_t c = 0; c < cut.size(); ++c) {
+      std::sort(cut[c].begin(), cut[c].end(),
+                [](const observation& a, const observation& b) { return a.variable < b.variable; });
+      if (cut[c] != cut_at_[c]) {
+        cut_at_[c] = std::move(cut[c]);
+        rebuild_base(c);
+        refresh_potential(c);
+        invalidate_from(c);
+        for (std::size_t e = 0; e < tree_->edges().size(); ++e) prior_[toward(e, tree_->below(c, e))].valid = false;
+      }
+    }
+    std::vector<std::vector<local_evidence>> next(tree_->cliques().size());
+    for (const auto& o : observed.hard) {
+      std::vector<value_type> weights(tree_->cardinality(o.variable), S::zero());
+      weights[o.state.value()] = S::one();
+      next[tree_->home(o.variable)].push_back({o.variable, std::move(weights)});
+    }
+    for (const auto& l : observed.soft) {
+      std::vector<value_type> weights;
+      for (double w : l.weights) weights.push_back(S::from_probability(w));
+      next[tree_->home(l.variable)].push_back({l.variable, std::move(weights)});
+    }
+    evidence_cliques_.clear();
+    for (std::size_t c = 0; c < next.size(); ++c) {
+      std::sort(next[c].begin(), next[c].end(),
+                [](const local_evidence& a, const local_evidence& b) { return a.variable < b.variable; });
+      if (next[c] != evidence_at_[c]) {
+        evidence_at_[c] = std::move(next[c]);
+        refresh_potential(c);
+        invalidate_from(c);
+      }
+      if (!evidence_at_[c].empty()) evidence_cliques_.push_back(c);
+    }
+  }
+
+  /// ψ_c with its evidence, ⊗ every message into c.
+  [[nodiscard]] std::vector<value_type> belief(std::size_t c) {
+    ensure_incoming(c, tree_->cliques()[c].edges.size());
+    return product_at(c, tree_->cliques()[c].edges.size());
+  }
+
+  /// What the beliefs of `targets` would cost now, in cells visited: their own products and
+  /// every message into them that is not kept, with the messages those need, each counted once.
+  [[nodiscard]] std::size_t cost_of_beliefs(std::span<const std::size_t> targets) {
+    const auto& cliques = tree_->cliques();
+    const auto work = [&](std::size_t q) { return cliques[q].cells * (cliques[q].groups.size() + 2); };
+    std::vector<char> counted(2 * tree_->edges().size(), 0);
+    std::size_t cost = 0;
+    stack_.clear();
+    for (auto c : targets) {
+      cost = detail::saturating_add(cost, work(c));
+      for (auto e : cliques[c].edges) stack_.push_back(message_into(c, e));
+    }
+    while (!stack_.empty()) {
+      const auto d = stack_.back();
+      stack_.pop_back();
+      if (counted[d] || stored(d).valid) continue;
+      counted[d] = 1;
+      const auto from = source_of(d);
+      cost = detail::saturating_add(cost, work(from));
+      for (auto e : cliques[from].edges) {
+        if (e != d / 2) stack_.push_back(message_into(from, e));
+      }
+    }
+    return cost;
+  }
+
+  /// The smallest clique holding every variable of `scope`, or cliques().size() if none does.
+  [[nodiscard]] std::size_t smallest_holding(std::span<const variable_id> scope) const {
+    const auto& cliques = tree_->cliques();
+    if (scope.size() == 1) return tree_->home(scope.front());
+    std::size_t best = cliques.size();
+    for (std::size_t c = 0; c < cliques.size(); ++c) {
+      const bool holds = std::all_of(scope.begin(), scope.end(), [&](variable_id v) {
+        return tree_->position(c, v) < cliques[c].variables.size();
+      });
+      if (holds && (best == cliques.size() || cliques[c].cells < cliques[best].cells)) best = c;
+    }
+    return best;
+  }
+
+  /// The unnormalized marginal of `node` (its sum is P(evidence) for sum-product).
+  [[nodiscard]] std::vector<value_type> marginal(variable_id node) {
+    const auto c = tree_->home(node);
+    const variable_id scope[] = {node};
+    return fold(belief(c), c, scope);
+  }
+
+  /// The unnormalized marginals of `nodes`, each clique's belief computed once for the
+  /// variables at home there.
+  [[nodiscard]] std::vector<std::vector<value_type>> marginals(std::span<const variable_id> nodes) {
+    std::vector<std::size_t> order(nodes.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return tree_->home(nodes[a]) < tree_->home(nodes[b]); });
+    std::vector<std::vector<value_type>> result(nodes.size());
+    std::size_t current = tree_->cliques().size();
+    std::vector<value_type> table;
+    for (auto i : order) {
+      const auto c = tree_->home(nodes[i]);
+      if (c != current) {
+        table = belief(c);
+        current = c;
+      }
+      const variable_id scope[] = {nodes[i]};
+      result[i] = fold(table, c, scope);
+    }
+    return result;
+  }
+
+  /// The unnormalized joint of `query` (ids in the order wanted) with the evidence.
+  [[nodiscard]] factor_of<S> joint(std::span<const variable_id> query) {
+    std::vector<std::size_t> cards;
+    for (auto v : query) cards.push_back(tree_->cardinality(v));
+    std::vector<variable_id> scope(query.begin(), query.end());
+    if (const auto c = smallest_holding(query); c < tree_->cliques().size()) {
+      return factor_of<S>(std::move(scope), std::move(cards), fold(belief(c), c, query));
+    }
+    return joint_across_cliques(query, std::move(scope), std::move(cards));
+  }
+
+  /// ⊕ over every joint state with the evidence: P(evidence) for sum-product, the largest
+  /// joint probability for max-product.
+  [[nodiscard]] value_type total() {
+    const auto c = smallest_clique();
+    value_type result = S::zero();
+    for (const auto v : belief(c)) result = S::plus(result, v);
+    return result;
+  }
+
+  /// For an idempotent S: a joint state of every variable whose value is the maximum (the first
+  /// such state in clique order, so ties are settled the same way every time), with that value.
+  /// Observed variables keep their observed state.
+  struct maximum {
+    std::vector<std::size_t> states;  ///< one per network variable
+    value_type value;
+  };
+  [[nodiscard]] maximum maximize() requires(S::idempotent) {
+    const auto& cliques = tree_->cliques();
+    maximum result{std::vector<std::size_t>(tree_->variable_count(), unassigned), S::zero()};
+    const auto& order = tree_->preorder();
+    // Toward the root, every clique's product of its potential and its children's messages.
+    ensure_incoming(order.front(), cliques[order.front()].edges.size());
+    for (const auto c : order) {
+      const auto parent_slot = slot_of(c, tree_->parent_edge(c));
+      auto table = product_at(c, parent_slot);
+      const auto& vars = cliques[c].variables;
+      const auto& cards = cliques[c].cardinalities;
+      std::vector<std::size_t> digit(vars.size(), 0);
+      std::size_t best = table.size();
+      for (std::size_t i = 0; i < table.size(); ++i) {
+        bool consistent = true;
+        for (std::size_t k = 0; k < vars.size() && consistent; ++k) {
+          const auto fixed = result.states[vars[k].value()];
+          consistent = fixed == unassigned || fixed == digit[k];
+        }
+        if (consistent && (best == table.size() || table[i] > table[best])) best = i;
+        for (std::size_t k = vars.size(); k-- > 0;) {
+          if (++digit[k] < cards[k]) break;
+          digit[k] = 0;
+        }
+      }
+      PGM_ASSERT(best < table.size(), "some state is consistent with the separator");
+      if (c == order.front()) result.value = table[best];
+      for (std::size_t k = vars.size(); k-- > 0;) {
+        result.states[vars[k].value()] = best % cards[k];
+        best /= cards[k];
+      }
+    }
+    return result;
+  }
+
+ private:
+  static constexpr std::size_t unassigned = static_cast<std::size_t>(-1);
+
+  struct local_evidence {
+    variable_id variable;
+    std::vector<value_type> weights;
+    friend bool operator==(const local_evidence&, const local_evidence&) = default;
+  };
+  struct message {
+    std::vector<value_type> values;
+    bool valid = false;
+    std::uint64_t version = 0;  ///< unique to the values computed, so a fold can tell its inputs changed
+  };
+  /// ψ_c with the messages of every group but one, folded onto that group's separator: what
+  /// every message out of c through that group starts from (the group's own messages are
+  /// functions of the separator, so they multiply after the fold).
+  struct group_fold {
+    std::vector<value_type> values;
+    std::vector<std::uint64_t> inputs;  ///< the versions of ψ_c and of the messages it used
+    bool valid = false;
+  };
+
+  // A directed message on edge e: 2e goes child → parent, 2e + 1 parent → child.
+  [[nodiscard]] static std::size_t toward(std::size_t e, bool to_parent) noexcept {
+    return 2 * e + (to_parent ? 0 : 1);
+  }
+  [[nodiscard]] std::size_t source_of(std::size_t d) const noexcept {
+    const auto& e = tree_->edges()[d / 2];
+    return d % 2 == 0 ? e.child : e.parent;
+  }
+  [[nodiscard]] std::size_t message_into(std::size_t c, std::size_t e) const noexcept {
+    return toward(e, tree_->edges()[e].parent == c);
+  }
+  /// Whether evidence lies on the source side of message d.
+  [[nodiscard]] bool depends_on_evidence(std::size_t d) const noexcept {
+    const auto e = d / 2;
+    const bool upward = d % 2 == 0;
+    return std::any_of(evidence_cliques_.begin(), evidence_cliques_.end(),
+                       [&](std::size_t c) { return tree_->below(c, e) == upward; });
+  }
+  [[nodiscard]] message& stored(std::size_t d) { return depends_on_evidence(d) ? working_[d] : prior_[d]; }
+
+  [[nodiscard]] std::size_t slot_of(std::size_t c, std::size_t e) const noexcept {
+    const auto& edges = tree_->cliques()[c].edges;
+    return static_cast<std::size_t>(std::find(edges.begin(), edges.end(), e) - edges.begin());
+  }
+
+  /// ψ_c with its evidence, made when first needed after the evidence changed (a query that
+  /// is answered otherwise never pays for it).
+  [[nodiscard]] const std::vector<value_type>& potential(std::size_t c) {
+    if (evidence_at_[c].empty()) return base_[c];
+    if (with_evidence_[c].empty()) apply_evidence(c);
+    return with_evidence_[c];
+  }
+
+  void refresh_potential(std::size_t c) {
+    potential_version_[c] = ++versions_;
+    with_evidence_[c].clear();
+    if (evidence_at_[c].empty()) with_evidence_[c].shrink_to_fit();
+  }
+
+  /// ψ_c without evidence: the clique's tables but the intervened ones (a product, since
+  /// Shafer–Shenoy never divides), each intervened variable fixed at its state.
+  void rebuild_base(std::size_t c) {
+    const auto& clique = tree_->cliques()[c];
+    base_[c].assign(clique.cells, S::one());
+    const auto is_cut = [&](variable_id node) {
+      return std::any_of(cut_at_[c].begin(), cut_at_[c].end(),
+                         [&](const observation& o) { return o.variable == node; });
+    };
+    for (auto node : families_[c]) {
+      if (!is_cut(node)) multiply_table(base_[c], c, node);
+    }
+    for (const auto& o : cut_at_[c]) {
+      std::vector<value_type> point(tree_->cardinality(o.variable), S::zero());
+      point[o.state.value()] = S::one();
+      const variable_id scope[] = {o.variable};
+      detail::multiply_into<S, value_type>(base_[c], clique.cardinalities, tree_->strides_into(c, scope),
+                                           std::span<const value_type>(point));
+    }
+  }
+
+  void apply_evidence(std::size_t c) {
+    with_evidence_[c] = base_[c];
+    for (const auto& l : evidence_at_[c]) {
+      const variable_id scope[] = {l.variable};
+      detail::multiply_into<S, value_type>(with_evidence_[c], tree_->cliques()[c].cardinalities,
+                                           tree_->strides_into(c, scope), std::span<const value_type>(l.weights));
+    }
+  }
+
+  /// `table` ⊗= node's table, in clique c's numbering.
+  void multiply_table(std::vector<value_type>& table, std::size_t c, variable_id node) const {
+    const auto family = detail::table_factor<S>(*network_, node);
+    detail::multiply_into<S, value_type>(table, tree_->cliques()[c].cardinalities,
+                                         tree_->strides_into(c, family.scope()), family.values());
+  }
+
+  /// Every message with clique c on its source side is stale.
+  void invalidate_from(std::size_t c) {
+    for (std::size_t e = 0; e < tree_->edges().size(); ++e) working_[toward(e, tree_->below(c, e))].valid = false;
+  }
+
+  /// Computes the messages into c over every edge but its `skip`-th (none when skip is past the
+  /// end), and those they need, that are not kept already.
+  void ensure_incoming(std::size_t c, std::size_t skip) {
+    const auto& edges = tree_->cliques()[c].edges;
+    stack_.clear();
+    for (std::size_t k = 0; k < edges.size(); ++k) {
+      if (k != skip) stack_.push_back(message_into(c, edges[k]));
+    }
+    ensure_stacked();
+  }
+
+  /// Computes the messages on stack_ and those they need: a walk away from their targets that
+  /// stops at kept messages, then the messages in reverse order of discovery, sources first.
+  void ensure_stacked() {
+    const auto& cliques = tree_->cliques();
+    pending_.clear();
+    while (!stack_.empty()) {
+      const auto d = stack_.back();
+      stack_.pop_back();
+      if (stored(d).valid) continue;
+      pending_.push_back(d);
+      const auto from = source_of(d);
+      for (auto e : cliques[from].edges) {
+        if (e != d / 2) stack_.push_back(message_into(from, e));
+      }
+    }
+    for (auto it = pending_.rbegin(); it != pending_.rend(); ++it) compute(*it);
+  }
+
+  /// ψ_c with evidence ⊗ the messages into c over every edge but its `skip`-th and every group
+  /// but `skip_group`. Messages over one separator are multiplied in its table first, then into
+  /// the clique's once.
+  [[nodiscard]] std::vector<value_type> product_at(std::size_t c, std::size_t skip,
+                                                   std::size_t skip_group = static_cast<std::size_t>(-1)) {
+    const auto& q = tree_->cliques()[c];
+    std::vector<value_type> table = potential(c);
+    for (std::size_t g = 0; g < q.groups.size(); ++g) {
+      if (g == skip_group) continue;
+      const auto& group = q.groups[g];
+      const std::vector<value_type>* single = nullptr;
+      std::size_t count = 0;
+      for (auto k : group) {
+        if (k == skip) continue;
+        const auto& in = stored(message_into(c, q.edges[k]));
+        PGM_ASSERT(in.valid, "messages are computed before use");
+        if (count++ == 0) {
+          single = &in.values;
+          continue;
+        }
+        if (count == 2) scratch_ = *single;
+        for (std::size_t i = 0; i < scratch_.size(); ++i) scratch_[i] = S::times(scratch_[i], in.values[i]);
+      }
+      if (count == 0) continue;
+      const auto& product = count == 1 ? *single : scratch_;
+      const auto k = group.front() == skip ? group[1] : group.front();
+      detail::multiply_into<S, value_type>(table, q.cardinalities, q.strides[k], std::span<const value_type>(product));
+    }
+    return table;
+  }
+
+  /// The fold of ψ_c and every group of messages but g onto g's separator, kept while its inputs
+  /// stay: a clique with many neighbours over one separator (pathfinder's disease node) sends
+  /// them all its messages from one pass over its table.
+  const std::vector<value_type>& fold_for_group(std::size_t c, std::size_t g) {
+    const auto& q = tree_->cliques()[c];
+    inputs_.assign(1, potential_version_[c]);
+    for (std::size_t h = 0; h < q.groups.size(); ++h) {
+      if (h == g) continue;
+      for (auto k : q.groups[h]) inputs_.push_back(stored(message_into(c, q.edges[k])).version);
+    }
+    auto& kept = group_folds_[c][g];
+    if (kept.valid && kept.inputs == inputs_) return kept.values;
+    const auto table = product_at(c, q.edges.size(), g);
+    const auto k = q.groups[g].front();
+    kept.values.assign(tree_->edges()[q.edges[k]].cells, S::zero());
+    detail::fold_onto<S, value_type>(std::span<const value_type>(table), q.cardinalities, q.strides[k],
+                                     std::span<value_type>(kept.values));
+    kept.inputs = inputs_;
+    kept.valid = true;
+    return kept.values;
+  }
+
+  void compute(std::size_t d) {
+    const auto e = d / 2;
+    const auto from = source_of(d);
+    const auto slot = slot_of(from, e);
+    const auto g = group_of_[from][slot];
+    const auto& q = tree_->cliques()[from];
+    auto values = fold_for_group(from, g);
+    for (auto k : q.groups[g]) {
+      if (k == slot) continue;
+      const auto& in = stored(message_into(from, q.edges[k]));
+      for (std::size_t i = 0; i < values.size(); ++i) values[i] = S::times(values[i], in.values[i]);
+    }
+    auto& out = stored(d);
+    out.values = std::move(values);
+    out.valid = true;
+    out.version = ++versions_;
+  }
+
+  /// A table of clique c folded onto `scope` (in that order).
+  [[nodiscard]] std::vector<value_type> fold(const std::vector<value_type>& table, std::size_t c,
+                                             std::span<const variable_id> scope) const {
+    std::size_t cells = 1;
+    for (auto v : scope) cells *= tree_->cardinality(v);
+    std::vector<value_type> out(cells, S::zero());
+    detail::fold_onto<S, value_type>(std::span<const value_type>(table), tree_->cliques()[c].cardinalities,
+                                     tree_->strides_into(c, scope), std::span<value_type>(out));
+    return out;
+  }
+
+  [[nodiscard]] std::size_t smallest_clique() const {
+    const auto& cliques = tree_->cliques();
+    std::size_t best = 0;
+    for (std::size_t c = 1; c < cliques.size(); ++c) {
+      if (cliques[c].cells < cliques[best].cells) best = c;
+    }
+    return best;
+  }
+
+  /// Variables in different cliques: the smallest subtree joining their homes, each of its
+  /// cliques with the messages from outside it, eliminated down to the query.
+  [[nodiscard]] factor_of<S> joint_across_cliques(std::span<const variable_id> query, std::vector<variable_id> scope,
+                                                  std::vector<std::size_t> cards) {
+    const auto& cliques = tree_->cliques();
+    std::vector<char> keep(cliques.size(), 1);
+    std::vector<char> terminal(cliques.size(), 0);
+    for (auto v : query) terminal[tree_->home(v)] = 1;
+    // Prune non-terminal leaves until none is left: what remains joins the terminals.
+    std::vector<std::size_t> degree(cliques.size());
+    std::vector<std::size_t> leaves;
+    for (std::size_t c = 0; c < cliques.size(); ++c) {
+      degree[c] = cliques[c].edges.size();
+      if (degree[c] <= 1 && !terminal[c]) leaves.push_back(c);
+    }
+    while (!leaves.empty()) {
+      const auto c = leaves.back();
+      leaves.pop_back();
+      if (!keep[c]) continue;
+      keep[c] = 0;
+      for (auto e : cliques[c].edges) {
+        const auto other = tree_->across(e, c);
+        if (keep[other] && --degree[other] <= 1 && !terminal[other]) leaves.push_back(other);
+      }
+    }
+    // Each kept clique's potential with the messages from its pruned neighbours.
+    std::vector<detail::shared_factor<S>> factors;
+    for (std::size_t c = 0; c < cliques.size(); ++c) {
+      if (!keep[c]) continue;
+      const auto& q = cliques[c];
+      stack_.clear();
+      for (auto e : q.edges) {
+        if (!keep[tree_->across(e, c)]) stack_.push_back(message_into(c, e));
+      }
+      ensure_stacked();
+      auto table = potential(c);
+      for (std::size_t k = 0; k < q.edges.size(); ++k) {
+        if (keep[tree_->across(q.edges[k], c)]) continue;
+        const auto& in = stored(message_into(c, q.edges[k]));
+        detail::multiply_into<S, value_type>(table, q.cardinalities, q.strides[k],
+                                             std::span<const value_type>(in.values));
+      }
+      factors.push_back(std::make_shared<const factor_of<S>>(q.variables, q.cardinalities, std::move(table)));
+    }
+    return eliminate_to(std::move(factors), scope, cards);
+  }
+
+  /// Eliminates every variable outside `scope` from the product of `factors` (min-fill order),
+  /// and returns the result over `scope` in that order.
+  [[nodiscard]] factor_of<S> eliminate_to(std::vector<detail::shared_factor<S>> factors,
+                                          const std::vector<variable_id>& scope,
+                                          const std::vector<std::size_t>& cards) const {
+    std::vector<variable_id> others;
+    for (const auto& f : factors) {
+      for (auto v : f->scope()) {
+        if (std::find(scope.begin(), scope.end(), v) == scope.end()) others.push_back(v);
+      }
+    }
+    std::sort(others.begin(), others.end());
+    others.erase(std::unique(others.begin(), others.end()), others.end());
+    for (auto v : elimination_order(factors, std::move(others))) {
+      static_cast<void>(detail::eliminate_one<S>(factors, v));
+    }
+    return detail::product_over<S>(factors, scope, cards);
+  }
+
+  std::shared_ptr<const junction_tree> tree_;
+  const bayesian_network* network_;
+  std::vector<std::vector<value_type>> base_;
+  std::vector<std::vector<local_evidence>> evidence_at_;
+  std::vector<std::vector<variable_id>> families_;  ///< the nodes whose tables each clique holds
+  std::vector<std::vector<observation>> cut_at_;    ///< the interventions on them, by variable
+  std::vector<std::vector<value_type>> with_evidence_;
+  std::vector<std::size_t> evidence_cliques_;
+  std::vector<message> prior_;
+  std::vector<message> working_;
+  std::vector<std::size_t> pending_;
+  std::vector<std::size_t> stack_;
+  std::vector<value_type> scratch_;
+  std::vector<std::uint64_t> potential_version_;
+  std::vector<std::vector<group_fold>> group_folds_;
+  std::vector<std::vector<std::size_t>> group_of_;  ///< [clique][edge position] → its group
+  std::vector<std::uint64_t> inputs_;
+  std::uint64_t versions_ = 0;
+};
+
+}  // namespace pgm

@@ -1,0 +1,218 @@
+#pragma once
+/// \file
+/// Triangulation by greedy elimination: the order in which exact inference eliminates
+/// variables, and the cliques that order creates. `moral_graph` turns a network into the
+/// undirected Boost.Graph graph of its factors' interactions (each node joined to its parents,
+/// parents married); `greedy_elimination` runs on any Boost.Graph graph that lists vertices and
+/// adjacent vertices, so a user's own interaction graph works too.
+///
+/// Each step eliminates the remaining vertex of least cost, joining its remaining neighbours
+/// ("fill-in" edges). Costs, compared as tuples, ties by the lower vertex index:
+///   min_fill   — (fill-in edges, neighbours)       fewest new edges
+///   min_degree — (neighbours)                      fewest neighbours
+///   min_weight — (clique weight, fill-in edges)    smallest table, weight = Π cardinalities
+/// Scores are kept per vertex and recomputed only within two steps of the eliminated one, the
+/// only vertices whose fill-in or weight can change.
+
+#include <algorithm>
+#include <boost/graph/adjacency_list.hpp>
+#include <boost/graph/graph_concepts.hpp>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <span>
+#include <tuple>
+#include <vector>
+
+#include "pgm/core/assert.hpp"
+#include "pgm/core/bayesian_network.hpp"
+
+namespace pgm {
+
+enum class elimination_heuristic {
+  min_fill,    ///< fewest new edges among the neighbours; ties by degree, then id
+  min_degree,  ///< fewest neighbours; ties by id
+  min_weight   ///< smallest product of cardinalities of the clique; ties by fill-in, then id
+};
+
+/// The undirected graph of a network's factors: vertex i is node i.
+using interaction_graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
+
+/// Each node joined to its parents and its parents to each other.
+[[nodiscard]] inline interaction_graph moral_graph(const bayesian_network& network) {
+  interaction_graph graph(network.size());
+  for (std::size_t i = 0; i < network.size(); ++i) {
+    const auto parents = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
+    for (std::size_t a = 0; a < parents.size(); ++a) {
+      if (!boost::edge(i, parents[a].value(), graph).second) boost::add_edge(i, parents[a].value(), graph);
+      for (std::size_t b = a + 1; b < parents.size(); ++b) {
+        if (!boost::edge(parents[a].value(), parents[b].value(), graph).second) {
+          boost::add_edge(parents[a].value(), parents[b].value(), graph);
+        }
+      }
+    }
+  }
+  return graph;
+}
+
+/// The result of eliminating vertices in a greedy order.
+struct elimination {
+  /// The eliminated vertices, in order.
+  std::vector<std::size_t> order;
+  /// cliques[k]: order[k] with its neighbours still present when it went, ascending.
+  std::vector<std::vector<std::size_t>> cliques;
+  std::size_t fill_in_edges = 0;
+};
+
+namespace detail {
+
+/// A symmetric adjacency matrix of bits: O(1) edge tests, words of 64 vertices at a time.
+class bit_adjacency {
+ public:
+  explicit bit_adjacency(std::size_t n) : words_((n + 63) / 64), bits_(n * words_, 0) {}
+  [[nodiscard]] bool test(std::size_t a, std::size_t b) const noexcept {
+    return (bits_[a * words_ + b / 64] >> (b % 64)) & 1U;
+  }
+  void set(std::size_t a, std::size_t b) noexcept {
+    bits_[a * words_ + b / 64] |= std::uint64_t{1} << (b % 64);
+    bits_[b * words_ + a / 64] |= std::uint64_t{1} << (a % 64);
+  }
+
+ private:
+  std::size_t words_;
+  std::vector<std::uint64_t> bits_;
+};
+
+}  // namespace detail
+
+/// Eliminates the vertices flagged in `eliminate` (all when empty) of `graph` greedily by
+/// `heuristic`; `cardinalities` (one per vertex) weigh cliques for min_weight. The vertices not
+/// eliminated stay, as neighbours only.
+template <class Graph>
+[[nodiscard]] elimination greedy_elimination(const Graph& graph, std::span<const std::size_t> cardinalities,
+                                             elimination_heuristic heuristic, std::span<const bool> eliminate = {}) {
+  BOOST_CONCEPT_ASSERT((boost::VertexListGraphConcept<Graph>));
+  BOOST_CONCEPT_ASSERT((boost::AdjacencyGraphConcept<Graph>));
+  const std::size_t n = boost::num_vertices(graph);
+  PGM_ASSERT(cardinalities.size() == n, "one cardinality per vertex");
+  PGM_ASSERT(eliminate.empty() || eliminate.size() == n, "one flag per vertex");
+  const auto index = boost::get(boost::vertex_index, graph);
+
+  detail::bit_adjacency adjacent(n);
+  std::vector<std::vector<std::size_t>> neighbours(n);
+  for (auto v : boost::make_iterator_range(boost::vertices(graph))) {
+    for (auto w : boost::make_iterator_range(boost::adjacent_vertices(v, graph))) {
+      const std::size_t a = index[v];
+      const std::size_t b = index[w];
+      if (a != b && !adjacent.test(a, b)) {
+        adjacent.set(a, b);
+        neighbours[a].push_back(b);
+        neighbours[b].push_back(a);
+      }
+    }
+  }
+  std::vector<char> gone(n, 0);
+  std::vector<char> candidate(n, 1);
+  if (!eliminate.empty()) {
+    for (std::size_t v = 0; v < n; ++v) candidate[v] = eliminate[v] ? 1 : 0;
+  }
+  std::vector<double> log_card(n);
+  for (std::size_t v = 0; v < n; ++v) log_card[v] = std::log(static_cast<double>(cardinalities[v]));
+
+  using cost = std::tuple<double, double>;
+  auto score = [&](std::size_t v) -> cost {
+    const auto& around = neighbours[v];
+    double fill = 0.0;
+    if (heuristic != elimination_heuristic::min_degree) {
+      for (std::size_t i = 0; i < around.size(); ++i) {
+        for (std::size_t j = i + 1; j < around.size(); ++j) fill += adjacent.test(around[i], around[j]) ? 0.0 : 1.0;
+      }
+    }
+    const auto degree = static_cast<double>(around.size());
+    switch (heuristic) {
+      case elimination_heuristic::min_fill:
+        return {fill, degree};
+      case elimination_heuristic::min_degree:
+        return {degree, 0.0};
+      case elimination_heuristic::min_weight: {
+        double weight = log_card[v];
+        for (auto w : around) weight += log_card[w];
+        return {weight, fill};
+      }
+    }
+    return {0.0, 0.0};
+  };
+  std::vector<cost> costs(n);
+  std::size_t remaining = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (candidate[v]) {
+      costs[v] = score(v);
+      ++remaining;
+    }
+  }
+
+  elimination result;
+  result.order.reserve(remaining);
+  result.cliques.reserve(remaining);
+  std::vector<std::size_t> touched;
+  std::vector<char> mark(n, 0);
+  while (remaining-- > 0) {
+    std::size_t best = n;
+    for (std::size_t v = 0; v < n; ++v) {
+      if (candidate[v] && !gone[v] && (best == n || costs[v] < costs[best])) best = v;
+    }
+    auto& around = neighbours[best];
+    for (std::size_t i = 0; i < around.size(); ++i) {
+      for (std::size_t j = i + 1; j < around.size(); ++j) {
+        const auto a = around[i];
+        const auto b = around[j];
+        if (!adjacent.test(a, b)) {
+          adjacent.set(a, b);
+          neighbours[a].push_back(b);
+          neighbours[b].push_back(a);
+          ++result.fill_in_edges;
+        }
+      }
+    }
+    std::vector<std::size_t> clique = around;
+    clique.push_back(best);
+    std::sort(clique.begin(), clique.end());
+    result.order.push_back(best);
+    result.cliques.push_back(std::move(clique));
+    gone[best] = 1;
+    // The eliminated vertex leaves its neighbours' lists; their scores and those of their
+    // neighbours change.
+    touched.clear();
+    for (auto w : around) {
+      auto& list = neighbours[w];
+      list.erase(std::find(list.begin(), list.end(), best));
+      for (auto x : list) {
+        if (!mark[x]) {
+          mark[x] = 1;
+          touched.push_back(x);
+        }
+      }
+      if (!mark[w]) {
+        mark[w] = 1;
+        touched.push_back(w);
+      }
+    }
+    for (auto x : touched) {
+      mark[x] = 0;
+      if (candidate[x] && !gone[x]) costs[x] = score(x);
+    }
+    around.clear();
+  }
+  return result;
+}
+
+/// The cardinality of every node of `network`, in node order.
+[[nodiscard]] inline std::vector<std::size_t> cardinalities_of(const bayesian_network& network) {
+  std::vector<std::size_t> cards;
+  cards.reserve(network.size());
+  for (const auto& v : network.variables()) cards.push_back(v.cardinality());
+  return cards;
+}
+
+}  // namespace pgm

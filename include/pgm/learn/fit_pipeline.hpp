@@ -1,0 +1,280 @@
+#pragma once
+/// \file
+/// "Fit this model from this source" in one call: the structure (edges over the source's
+/// columns, or a model's structure with its states), the columns read and binned as asked, every
+/// family counted by the source (a data set, a streamed CSV file, NumPy columns:
+/// pgm/learn/family_source.hpp), the intervals kept, the priors transferred from a related
+/// task's network (eq. 7–9) where one is given, and every table estimated. `pgm fit`, the
+/// Python module and the experiment all fit through it.
+
+#include <algorithm>
+#include <exception>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/error.hpp"
+#include "pgm/core/network_structure.hpp"
+#include "pgm/data/discretizer.hpp"
+#include "pgm/data/family_counts.hpp"
+#include "pgm/learn/expectation_maximization.hpp"
+#include "pgm/learn/family_source.hpp"
+#include "pgm/learn/fit.hpp"
+#include "pgm/transfer/transfer_settings.hpp"
+
+namespace pgm {
+
+/// A variable in no column of the data, fitted by EM.
+struct latent_variable {
+  std::string name;
+  /// Its states; empty takes a model structure's.
+  std::vector<std::string> states;
+};
+
+struct fit_request {
+  /// The structure: edges over the source's columns (the variables are the columns they name,
+  /// in the source's order, their states the values seen), or a model's structure, whose
+  /// columns must hold its variables' states.
+  std::variant<std::vector<named_edge>, network_structure> structure;
+  /// Priors, the empty-configuration rule, counting threads.
+  fit_options options;
+  /// Raw numeric columns binned into these intervals as they are read.
+  discretization bin;
+  /// The intervals that already discretized columns hold, kept with the model;
+  /// `intervals_source` names where they came from, in messages.
+  discretization intervals;
+  std::string intervals_source = "intervals";
+  /// What a missing value is and what happens to it.
+  missing_values missing;
+  /// A related task's network: every node the map of `transfer` reaches gets its transferred
+  /// prior (eq. 8), the weight w chosen from the counts unless given.
+  const bayesian_network* prior_network = nullptr;
+  transfer_settings transfer;
+  /// Fit by EM (pgm/learn/expectation_maximization.hpp) instead of counting once: the missing
+  /// values are then kept whatever `missing.policy` says, and the source must give its rows
+  /// (row_source).
+  std::optional<em_options> em;
+  /// Latent variables, in no column of the source (EM only). With edges over the columns each
+  /// needs its states; with a model structure each names one of its variables, whose states
+  /// are the model's (states given must be the same).
+  std::vector<latent_variable> latent;
+};
+
+struct fit_result {
+  /// The fitted network; empty where `holds_network` is false.
+  bayesian_network network;
+  /// False on the processes of a group other than the first, which counted their part of the
+  /// data and hold no result.
+  bool holds_network = true;
+  /// What the source read: rows, rows dropped for a missing value, each family's counts (over
+  /// the network's variables), values outside the binning edges.
+  family_counts counts;
+  /// Which priors were transferred, with which weights, when a prior network was given.
+  std::optional<transfer_report> transfer;
+  /// How EM went, when it fitted (its network is `network`, and `counts` holds the
+  /// available-case counts, those of latent families empty).
+  std::optional<em_result> em;
+};
+
+namespace detail {
+
+/// Each node's family by name, in node order, parents in the structure's order.
+[[nodiscard]] inline std::vector<family_names> families_of(const network_structure& structure) {
+  std::vector<family_names> families;
+  for (std::size_t i = 0; i < structure.size(); ++i) {
+    const variable_id node(static_cast<variable_id::rep>(i));
+    family_names family{structure.at(node).name(), {}};
+    for (const auto& parent : structure.parent_variables(node)) family.parents.push_back(parent.name());
+    families.push_back(std::move(family));
+  }
+  return families;
+}
+
+/// The columns named by `edges`, in order of first appearance.
+[[nodiscard]] inline std::vector<std::string> columns_of(const std::vector<named_edge>& edges) {
+  std::vector<std::string> columns;
+  for (const auto& e : edges) {
+    for (const auto* name : {&e.from, &e.to}) {
+      if (std::find(columns.begin(), columns.end(), *name) == columns.end()) columns.push_back(*name);
+    }
+  }
+  return columns;
+}
+
+/// Whether `name` is among the request's latent variables.
+[[nodiscard]] inline const latent_variable* latent_named(const fit_request& request, std::string_view name) {
+  const auto found = std::find_if(request.latent.begin(), request.latent.end(),
+                                  [&](const latent_variable& v) { return v.name == name; });
+  return found == request.latent.end() ? nullptr : &*found;
+}
+
+/// The EM path of fit(): the source's rows read once, the latent variables added to the
+/// structure, the transferred priors chosen from the available-case counts.
+template <row_source Source>
+[[nodiscard]] fit_result fit_by_em(Source& source, const fit_request& request) {
+  for (const auto& column : source.columns()) {
+    if (latent_named(request, column)) {
+      throw data_error(source.name() + ": '" + column + "' is declared latent but is a column of the data");
+    }
+  }
+  family_count_request reading;
+  reading.missing = request.missing;
+  reading.missing.policy = missing_policy::available;
+  reading.threads = request.options.counting.threads;
+  network_structure structure;
+  const auto* edges = std::get_if<std::vector<named_edge>>(&request.structure);
+  if (!edges) {
+    structure = std::get<network_structure>(request.structure);
+    for (const auto& v : request.latent) {
+      if (!structure.contains(v.name)) throw model_error("the latent variable '" + v.name + "' is not in the model");
+      if (!v.states.empty() && v.states != structure.at(v.name).states()) {
+        throw model_error("the latent variable '" + v.name + "' is given the states {" +
+                          detail::list_for_message(v.states) + "}, the model {" +
+                          detail::list_for_message(structure.at(v.name).states()) + "}");
+      }
+    }
+    for (const auto& v : structure.variables()) {
+      if (request.bin.contains(v.name())) structure.update_variable(request.bin.at(v.name()));
+    }
+    for (const auto& v : structure.variables()) {
+      if (latent_named(request, v.name())) continue;
+      reading.columns.push_back(v.name());
+      (request.bin.contains(v.name()) ? reading.intervals : reading.variables).emplace(v.name(), v);
+    }
+  } else {
+    for (const auto& name : columns_of(*edges)) {
+      if (latent_named(request, name)) continue;
+      reading.columns.push_back(name);
+      if (request.bin.contains(name)) reading.intervals.emplace(name, request.bin.at(name));
+    }
+  }
+  fit_result result;
+  const auto data = source.read(reading, result.counts);
+  if (edges) {
+    std::vector<variable> variables;
+    for (const auto& name : data.names()) variables.push_back(data.discrete(name).var());
+    for (const auto& v : request.latent) {
+      if (v.states.empty()) throw model_error("the latent variable '" + v.name + "' needs its states");
+      variables.emplace_back(v.name, v.states);
+    }
+    structure = network_structure(std::move(variables), *edges);
+  }
+  if (!request.intervals.empty()) {
+    structure = with_intervals(std::move(structure), request.intervals, request.intervals_source);
+  }
+  auto options = request.options;
+  for (std::size_t i = 0; i < structure.size(); ++i) {
+    const variable_id node(static_cast<variable_id::rep>(i));
+    const auto parents = structure.parent_variables(node);
+    const bool latent_family = latent_named(request, structure.at(node).name()) ||
+                               std::any_of(parents.begin(), parents.end(), [&](const variable& p) {
+                                 return latent_named(request, p.name()) != nullptr;
+                               });
+    result.counts.families.push_back(latent_family ? count_table(structure.at(node), parents)
+                                                   : count_node(structure, node, data, options.counting));
+  }
+  for (const auto& name : data.names()) result.counts.variables.push_back(data.discrete(name).var());
+  if (request.prior_network) {
+    result.transfer = add_transferred_priors(options, structure, std::span<const count_table>(result.counts.families),
+                                             *request.prior_network, request.transfer);
+  }
+  auto em = expectation_maximization(structure, data, options, *request.em);
+  result.network = std::move(em.network);
+  result.em = std::move(em);
+  return result;
+}
+
+}  // namespace detail
+
+/// Fits `request`'s structure from `source`. Errors in the data (a missing column, a value that
+/// is not a state, a missing value under the policy error) are reported before errors in the
+/// structure (a cycle), as when the data were read first. Throws data_error, model_error,
+/// not_a_dag.
+template <family_source Source>
+[[nodiscard]] fit_result fit(Source& source, const fit_request& request) {
+  if (request.em) {
+    if constexpr (row_source<Source>) {
+      return detail::fit_by_em(source, request);
+    } else {
+      throw model_error(source.name() + ": EM reads the data at every iteration and needs them in memory");
+    }
+  }
+  if (!request.latent.empty()) throw model_error("latent variables are fitted by EM only");
+  family_count_request counting;
+  counting.missing = request.missing;
+  counting.threads = request.options.counting.threads;
+  network_structure structure;
+  const auto* edges = std::get_if<std::vector<named_edge>>(&request.structure);
+  std::exception_ptr structure_error;
+  if (!edges) {
+    structure = std::get<network_structure>(request.structure);
+    for (const auto& v : structure.variables()) {
+      if (request.bin.contains(v.name())) structure.update_variable(request.bin.at(v.name()));
+    }
+    for (const auto& v : structure.variables()) {
+      counting.columns.push_back(v.name());
+      (request.bin.contains(v.name()) ? counting.intervals : counting.variables).emplace(v.name(), v);
+    }
+    counting.families = detail::families_of(structure);
+  } else {
+    counting.columns = detail::columns_of(*edges);
+    for (const auto& name : counting.columns) {
+      if (request.bin.contains(name)) counting.intervals.emplace(name, request.bin.at(name));
+    }
+    // The families come from the structure over the source's columns in its order (as
+    // structure_from_data builds it), with placeholder states until the data give theirs.
+    std::vector<variable> placeholders;
+    for (const auto& name : source.columns()) {
+      if (std::find(counting.columns.begin(), counting.columns.end(), name) != counting.columns.end()) {
+        placeholders.emplace_back(name, std::vector<std::string>{"?"});
+      }
+    }
+    if (placeholders.size() == counting.columns.size()) {  // else counting reports the missing column
+      try {
+        counting.families = detail::families_of(network_structure(placeholders, *edges));
+      } catch (const error&) {
+        structure_error = std::current_exception();
+      }
+    }
+  }
+  fit_result result;
+  auto counted = source.count(counting);
+  if (!source.holds_counts()) {
+    result.holds_network = false;
+    return result;
+  }
+  if (structure_error) std::rethrow_exception(structure_error);
+  if (edges) structure = network_structure(counted.variables, *edges);
+  if (!request.intervals.empty()) {
+    structure = with_intervals(std::move(structure), request.intervals, request.intervals_source);
+  }
+  // The counts under the structure's variables, which may carry intervals and tags.
+  std::vector<count_table> counts;
+  for (std::size_t i = 0; i < structure.size(); ++i) {
+    const variable_id node(static_cast<variable_id::rep>(i));
+    auto parents = structure.parent_variables(node);
+    const auto& family = counted.families.at(i);
+    bool same_family = family.child().name() == structure.at(node).name() && family.parents().size() == parents.size();
+    for (std::size_t k = 0; same_family && k < parents.size(); ++k) {
+      same_family = family.parents()[k].name() == parents[k].name();
+    }
+    if (!same_family) throw std::logic_error("the counted family of '" + family.child().name() + "' is out of order");
+    counts.push_back(family.with_variables(structure.at(node), std::move(parents)));
+  }
+  auto options = request.options;
+  if (request.prior_network) {
+    result.transfer = add_transferred_priors(options, structure, std::span<const count_table>(counts),
+                                             *request.prior_network, request.transfer);
+  }
+  result.network = fit(structure, std::span<const count_table>(counts), options);
+  counted.families = std::move(counts);
+  result.counts = std::move(counted);
+  return result;
+}
+
+}  // namespace pgm

@@ -1,0 +1,131 @@
+#pragma once
+/// \file
+/// One entry point for structure learning, which the program and the Python package both call:
+/// `learn_structure(data, choice)` runs PC-stable (pgm/learn/pc.hpp), hill climbing or tabu
+/// search (pgm/learn/hill_climbing.hpp), or the hybrid MMHC-style search in which PC-stable's
+/// skeleton restricts the candidate parents of hill climbing (bnlearn's rsmax2 with PC as the
+/// restrict phase). Every algorithm returns one DAG; PC also its CPDAG.
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "pgm/core/error.hpp"
+#include "pgm/data/dataset.hpp"
+#include "pgm/learn/background_knowledge.hpp"
+#include "pgm/learn/cpdag.hpp"
+#include "pgm/learn/hill_climbing.hpp"
+#include "pgm/learn/pc.hpp"
+
+namespace pgm {
+
+enum class structure_algorithm { pc, hc, tabu, mmhc };
+
+[[nodiscard]] inline std::string to_string(structure_algorithm algorithm) {
+  switch (algorithm) {
+    case structure_algorithm::pc:
+      return "pc";
+    case structure_algorithm::hc:
+      return "hc";
+    case structure_algorithm::tabu:
+      return "tabu";
+    case structure_algorithm::mmhc:
+      return "mmhc";
+  }
+  return "?";
+}
+
+/// "pc", "hc", "tabu" or "mmhc"; throws model_error otherwise.
+[[nodiscard]] inline structure_algorithm parse_structure_algorithm(std::string_view text) {
+  for (auto a :
+       {structure_algorithm::pc, structure_algorithm::hc, structure_algorithm::tabu, structure_algorithm::mmhc}) {
+    if (text == to_string(a)) return a;
+  }
+  throw model_error("unknown structure learning algorithm '" + std::string(text) + "' (expected pc, hc, tabu or mmhc)");
+}
+
+struct structure_choice {
+  structure_algorithm algorithm = structure_algorithm::hc;
+  /// PC-stable's tests (pc, and the skeleton of mmhc).
+  pc_options pc;
+  /// The score search (hc, tabu, mmhc). For tabu, a tabu length of 0 means bnlearn's 10.
+  search_options search;
+  /// Tiers, forbidden and required edges, for every algorithm.
+  background_knowledge knowledge;
+  /// Worker threads; 0 uses every hardware thread. The result is the same for any number.
+  unsigned threads = 0;
+  /// hc and tabu: start from a DAG of PC-stable's CPDAG (with `pc`'s tests) instead of
+  /// `search.start`.
+  bool start_from_pc = false;
+};
+
+struct structure_result {
+  structure_algorithm algorithm = structure_algorithm::hc;
+  /// The learned DAG (for PC, one DAG of its CPDAG's class).
+  std::vector<named_edge> edges;
+  /// PC's CPDAG; for the score searches, the CPDAG of the learned DAG's class.
+  cpdag graph;
+  /// PC: the nodes given new v-structures to extend its CPDAG to a DAG.
+  std::size_t relaxed = 0;
+  std::optional<pc_result> pc;
+  std::optional<search_result> search;
+};
+
+/// Learns a structure over the named columns of `data` (all discrete). Throws model_error for
+/// bad options or knowledge, data_error for a missing or continuous column.
+[[nodiscard]] inline structure_result learn_structure(const dataset& data, std::span<const std::string> names,
+                                                      const structure_choice& choice) {
+  std::vector<const discrete_column*> columns;
+  for (const auto& name : names) columns.push_back(&data.discrete(name));
+  const std::vector<std::string> order(names.begin(), names.end());
+  structure_result result;
+  result.algorithm = choice.algorithm;
+  auto pc = choice.pc;
+  pc.knowledge = choice.knowledge;
+  pc.threads = choice.threads;
+  if (choice.algorithm == structure_algorithm::pc) {
+    auto learned = pc_stable(columns, pc);
+    result.graph = learned.graph;
+    result.edges = extend_to_dag(learned.graph, true, &result.relaxed);
+    result.pc = std::move(learned);
+    return result;
+  }
+  auto search = choice.search;
+  search.knowledge = choice.knowledge;
+  search.threads = choice.threads;
+  if (choice.algorithm == structure_algorithm::tabu && search.tabu == 0) search.tabu = 10;
+  if (choice.algorithm != structure_algorithm::tabu) search.tabu = 0;
+  if (choice.start_from_pc) {
+    if (choice.algorithm == structure_algorithm::pc) throw model_error("a start from PC applies to hc, tabu and mmhc");
+    search.start = extend_to_dag(pc_stable(columns, pc).graph, true);
+  }
+  if (choice.algorithm == structure_algorithm::mmhc) {
+    // The restrict phase: PC-stable's skeleton; the maximize phase: hill climbing within it.
+    const edge_constraints constraints(pc.knowledge, order);
+    const auto skeleton = pc_skeleton(columns, constraints, pc);
+    const std::size_t n = columns.size();
+    search.candidates.assign(n * n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      for (std::size_t j = 0; j < n; ++j) {
+        if (i != j && skeleton.graph.adjacent(detail::node(i), detail::node(j))) search.candidates[i * n + j] = 1;
+      }
+    }
+  }
+  auto learned = hill_climb(columns, search);
+  result.edges = learned.edges;
+  dag graph(order);
+  for (const auto& e : result.edges) graph.add_edge(e.from, e.to);
+  result.graph = cpdag_of(graph);
+  result.search = std::move(learned);
+  return result;
+}
+
+/// Learns a structure over every column of `data`.
+[[nodiscard]] inline structure_result learn_structure(const dataset& data, const structure_choice& choice) {
+  const auto names = data.names();
+  return learn_structure(data, names, choice);
+}
+
+}  // namespace pgm

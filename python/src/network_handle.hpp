@@ -1,0 +1,20 @@
+#pragma once
+// The network a Python pgm.Network wraps, with what Python shows beside it.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "pgm/core/bayesian_network.hpp"
+
+namespace pgm::python {
+
+/// A network with what Python shows beside it: the success event a JSON model names, and the
+/// notes of the fit that made it.
+struct network_handle {
+  bayesian_network network;
+  std::optional<std::string> success;
+  std::vector<std::string> notes;
+};
+
+}  // namespace pgm::python
