@@ -91,6 +91,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "pgm 0.1.0");
   pgm::cli::add_discretize_command(app);
   pgm::cli::add_fit_command(app);
+  pgm::cli::add_update_command(app);
   pgm::cli::add_show_command(app);
   pgm::cli::add_convert_command(app);
   pgm::cli::add_transfer_command(app);

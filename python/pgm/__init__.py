@@ -114,8 +114,28 @@ class Network:
         return pd.DataFrame(columns)
 
     def write(self, path):
-        """Writes the network as .bif, .xml (XMLBIF), .net (Hugin) or .json (by the extension), atomically."""
+        """Writes the network as .bif, .xml (XMLBIF), .net (Hugin) or .json (by the extension), atomically.
+        A network with counts (`has_counts`) keeps them in a .json file."""
         self._net.write(_path(path, "path"))
+
+    @property
+    def has_counts(self):
+        """Whether the network carries the counts it was estimated from, so that `update` can
+        add rows to them (pgm.fit(..., keep_counts=True), or a model file written so)."""
+        return self._net.has_counts
+
+    def update(self, data, decay=1.0, *, threads=0):
+        """A new network: this one's counts, times `decay` in (0, 1], plus the rows of `data` (a
+        DataFrame with a column per variable, holding the network's states; a missing value
+        leaves out only the tables it is in), each table estimated again under the prior it was
+        fitted with. With decay 1 it equals fitting all the rows at once, to the last bit. As
+        `pgm update`; the network itself is unchanged."""
+        decay = _real(decay, "decay")
+        if not 0 < decay <= 1:
+            raise Error(f"decay must be in (0, 1], got {decay}")
+        names = self.variables
+        columns = _frame.columns_of(data, names)
+        return Network(_core.update(self._net, columns, _frame.column_names(data), decay, _whole(threads, "threads")))
 
     def to_pgmpy(self):
         """The network as a pgmpy model (pgmpy must be importable)."""
@@ -220,6 +240,13 @@ def fit(
     match=None,
     threads=0,
     missing="error",
+    latent=None,
+    restarts=1,
+    seed=0,
+    max_iterations=100,
+    tolerance=1e-6,
+    hard=False,
+    keep_counts=False,
 ):
     """Estimates every table of the network `edges` describe from `data`, as `pgm fit`.
 
@@ -233,14 +260,23 @@ def fit(
     for ({name: edges} from pgm.discretize, or an edges file), kept with the model. missing:
     what a missing value (NaN, None, pd.NA) does, as `--missing`: "error" (the default), "drop"
     (rows with one are left out, with a warning) or "available" (each table counted over the
-    rows where its family is present).
+    rows where its family is present) or "em" (expectation-maximization, as `--missing em`:
+    the missing values and the `latent` variables are estimated; docs/incomplete-data.md).
+    latent: with "em", the variables of the edges that no column holds, {name: number of
+    states (named 0, 1, ...) or a list of state names}. restarts, seed: random starts of the
+    latent tables (the best kept) and their seed; max_iterations, tolerance: when EM stops
+    (relative change of the log-likelihood plus the prior's term); hard: hard EM. How EM went
+    is in the network's `notes`. keep_counts: keep the counts with the network, so that
+    `Network.update` can add rows later (as `--keep-counts`; not with "em").
     """
     names = _frame.column_names(data)
     pairs = _edge_pairs(edges)
     if not pairs:
         raise Error('edges is empty: give the network\'s edges, e.g. "a->b,c->b" or [("a", "b")]')
     wanted = {name for pair in pairs for name in pair}
-    data = _frame.with_missing(data, wanted, missing)
+    em = _em_arguments(missing, latent, restarts, seed, max_iterations, tolerance, hard, keep_counts)
+    latent_states = _latent_states(latent, wanted)
+    data = _frame.with_missing(data, wanted, "available" if missing == "em" else missing)
     columns = _frame.columns_of(data, wanted)
     interval_edges, interval_file = _edges_argument(intervals, "intervals")
     if prior_model is None:
@@ -281,8 +317,55 @@ def fit(
         weight,
         _text(success, "success") or "1",
         _text(match, "match") or "midpoint",
+        em,
+        latent_states,
+        _flag(keep_counts, "keep_counts"),
     )
     return Network(net)
+
+
+def _em_arguments(missing, latent, restarts, seed, max_iterations, tolerance, hard, keep_counts):
+    """missing="em"'s options for _core.fit, None for any other rule (whose EM options are
+    refused when set)."""
+    if missing not in ("error", "drop", "available", "em"):
+        raise Error(f"missing must be one of error, drop, available, em, got {missing!r}")
+    if missing != "em":
+        if latent is not None:
+            raise Error('latent applies with missing="em"')
+        return None
+    if keep_counts:
+        raise Error('keep_counts does not apply with missing="em": EM\'s counts are expectations under its tables')
+    tolerance = _real(tolerance, "tolerance")
+    if not tolerance >= 0:  # also NaN
+        raise Error(f"tolerance must be a number >= 0, got {tolerance}")
+    return (
+        _whole(restarts, "restarts", 1),
+        _whole(seed, "seed"),
+        _whole(max_iterations, "max_iterations"),
+        tolerance,
+        _flag(hard, "hard"),
+    )
+
+
+def _latent_states(latent, variables):
+    """[(name, states)] of latent={name: count or states}, each a variable of the edges."""
+    if latent is None:
+        return []
+    if not isinstance(latent, Mapping):
+        raise TypeError(f"latent must be a dict {{name: number of states or list of states}}, got {latent!r}")
+    result = []
+    for name, states in latent.items():
+        _text(name, "latent's names")
+        if name not in variables:
+            raise Error(f"the latent variable '{name}' is in no edge")
+        if isinstance(states, numbers.Integral) and not isinstance(states, bool):
+            count = _whole(states, f"latent['{name}']", 1)
+            result.append((name, [str(k) for k in range(count)]))
+        elif isinstance(states, (list, tuple)) and states and all(isinstance(x, str) for x in states):
+            result.append((name, list(states)))
+        else:
+            raise TypeError(f"latent['{name}'] must be a number of states or a list of state names, got {states!r}")
+    return result
 
 
 def query(network, variables, evidence=None, *, do=None, engine="auto", soft_evidence=None):

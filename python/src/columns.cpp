@@ -315,6 +315,11 @@ family_counts numpy_source::count(const family_count_request& request) {
   return dataset_source(*data_).count(request);
 }
 
+dataset numpy_source::read(const family_count_request& request, family_counts& result) {
+  if (!data_) data_ = make_dataset(*columns_, name_);
+  return dataset_source(*data_).read(request, result);
+}
+
 std::optional<family_counts> numpy_source::count_by_value(const family_count_request& request) const {
   if (!request.variables.empty() || !request.intervals.empty()) return std::nullopt;
   std::vector<named_value_column> values;

@@ -56,6 +56,8 @@ class numpy_source {
   [[nodiscard]] std::string name() const { return name_; }
   [[nodiscard]] static bool holds_counts() noexcept { return true; }
   [[nodiscard]] family_counts count(const family_count_request& request);
+  /// The requested columns as a data set, missing values kept: what EM reads (row_source).
+  [[nodiscard]] dataset read(const family_count_request& request, family_counts& result);
 
  private:
   [[nodiscard]] std::optional<family_counts> count_by_value(const family_count_request& request) const;

@@ -15,6 +15,7 @@
 #include <mutex>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -36,6 +37,7 @@
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/estimator_choice.hpp"
+#include "pgm/learn/expectation_maximization.hpp"
 #include "pgm/learn/fit.hpp"
 #include "pgm/learn/fit_pipeline.hpp"
 #include "pgm/learn/learn_structure.hpp"
@@ -89,8 +91,8 @@ std::vector<std::string> names_of(const std::vector<variable>& variables) {
 // ---- the network ---------------------------------------------------------------------------
 
 network_handle read_network_file(const std::filesystem::path& path) {
-  auto network = read_network(path);
-  return {std::move(network), read_success_metadata(path), {}};
+  auto model = read_model(path);
+  return {model.network(), read_success_metadata(path), {}, std::move(model.statistics)};
 }
 
 /// A table for pgm/__init__.py: the parents' names, each configuration's parent state codes
@@ -161,7 +163,23 @@ struct fit_arguments {
   std::optional<std::string> intervals_file;
   const network_handle* prior_model = nullptr;
   transfer_settings transfer;
+  /// missing="em": how EM runs, and the latent variables with their states.
+  std::optional<em_options> em;
+  std::vector<latent_variable> latent;
+  bool keep_counts = false;
 };
+
+/// missing="em"'s options as pgm/__init__.py passes them: (restarts, seed, max_iterations,
+/// tolerance, hard).
+using em_arguments = std::tuple<std::size_t, std::uint64_t, std::size_t, double, bool>;
+
+em_options em_options_of(const em_arguments& args, unsigned threads) {
+  em_options options;
+  std::tie(options.restarts, options.seed, options.max_iterations, options.tolerance, std::ignore) = args;
+  options.kind = std::get<4>(args) ? em_kind::hard : em_kind::soft;
+  options.threads = threads;
+  return options;
+}
 
 network_handle fit_frame(const py::list& columns, const std::vector<std::string>& available, const edge_pairs& pairs,
                          const fit_arguments& args) {
@@ -170,8 +188,16 @@ network_handle fit_frame(const py::list& columns, const std::vector<std::string>
   const py::gil_scoped_release release;
   fit_request request;
   auto edges = to_edges(pairs);
-  require_columns(detail::columns_of(edges), available, "DataFrame");
+  auto columns = detail::columns_of(edges);
+  std::erase_if(columns, [&](const std::string& name) {
+    return std::any_of(args.latent.begin(), args.latent.end(),
+                       [&](const latent_variable& v) { return v.name == name; });
+  });
+  require_columns(columns, available, "DataFrame");
   request.structure = std::move(edges);
+  request.em = args.em;
+  request.latent = args.latent;
+  request.keep_statistics = args.keep_counts;
   request.options.prior = prior_of(args.estimator);
   if (args.empty != "uniform" && args.empty != "fail") {
     throw error("empty must be uniform or fail, got '" + args.empty + "'");
@@ -191,6 +217,7 @@ network_handle fit_frame(const py::list& columns, const std::vector<std::string>
   numpy_source source(buffers, "DataFrame");
   auto fitted = fit(source, request);
   std::vector<std::string> notes;
+  if (fitted.em) notes.push_back(summary_of(*fitted.em));
   if (fitted.transfer) {
     const auto& report = *fitted.transfer;
     if (report.map_proposed) notes.push_back("map='auto': " + to_string(report.map));
@@ -202,7 +229,30 @@ network_handle fit_frame(const py::list& columns, const std::vector<std::string>
                       "' with w = " + detail::format_short(entry.weight));
     }
   }
-  return {std::move(fitted.network), std::nullopt, std::move(notes)};
+  return {std::move(fitted.network), std::nullopt, std::move(notes), std::move(fitted.statistics)};
+}
+
+/// The network with the frame's rows added to its counts (Network.update).
+network_handle update_frame(const network_handle& handle, const py::list& columns,
+                            const std::vector<std::string>& available, double decay, unsigned threads) {
+  if (!handle.statistics) {
+    throw error(
+        "the network carries no counts to add the rows to: fit it with keep_counts=True (or read a model "
+        "written so, or by pgm fit --keep-counts)");
+  }
+  std::vector<py::array> keep;
+  const auto buffers = read_column_buffers(columns, keep);
+  const py::gil_scoped_release release;
+  std::vector<std::string> names;
+  for (const auto& v : handle.network.variables()) names.push_back(v.name());
+  require_columns(names, available, "DataFrame");
+  update_request request;
+  request.missing.policy = missing_policy::available;  // a missing value leaves out only its families
+  request.threads = threads;
+  request.decay = decay;
+  numpy_source source(buffers, "DataFrame");
+  auto updated_model = update(source, handle.network.structure(), *handle.statistics, request);
+  return {std::move(updated_model.network), handle.success, {}, std::move(updated_model.statistics)};
 }
 
 // ---- decide --------------------------------------------------------------------------------
@@ -568,7 +618,13 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("success", [](const network_handle& h) { return h.success; })
       .def_property_readonly("notes", [](const network_handle& h) { return h.notes; })
       .def("table", &table_of)
-      .def("write", [](const network_handle& h, const std::filesystem::path& path) { write_network(h.network, path); })
+      .def("write",
+           [](const network_handle& h, const std::filesystem::path& path) {
+             // The counts go where they can be kept: into a JSON model.
+             const bool keeps = h.statistics && format_of(path) == network_format::json;
+             write_network(h.network, path, {.statistics = keeps ? &*h.statistics : nullptr});
+           })
+      .def_property_readonly("has_counts", [](const network_handle& h) { return h.statistics.has_value(); })
       .def("to_json", [](const network_handle& h) { return pgm::to_json(h.network).dump(2); });
 
   m.def("read_network", &read_network_file);
@@ -583,8 +639,11 @@ PYBIND11_MODULE(_core, m) {
          std::optional<double> ess, const std::string& empty, unsigned threads,
          const std::optional<edges_by_name>& intervals, const std::optional<std::string>& intervals_file,
          const network_handle* prior_model, const std::string& strategy, const std::string& map,
-         std::optional<double> w_prior, const std::string& success, const std::string& match) {
+         std::optional<double> w_prior, const std::string& success, const std::string& match,
+         const std::optional<em_arguments>& em,
+         const std::vector<std::pair<std::string, std::vector<std::string>>>& latent, bool keep_counts) {
         fit_arguments args;
+        args.keep_counts = keep_counts;
         args.estimator = {estimator, prior.value_or(""), alpha, ess};
         args.empty = empty;
         args.threads = threads;
@@ -598,12 +657,16 @@ PYBIND11_MODULE(_core, m) {
         if (match != "midpoint" && match != "overlap")
           throw pgm::error("match must be midpoint or overlap, got '" + match + "'");
         args.transfer.matching = match == "overlap" ? pgm::state_matching::overlap : pgm::state_matching::midpoint;
+        if (em) args.em = em_options_of(*em, threads);
+        for (const auto& [name, states] : latent) args.latent.push_back({name, states});
         return fit_frame(columns, available, edges, args);
       },
       py::arg("columns"), py::arg("available"), py::arg("edges"), py::arg("estimator"), py::arg("prior"),
       py::arg("alpha"), py::arg("ess"), py::arg("empty"), py::arg("threads"), py::arg("intervals"),
       py::arg("intervals_file"), py::arg("prior_model").none(true), py::arg("strategy"), py::arg("map"),
-      py::arg("w_prior"), py::arg("success"), py::arg("match"));
+      py::arg("w_prior"), py::arg("success"), py::arg("match"), py::arg("em").none(true), py::arg("latent"),
+      py::arg("keep_counts"));
+  m.def("update", &update_frame);
 
   add_inference(m);
   add_causal(m);

@@ -206,3 +206,134 @@ def test_integer_codes_equal_the_programs_to_the_last_bit(program, tmp_path, nam
         assert_same_network(pgm.fit(frame, edges, threads=threads, **kwargs), theirs)
     # The same values as strings take the general way, with the same states.
     assert_same_network(pgm.fit(frame.astype(str), edges, **kwargs), theirs)
+
+
+# ---- missing="em" ------------------------------------------------------------------------------
+
+
+def latent_class_frame(rows, seed):
+    """Three yes/no indicators of a two-class cause H that no column holds, with a tenth of the
+    values missing (NaN in float columns, as pandas reads gaps)."""
+    random = np.random.default_rng(seed)
+    h = random.random(rows) < 0.6
+    frame = pd.DataFrame(
+        {
+            name: np.where(h, random.random(rows) < high, random.random(rows) < low).astype(float)
+            for name, high, low in (("X1", 0.8, 0.1), ("X2", 0.9, 0.2), ("X3", 0.75, 0.3))
+        }
+    )
+    return frame.mask(random.random(frame.shape) < 0.1)
+
+
+def write_with_gaps(frame, path):
+    """The frame as the program reads it: whole numbers without ".0", a gap where a value is missing."""
+    frame.astype("Int64").to_csv(path, index=False)
+
+
+def test_em_with_missing_values_equals_the_programs_to_the_last_bit(program, tmp_path):
+    two = stacking_frame(400, 3)[["xOff1", "yOff1", "xOff2", "onTop1", "onTop2"]].astype(float)
+    two = two.mask(np.random.default_rng(4).random(two.shape) < 0.15)
+    write_with_gaps(two, tmp_path / "gaps.csv")
+    edges = "xOff1->onTop1,yOff1->onTop1,onTop1->onTop2,xOff2->onTop2"
+    for kwargs, arguments in (
+        ({}, []),
+        ({"hard": True, "estimator": "bayes", "prior": "k2"}, ["--hard", "--estimator", "bayes", "--prior", "k2"]),
+    ):
+        ours = pgm.fit(two, edges, missing="em", **kwargs)
+        program.run("fit", "--data", tmp_path / "gaps.csv", "--edges", edges, "--missing", "em", *arguments,
+                    "--out", tmp_path / "em.json")
+        assert_same_network(ours, pgm.read_network(tmp_path / "em.json"))
+        assert any(note.startswith("EM: ") for note in ours.notes)
+
+
+def test_em_with_a_latent_variable_equals_the_programs_to_the_last_bit(program, tmp_path):
+    frame = latent_class_frame(500, 6)
+    write_with_gaps(frame, tmp_path / "trials.csv")
+    edges = "H->X1,H->X2,H->X3"
+    ours = pgm.fit(frame, edges, missing="em", latent={"H": ["low", "high"]}, restarts=3, seed=9)
+    program.run("fit", "--data", tmp_path / "trials.csv", "--edges", edges, "--missing", "em",
+                "--latent", "H=low,high", "--restarts", "3", "--seed", "9", "--out", tmp_path / "em.json")
+    assert_same_network(ours, pgm.read_network(tmp_path / "em.json"))
+    assert ours.states("H") == ["low", "high"]
+    by_count = pgm.fit(frame, edges, missing="em", latent={"H": 2}, restarts=3, seed=9)
+    assert by_count.states("H") == ["0", "1"]
+
+
+def test_em_arguments_are_checked():
+    frame = latent_class_frame(50, 1)
+    edges = "H->X1,H->X2,H->X3"
+    with pytest.raises(pgm.Error, match='latent applies with missing="em"'):
+        pgm.fit(frame.dropna(), edges, latent={"H": 2})
+    with pytest.raises(pgm.Error, match="missing must be one of error, drop, available, em"):
+        pgm.fit(frame, edges, missing="EM")
+    with pytest.raises(pgm.Error, match="'Z' is in no edge"):
+        pgm.fit(frame, edges, missing="em", latent={"H": 2, "Z": 2})
+    with pytest.raises(pgm.Error, match="'X1' is declared latent but is a column"):
+        pgm.fit(frame, edges, missing="em", latent={"H": 2, "X1": 2})
+    with pytest.raises(TypeError, match="latent\\['H'\\] must be a number of states"):
+        pgm.fit(frame, edges, missing="em", latent={"H": 2.5})
+    with pytest.raises(pgm.Error, match="restarts must be a whole number of at least 1"):
+        pgm.fit(frame, edges, missing="em", latent={"H": 2}, restarts=0)
+    with pytest.raises(pgm.Error, match="tolerance must be a number >= 0"):
+        pgm.fit(frame, edges, missing="em", latent={"H": 2}, tolerance=float("nan"))
+    with pytest.raises(pgm.Error, match="H"):
+        pgm.fit(frame, edges, missing="em")  # H is in no column and not declared latent
+
+
+# ---- keep_counts and Network.update ----------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "kwargs",
+    [{}, {"estimator": "bayes", "prior": "k2"}, {"estimator": "bayes", "prior": "bdeu", "ess": 4.0}],
+)
+def test_an_update_equals_fitting_all_the_rows_to_the_last_bit(kwargs):
+    first = stacking_frame(600, 11)
+    second = stacking_frame(300, 12)
+    fitted = pgm.fit(first, TWO_EDGES, keep_counts=True, **kwargs)
+    assert fitted.has_counts
+    updated = fitted.update(second)
+    assert_same_network(updated, pgm.fit(pd.concat([first, second], ignore_index=True), TWO_EDGES, **kwargs))
+    assert updated.has_counts
+    assert not pgm.fit(first, TWO_EDGES).has_counts
+
+
+def test_an_update_with_a_transferred_prior_keeps_its_weight(tasks):
+    one, two, tmp_path = tasks
+    prior = pgm.read_network(tmp_path / "one.json")
+    more = stacking_frame(200, 13)
+    arguments = {"prior_model": prior, "map": MAP, "w_prior": 7}
+    updated = pgm.fit(two, TWO_EDGES, keep_counts=True, **arguments).update(more)
+    assert_same_network(updated, pgm.fit(pd.concat([two, more], ignore_index=True), TWO_EDGES, **arguments))
+
+
+def test_the_counts_go_through_a_json_file_and_equal_pgm_update(program, tmp_path):
+    first = stacking_frame(500, 14)
+    second = stacking_frame(250, 15)
+    first.to_csv(tmp_path / "first.csv", index=False)
+    second.to_csv(tmp_path / "second.csv", index=False)
+    pgm.fit(first, ONE_EDGES, estimator="bayes", prior="k2", keep_counts=True).write(tmp_path / "py.json")
+    read = pgm.read_network(tmp_path / "py.json")
+    assert read.has_counts
+    ours = read.update(second, decay=0.5)
+    program.run("fit", "--data", tmp_path / "first.csv", "--edges", ONE_EDGES, "--estimator", "bayes", "--prior",
+                "k2", "--keep-counts", "--out", tmp_path / "cli.json")
+    program.run("update", "--model", tmp_path / "cli.json", "--data", tmp_path / "second.csv", "--decay", "0.5",
+                "--out", tmp_path / "cli2.json")
+    assert_same_network(ours, pgm.read_network(tmp_path / "cli2.json"))
+    # A BIF file cannot hold the counts: the network is written without them.
+    ours.write(tmp_path / "no-counts.bif")
+    assert not pgm.read_network(tmp_path / "no-counts.bif").has_counts
+
+
+def test_update_arguments_are_checked():
+    frame = stacking_frame(100, 16)
+    with pytest.raises(pgm.Error, match="carries no counts"):
+        pgm.fit(frame, ONE_EDGES).update(frame)
+    kept = pgm.fit(frame, ONE_EDGES, keep_counts=True)
+    with pytest.raises(pgm.Error, match="decay must be in \\(0, 1\\]"):
+        kept.update(frame, decay=0)
+    with pytest.raises(pgm.Error, match="there is no column 'yOff1'|yOff1"):
+        kept.update(frame.drop(columns=["yOff1"]))
+    with pytest.raises(pgm.Error, match="keep_counts does not apply"):
+        pgm.fit(frame, ONE_EDGES, missing="em", keep_counts=True)

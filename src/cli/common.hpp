@@ -102,6 +102,7 @@ void note(const std::string& text);
 bool stderr_is_terminal();
 
 void add_fit_command(CLI::App& app);
+void add_update_command(CLI::App& app);
 void add_discretize_command(CLI::App& app);
 void add_show_command(CLI::App& app);
 void add_transfer_command(CLI::App& app);

@@ -45,6 +45,7 @@ struct fit_arguments {
   double tolerance = 1e-6;
   bool hard = false;
   bool verbose = false;
+  bool keep_counts = false;
 };
 
 /// --latent NAME:COUNT (states 0 … COUNT-1), NAME=STATE,STATE,… or NAME (a model's states).
@@ -89,14 +90,6 @@ em_options em_options_of(const fit_arguments& args) {
   return options;
 }
 
-void note_em(const em_result& em) {
-  note("EM: " + std::to_string(em.iterations) + " iterations" +
-       (em.converged ? " (converged)" : " (stopped at --max-iterations)") + ", log-likelihood " +
-       detail::format_double(em.log_likelihood) + ", " + std::to_string(em.patterns) + " distinct rows (" +
-       std::to_string(em.incomplete_patterns) + " with a missing value)" +
-       (em.restart > 0 ? ", from start " + std::to_string(em.restart + 1) : ""));
-}
-
 /// Says which priors were transferred, with which weights, and how they were chosen.
 void note_transfer(const transfer_report& report, const std::string& strategy) {
   if (report.map_proposed) note("--map auto: " + to_string(report.map));
@@ -111,6 +104,10 @@ void note_transfer(const transfer_report& report, const std::string& strategy) {
 
 void run_fit(const fit_arguments& args) {
   require_network_extension(args.out);
+  if (args.keep_counts && format_of(args.out) != network_format::json) {
+    throw error("--keep-counts: the counts are kept in pgm's JSON models only; give --out a .json file, not '" +
+                args.out + "'");
+  }
   if (args.data == "-" && detail::processes().size() > 1) {
     throw error("--data -: standard input reaches one process only; under mpirun give a file every process can read");
   }
@@ -123,9 +120,15 @@ void run_fit(const fit_arguments& args) {
   if (em) {
     request.em = em_options_of(args);
     for (const auto& text : args.latent) request.latent.push_back(latent_of(text));
+    if (args.keep_counts) {
+      throw error(
+          "--keep-counts does not apply with --missing em: EM's counts are expectations under its tables, "
+          "which new rows would change");
+    }
   } else if (!args.latent.empty()) {
     throw error("--latent applies with --missing em");
   }
+  request.keep_statistics = args.keep_counts;
   if (!args.discretization_file.empty()) request.bin = read_discretization_json(args.discretization_file);
   if (!args.intervals_file.empty()) {
     request.intervals = read_discretization_json(args.intervals_file);
@@ -167,7 +170,7 @@ void run_fit(const fit_arguments& args) {
         read_discrete_data(args.data, {}, {&request.bin, args.model.empty() ? nullptr : &known, request.missing});
     dataset_source source(data);
     fitted = fit(source, request);
-    note_em(*fitted.em);
+    note(summary_of(*fitted.em));
   } else {
     // The data are never held in memory: each node's family is counted as the file streams
     // by, over every process under mpirun; process 0 fits and writes.
@@ -178,7 +181,7 @@ void run_fit(const fit_arguments& args) {
     note_counts(fitted.counts, request.bin);
   }
   if (fitted.transfer) note_transfer(*fitted.transfer, args.transfer.strategy);
-  write_network(fitted.network, args.out);
+  write_network(fitted.network, args.out, {.statistics = fitted.statistics ? &*fitted.statistics : nullptr});
   summary_stream(args.out) << "fitted " << fitted.network.size() << " tables (" << fitted.network.free_parameters()
                            << " free parameters) from " << fitted.counts.rows << " rows -> " << args.out << '\n';
 }
@@ -239,6 +242,8 @@ void add_fit_command(CLI::App& app) {
   cmd->add_flag("--hard", args->hard,
                 "With --missing em: hard EM (each incomplete row completed by its most probable values)");
   cmd->add_flag("--verbose", args->verbose, "With --missing em: print the log-likelihood of every iteration");
+  cmd->add_flag("--keep-counts", args->keep_counts,
+                "Keep the counts and priors in the model (.json), so that pgm update can add new data to it");
   add_transfer_options(*cmd, args->transfer, true);
   cmd->callback([args] {
     if (args->edges.empty() && args->model.empty()) throw error("give the structure with --edges or --model");

@@ -327,12 +327,15 @@ class xmlbif_reader {
     return static_cast<std::size_t>(std::max<std::ptrdiff_t>(node.offset_debug(), 0));
   }
 
+  /// Where a node starts: offset_debug points at the name after '<' for elements; this is the '<'.
+  static std::size_t start_of(const pugi::xml_node& node) {
+    const auto o = offset_of(node);
+    return node.type() == pugi::node_element && o > 0 ? o - 1 : o;
+  }
+
   detail::text_position at(const pugi::xml_node& node) const {
-    const auto offset = node.offset_debug();
-    if (offset < 0) return {};
-    // offset_debug points at the name after '<' for elements; report the '<'.
-    const auto o = static_cast<std::size_t>(offset);
-    return detail::position_of(text_, node.type() == pugi::node_element && o > 0 ? o - 1 : o);
+    if (node.offset_debug() < 0) return {};
+    return detail::position_of(text_, start_of(node));
   }
 
   /// An element's text as ElementTree's `.text` gives it (what pgmpy reads): its character
@@ -360,7 +363,7 @@ class xmlbif_reader {
     v.at = at(node);
     v.name = single_text(node, "NAME");
     const auto type_attribute = node.attribute("TYPE");
-    const auto type = decoder_.decode(type_attribute.value(), offset_of(node));
+    const auto type = decoder_.decode(type_attribute.value(), start_of(node));
     if (!type.empty() && type != "nature") {
       fail(v.at,
            "variable '" + v.name + "' has TYPE=\"" + type + "\"; only chance (\"nature\") variables are supported");

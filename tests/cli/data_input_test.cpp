@@ -139,7 +139,7 @@ TEST_F(data_input_test, missing_values_are_an_error_by_default_naming_line_and_c
   EXPECT_NE(r.code, 0);
   EXPECT_THAT(r.err, HasSubstr("m.csv:5:5: column 'c': the value is empty, a missing value"));
   expect_failure("fit --data " + data + " --edges \"b->a\" --missing pairwise --out " + out.string(),
-                 "--missing: pairwise not in {error,drop,available}", out);
+                 "--missing: pairwise not in {error,drop,available,em}", out);
 }
 
 TEST_F(data_input_test, missing_values_dropped_with_a_note) {

@@ -105,7 +105,8 @@ bayesian_network brute_force_iteration(const bayesian_network& network, const da
     for (std::size_t u = 0; u < t.configurations(); ++u) {
       double sum = 0.0;
       for (std::size_t x = 0; x < j; ++x) sum += values[u * j + x];
-      for (std::size_t x = 0; x < j; ++x) values[u * j + x] = sum > 0 ? values[u * j + x] / sum : 1.0 / static_cast<double>(j);
+      for (std::size_t x = 0; x < j; ++x)
+        values[u * j + x] = sum > 0 ? values[u * j + x] / sum : 1.0 / static_cast<double>(j);
     }
     tables.emplace_back(t.child(), t.parents(), std::move(values));
   }

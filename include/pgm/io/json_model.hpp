@@ -12,7 +12,8 @@
 ///                  "tags": {"quantity": "x-offset", "unit": "cm", "role": "cubeUp1"}}, …],
 ///   "edges": [["xOff1", "onTop1"], …],
 ///   "tables": [{"variable": "onTop1", "parents": ["xOff1"],
-///               "values": [[0.1, 0.9], [0.8, 0.2]]}, …]   // one row per configuration
+///               "values": [[0.1, 0.9], [0.8, 0.2]]}, …],  // one row per configuration
+///   "statistics": {…}   // optional: the counts and priors (pgm/io/statistics_json.hpp)
 /// }
 
 #include <filesystem>
@@ -31,6 +32,8 @@
 #include "pgm/data/discretizer.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/detail/json_reader.hpp"
+#include "pgm/io/statistics_json.hpp"
+#include "pgm/learn/fit_statistics.hpp"
 
 namespace pgm {
 
@@ -38,6 +41,8 @@ namespace pgm {
 struct model_document {
   network_structure structure;
   std::optional<std::vector<cpt<double>>> tables;
+  /// The counts and priors the tables were estimated from, when the fit kept them.
+  std::optional<fit_statistics> statistics;
 
   /// The network; throws model_error if the file has no tables.
   [[nodiscard]] bayesian_network network() const {
@@ -90,13 +95,21 @@ inline nlohmann::json variable_to_json(const variable& v) {
   return to_json(network.structure(), &network.tables());
 }
 
+/// The network with the counts and priors it was estimated from.
+[[nodiscard]] inline nlohmann::json to_json(const bayesian_network& network, const fit_statistics& statistics) {
+  auto document = to_json(network);
+  document["statistics"] = to_json(statistics);
+  return document;
+}
+
 [[nodiscard]] inline model_document parse_model_json(std::string_view text, const std::string& source) {
   const detail::json_reader reader(source);
   const auto document = reader.parse(text);
   reader.check_format(document, "pgm-model");
   // Free for people and tools: "metadata" (decide/decision_model.hpp reads its "success") and
   // "learned" (how pgm learn-structure found the structure).
-  reader.only_keys(document, "", {"format", "version", "variables", "edges", "tables", "metadata", "learned"});
+  reader.only_keys(document, "",
+                   {"format", "version", "variables", "edges", "tables", "statistics", "metadata", "learned"});
   std::vector<variable> variables;
   const auto& vars = reader.array(reader.member(document, "", "variables"), "/variables");
   for (std::size_t i = 0; i < vars.size(); ++i) {
@@ -162,6 +175,10 @@ inline nlohmann::json variable_to_json(const variable& v) {
       reader.fail("/tables", e.what());
     }
     result.tables = std::move(read_tables);
+  }
+  if (const auto* statistics = reader.optional_member(document, "statistics")) {
+    if (!result.tables) reader.fail("/statistics", "statistics need the tables they were estimated into");
+    result.statistics = parse_statistics_json(reader, *statistics, result.structure);
   }
   return result;
 }

@@ -169,6 +169,8 @@ struct network_write_options {
   bool properties = true;
   /// Receives a line for anything written that a peer would read differently.
   std::vector<std::string>* notes = nullptr;
+  /// The counts and priors to keep with the network, for `pgm update` (JSON models only).
+  const fit_statistics* statistics = nullptr;
 };
 
 /// The text of `network` in `format`; throws model_error for what the format cannot hold.
@@ -191,8 +193,13 @@ struct network_write_options {
 inline void write_network(const bayesian_network& network, const std::filesystem::path& path, network_format format,
                           const network_write_options& options = {}) {
   if (format == network_format::json) {
-    write_model_json(to_json(network), path);
+    write_model_json(options.statistics ? to_json(network, *options.statistics) : to_json(network), path);
     return;
+  }
+  if (options.statistics) {
+    throw model_error("'" + path.string() +
+                      "': the counts a network is updated from are kept in pgm's JSON models "
+                      "only; write a .json file");
   }
   const auto text = to_text(network, format, options);
   detail::write_file_atomically(path, [&](std::ostream& out) { out << text; });

@@ -46,6 +46,7 @@
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/detail/parallel_for.hpp"
+#include "pgm/detail/text.hpp"
 #include "pgm/inference/inference_engine.hpp"
 #include "pgm/inference/junction_tree_engine.hpp"
 #include "pgm/inference/sampling.hpp"
@@ -104,6 +105,15 @@ struct em_result {
   /// The expected counts under the network's last E-step, node by node.
   std::vector<expected_count_table> expected_counts;
 };
+
+/// One line on how EM went, as `pgm fit --missing em` and pgm.fit print it.
+[[nodiscard]] inline std::string summary_of(const em_result& em) {
+  return "EM: " + std::to_string(em.iterations) + " iterations" +
+         (em.converged ? " (converged)" : " (stopped at the iteration limit)") + ", log-likelihood " +
+         detail::format_double(em.log_likelihood) + ", " + std::to_string(em.patterns) + " distinct rows (" +
+         std::to_string(em.incomplete_patterns) + " with a missing value)" +
+         (em.restart > 0 ? ", from start " + std::to_string(em.restart + 1) : "");
+}
 
 /// The pseudo-counts α[x, u] a prior adds to a family's counts, laid out like its table.
 [[nodiscard]] inline std::vector<double> pseudo_counts_of(const parameter_prior& prior, const variable& child,

@@ -25,6 +25,7 @@
 #include "pgm/learn/expectation_maximization.hpp"
 #include "pgm/learn/family_source.hpp"
 #include "pgm/learn/fit.hpp"
+#include "pgm/learn/fit_statistics.hpp"
 #include "pgm/transfer/transfer_settings.hpp"
 
 namespace pgm {
@@ -63,6 +64,9 @@ struct fit_request {
   /// needs its states; with a model structure each names one of its variables, whose states
   /// are the model's (states given must be the same).
   std::vector<latent_variable> latent;
+  /// Keep the counts and priors in fit_result::statistics, so that the network can be
+  /// updated with new data later (a copy of every count table).
+  bool keep_statistics = false;
 };
 
 struct fit_result {
@@ -79,6 +83,9 @@ struct fit_result {
   /// How EM went, when it fitted (its network is `network`, and `counts` holds the
   /// available-case counts, those of latent families empty).
   std::optional<em_result> em;
+  /// The counts and priors the tables were estimated from, for adding data later
+  /// (pgm/learn/fit_statistics.hpp); not for a fit by EM, whose counts are expectations.
+  std::optional<fit_statistics> statistics;
 };
 
 namespace detail {
@@ -272,8 +279,44 @@ template <family_source Source>
                                              *request.prior_network, request.transfer);
   }
   result.network = fit(structure, std::span<const count_table>(counts), options);
+  if (request.keep_statistics) {
+    result.statistics =
+        statistics_of(structure, std::span<const count_table>(counts), static_cast<double>(counted.rows), options);
+  }
   counted.families = std::move(counts);
   result.counts = std::move(counted);
+  return result;
+}
+
+/// What update() needs besides the model: how to read the new rows, and how much the old
+/// counts still weigh.
+struct update_request {
+  missing_values missing;
+  unsigned threads = 0;
+  /// The old counts are multiplied by this, in (0, 1], before the new ones are added.
+  double decay = 1.0;
+};
+
+/// The network `structure` (the model's: its states are those the new rows must hold) after
+/// the rows of `source` are added to `statistics`, each table estimated again under the prior
+/// it was fitted with. With decay 1 this equals, to the last bit, fitting the old and the new
+/// rows together. The result's `statistics` are the updated ones, its `counts` the new rows'.
+template <family_source Source>
+[[nodiscard]] fit_result update(Source& source, const network_structure& structure, const fit_statistics& statistics,
+                                const update_request& request) {
+  if (!(request.decay > 0.0 && request.decay <= 1.0)) {
+    throw model_error("the decay must be in (0, 1], got " + detail::format_double(request.decay));
+  }
+  fit_request counting;
+  counting.structure = structure;
+  counting.missing = request.missing;
+  counting.options.counting.threads = request.threads;
+  auto result = fit(source, counting);
+  if (!result.holds_network) return result;
+  auto next = updated(statistics, std::span<const count_table>(result.counts.families),
+                      static_cast<double>(result.counts.rows), request.decay);
+  result.network = estimate_network(structure, next);
+  result.statistics = std::move(next);
   return result;
 }
 

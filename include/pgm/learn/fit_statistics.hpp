@@ -1,0 +1,130 @@
+#pragma once
+/// \file
+/// What a fit learned from its data, kept beside the network so that new data can be added
+/// later without the old rows: each family's counts M[x, u], the rows they came from, and the
+/// prior and options each table was estimated with. Counts are additive, so updating with new
+/// rows and estimating again gives, to the last bit, the network fitted on all the rows at once
+/// (with the same prior; a weight w chosen automatically is kept at its first value). A decay
+/// λ < 1 multiplies the old counts first, so that old trials weigh less than new ones (a task
+/// that drifts); the counts are then no longer whole numbers.
+
+#include <cmath>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/error.hpp"
+#include "pgm/core/network_structure.hpp"
+#include "pgm/detail/text.hpp"
+#include "pgm/learn/estimate.hpp"
+#include "pgm/learn/fit.hpp"
+#include "pgm/learn/parameter_prior.hpp"
+#include "pgm/learn/sufficient_statistics.hpp"
+
+namespace pgm {
+
+struct fit_statistics {
+  /// Rows counted (after a decay, the decayed sum).
+  double rows = 0.0;
+  /// Each node's counts, in node order, over the network's variables.
+  std::vector<expected_count_table> counts;
+  /// The prior each node's table was estimated with, in node order. A user's prior
+  /// (any_parameter_prior) is kept as its pseudo-counts.
+  std::vector<parameter_prior> priors;
+  estimate_options estimation;
+};
+
+namespace detail {
+
+/// A prior as it can be kept in a file: a user's type-erased prior becomes its pseudo-counts,
+/// which estimate() treats alike.
+[[nodiscard]] inline parameter_prior storable_prior(const parameter_prior& prior, const variable& child,
+                                                    const std::vector<variable>& parents) {
+  if (const auto* own = std::get_if<any_parameter_prior>(&prior)) {
+    return pseudo_counts_prior{own->pseudo_counts(child, parents)};
+  }
+  return prior;
+}
+
+template <class Count>
+[[nodiscard]] expected_count_table as_expected(const basic_count_table<Count>& counts) {
+  expected_count_table result(counts.child(), counts.parents());
+  auto cells = result.counts();
+  const auto from = counts.counts();
+  for (std::size_t c = 0; c < cells.size(); ++c) cells[c] = static_cast<double>(from[c]);
+  return result;
+}
+
+}  // namespace detail
+
+/// The statistics of a fit of `structure` from `counts` (one table per node, in node order)
+/// over `rows` rows, with the priors and options of `options`.
+template <class Count>
+[[nodiscard]] fit_statistics statistics_of(const network_structure& structure,
+                                           std::span<const basic_count_table<Count>> counts, double rows,
+                                           const fit_options& options) {
+  if (counts.size() != structure.size()) {
+    throw model_error("statistics need one count table per node: " + std::to_string(structure.size()) + " nodes, " +
+                      std::to_string(counts.size()) + " tables");
+  }
+  fit_statistics result;
+  result.rows = rows;
+  result.estimation = options.estimation;
+  for (std::size_t i = 0; i < structure.size(); ++i) {
+    const variable_id node(static_cast<variable_id::rep>(i));
+    const auto& child = structure.at(node);
+    const auto own = options.node_priors.find(child.name());
+    const auto& prior = own != options.node_priors.end() ? own->second : options.prior;
+    result.counts.push_back(detail::as_expected(counts[i]));
+    result.priors.push_back(detail::storable_prior(prior, child, structure.parent_variables(node)));
+  }
+  return result;
+}
+
+/// The network the statistics give: each table estimated from its counts under its prior.
+[[nodiscard]] inline bayesian_network estimate_network(const network_structure& structure,
+                                                       const fit_statistics& statistics) {
+  if (statistics.counts.size() != structure.size() || statistics.priors.size() != structure.size()) {
+    throw model_error("the statistics hold " + std::to_string(statistics.counts.size()) +
+                      " count tables for a network of " + std::to_string(structure.size()) + " nodes");
+  }
+  std::vector<cpt<double>> tables;
+  for (std::size_t i = 0; i < structure.size(); ++i) {
+    tables.push_back(estimate(statistics.counts[i], statistics.priors[i], statistics.estimation));
+  }
+  return bayesian_network(structure, std::move(tables));
+}
+
+/// The statistics after new data: decay · the old counts + the new counts (one table per node,
+/// in node order, over the same families and states). `decay` is in (0, 1]; 1 keeps every old
+/// row at full weight, so that the update equals a fit on all the rows.
+template <class Count>
+[[nodiscard]] fit_statistics updated(const fit_statistics& old, std::span<const basic_count_table<Count>> more,
+                                     double more_rows, double decay = 1.0) {
+  if (!(decay > 0.0 && decay <= 1.0)) {
+    throw model_error("the decay must be in (0, 1], got " + detail::format_double(decay));
+  }
+  if (more.size() != old.counts.size()) {
+    throw model_error("the new counts have " + std::to_string(more.size()) + " tables, the model " +
+                      std::to_string(old.counts.size()));
+  }
+  fit_statistics result = old;
+  result.rows = decay * old.rows + more_rows;
+  for (std::size_t i = 0; i < more.size(); ++i) {
+    auto& counts = result.counts[i];
+    if (more[i].child() != counts.child() || more[i].parents() != counts.parents()) {
+      throw model_error("the new counts of '" + more[i].child().name() +
+                        "' are over another family or other states than the model's");
+    }
+    auto cells = counts.counts();
+    const auto added = more[i].counts();
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      cells[c] = (decay == 1.0 ? cells[c] : decay * cells[c]) + static_cast<double>(added[c]);
+    }
+  }
+  return result;
+}
+
+}  // namespace pgm

@@ -1,0 +1,83 @@
+// pgm update: add new rows to a fitted network that kept its counts (pgm fit --keep-counts)
+// and estimate its tables again under the priors it was fitted with.
+
+#include <memory>
+#include <string>
+
+#include "cli/common.hpp"
+#include "pgm/data/csv_source.hpp"
+#include "pgm/detail/process_group.hpp"
+#include "pgm/io/network_file.hpp"
+#include "pgm/learn/fit_pipeline.hpp"
+
+namespace pgm::cli {
+namespace {
+
+struct update_arguments {
+  std::string model;
+  std::string data;
+  double decay = 1.0;
+  unsigned threads = 0;
+  std::string out;
+  missing_arguments missing;
+};
+
+void run_update(const update_arguments& args) {
+  require_network_extension(args.out);
+  if (format_of(args.out) != network_format::json) {
+    throw error(
+        "--out: an updated network keeps its counts, which pgm's JSON models alone hold; give a .json file, "
+        "not '" +
+        args.out + "'");
+  }
+  if (args.data == "-" && detail::processes().size() > 1) {
+    throw error("--data -: standard input reaches one process only; under mpirun give a file every process can read");
+  }
+  const auto model = read_model_file(args.model);
+  if (!model.statistics) {
+    throw error("'" + args.model +
+                "' carries no counts to add the new rows to: fit it with pgm fit --keep-counts "
+                "--out MODEL.json");
+  }
+  update_request request;
+  request.missing = missing_of(args.missing);
+  request.threads = args.threads;
+  request.decay = args.decay;
+  csv_reader input(args.data);
+  csv_source source(input, detail::processes());
+  const auto updated_model = update(source, model.structure, *model.statistics, request);
+  if (!updated_model.holds_network) return;
+  note_counts(updated_model.counts, {});
+  write_network(updated_model.network, args.out, {.statistics = &*updated_model.statistics});
+  summary_stream(args.out) << "updated " << updated_model.network.size() << " tables with " << updated_model.counts.rows
+                           << " new rows (" << detail::format_double(updated_model.statistics->rows) << " rows in all"
+                           << (args.decay < 1.0 ? ", old rows weighted by the decay" : "") << ") -> " << args.out
+                           << '\n';
+}
+
+}  // namespace
+
+void add_update_command(CLI::App& app) {
+  auto args = std::make_shared<update_arguments>();
+  auto* cmd = app.add_subcommand(
+      "update",
+      "Add new rows to a network fitted with --keep-counts and estimate its tables again with the same priors.\n"
+      "Example: pgm update --model robot.json --data today.csv --out robot.json");
+  cmd->add_option("--model", args->model, "The network, fitted with pgm fit --keep-counts (.json)")->required();
+  cmd->add_option("--data", args->data,
+                  std::string("CSV file of the new rows, one column per variable of the model") + data_file_help)
+      ->required();
+  cmd->add_option("--decay", args->decay,
+                  "Weight of the old counts, in (0, 1]: 1 equals fitting all the rows at once, less forgets old "
+                  "trials (a task that drifts)")
+      ->check(number_between(0.0, 1.0, true, false))
+      ->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Counting threads (0: all cores)")
+      ->check(whole_number(0, 1024))
+      ->capture_default_str();
+  cmd->add_option("--out", args->out, "The updated network with its counts (.json; may be --model itself)")->required();
+  add_missing_options(*cmd, args->missing, false);
+  cmd->callback([args] { run_update(*args); });
+}
+
+}  // namespace pgm::cli
