@@ -188,12 +188,12 @@ network_handle fit_frame(const py::list& columns, const std::vector<std::string>
   const py::gil_scoped_release release;
   fit_request request;
   auto edges = to_edges(pairs);
-  auto columns = detail::columns_of(edges);
-  std::erase_if(columns, [&](const std::string& name) {
+  auto observed = detail::columns_of(edges);
+  std::erase_if(observed, [&](const std::string& name) {
     return std::any_of(args.latent.begin(), args.latent.end(),
                        [&](const latent_variable& v) { return v.name == name; });
   });
-  require_columns(columns, available, "DataFrame");
+  require_columns(observed, available, "DataFrame");
   request.structure = std::move(edges);
   request.em = args.em;
   request.latent = args.latent;
@@ -621,7 +621,7 @@ PYBIND11_MODULE(_core, m) {
       .def("write",
            [](const network_handle& h, const std::filesystem::path& path) {
              // The counts go where they can be kept: into a JSON model.
-             const bool keeps = h.statistics && format_of(path) == network_format::json;
+             const bool keeps = h.statistics && pgm::format_of(path) == pgm::network_format::json;
              write_network(h.network, path, {.statistics = keeps ? &*h.statistics : nullptr});
            })
       .def_property_readonly("has_counts", [](const network_handle& h) { return h.statistics.has_value(); })

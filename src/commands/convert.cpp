@@ -32,10 +32,19 @@ void run_convert(const convert_arguments& args) {
     to = format_of(args.out);  // fails, listing the extensions, before anything is read
   }
   detail::check_output_path(args.out);
-  const auto network = read_model_file(args.in).network();
+  const auto model = read_model_file(args.in);
+  const auto network = model.network();
+  // The counts a network is updated from (pgm fit --keep-counts) stay where JSON can hold them.
+  const bool keeps_counts = model.statistics && to == network_format::json;
   std::vector<std::string> notes;
-  write_network(network, args.out, to, {.properties = !args.no_properties, .notes = &notes});
+  write_network(network, args.out, to,
+                {.properties = !args.no_properties,
+                 .notes = &notes,
+                 .statistics = keeps_counts ? &*model.statistics : nullptr});
   for (const auto& line : notes) note(line);
+  if (model.statistics && !keeps_counts) {
+    note("the counts kept in '" + args.in + "' (for pgm update) are not carried by " + std::string(name_of(to)));
+  }
   if (from == network_format::json && to != network_format::json && read_success_metadata(args.in)) {
     note("the success event in the metadata of '" + args.in + "' is not carried by " + std::string(name_of(to)) +
          "; give it to predict and prevent with --success");

@@ -31,7 +31,7 @@ class update_cli_test : public pgm::testing::program_test {
   }
 };
 
-std::vector<double> values_of(const bayesian_network& network, const std::string& name) {
+std::vector<double> node_values(const bayesian_network& network, const std::string& name) {
   const auto values = network.table(network.id(name)).values();
   return {values.begin(), values.end()};
 }
@@ -45,8 +45,8 @@ TEST_F(update_cli_test, a_day_added_equals_both_days_fitted_at_once) {
   ASSERT_EQ(run(fit("both.csv", "both.json")).code, 0);
   const auto updated = read_network(path("robot.json"));
   const auto both = read_network(path("both.json"));
-  EXPECT_EQ(values_of(updated, "onTop"), values_of(both, "onTop"));
-  EXPECT_EQ(values_of(updated, "xOff"), values_of(both, "xOff"));
+  EXPECT_EQ(node_values(updated, "onTop"), node_values(both, "onTop"));
+  EXPECT_EQ(node_values(updated, "xOff"), node_values(both, "xOff"));
   // The updated model keeps its counts: a third day can follow.
   EXPECT_EQ(run("update --model " + path("robot.json").string() + " --data " + path("day2.csv").string() +
                 " --decay 0.5 --out " + path("day3.json").string())

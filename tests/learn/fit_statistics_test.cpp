@@ -25,7 +25,7 @@ using ::testing::HasSubstr;
 using testing::random_network;
 using ::testing::ThrowsMessage;
 
-std::string csv_rows(const dataset& data, bool header) {
+std::string csv_of_rows(const dataset& data, bool header) {
   std::ostringstream out;
   write_csv(data, out);
   auto text = out.str();
@@ -52,17 +52,17 @@ fit_result update_text(const std::string& text, const network_structure& structu
   return update(source, structure, statistics, request);
 }
 
-std::vector<double> values_of(const cpt<double>& table) { return {table.values().begin(), table.values().end()}; }
+std::vector<double> table_values(const cpt<double>& table) { return {table.values().begin(), table.values().end()}; }
 
-void expect_same_tables(const bayesian_network& a, const bayesian_network& b) {
+void expect_same_estimates(const bayesian_network& a, const bayesian_network& b) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
-    EXPECT_EQ(values_of(a.tables()[i]), values_of(b.tables()[i])) << a.tables()[i].child().name();
+    EXPECT_EQ(table_values(a.tables()[i]), table_values(b.tables()[i])) << a.tables()[i].child().name();
   }
 }
 
 /// A user's prior (docs/extending.md): pseudo-counts that grow with the state index.
-struct growing_prior {
+struct growing_pseudo_counts {
   [[nodiscard]] static std::string_view name() { return "growing"; }
   [[nodiscard]] std::vector<double> pseudo_counts(const variable& child, const std::vector<variable>& parents) const {
     std::size_t configurations = 1;
@@ -74,12 +74,12 @@ struct growing_prior {
 };
 
 /// Every prior pgm has, and a transferred one (eq. 8) on one node with a weight w given.
-std::vector<fit_options> every_prior(const bayesian_network& network) {
+std::vector<fit_options> every_prior_kind(const bayesian_network& network) {
   std::vector<fit_options> all(6);
   all[1].prior = dirichlet_prior{0.7};
   all[2].prior = k2_prior{};
   all[3].prior = bdeu_prior{3.0};
-  all[4].prior = growing_prior{};
+  all[4].prior = growing_pseudo_counts{};
   const auto& last = network.tables().back();
   std::vector<double> flat(last.values().size(), 1.0 / static_cast<double>(last.child_cardinality()));
   all[5].prior = bdeu_prior{1.0};
@@ -91,16 +91,16 @@ std::vector<fit_options> every_prior(const bayesian_network& network) {
 TEST(fit_statistics, fitting_d1_then_adding_d2_equals_fitting_both_to_the_last_bit_for_every_prior) {
   for (std::uint64_t seed = 1; seed <= 5; ++seed) {
     const auto network = random_network(seed);
-    const auto first = csv_rows(sample(network, 700, seed), true);
-    const auto second = csv_rows(sample(network, 500, seed + 100), true);
-    const auto both = first + csv_rows(sample(network, 500, seed + 100), false);
-    for (const auto& options : every_prior(network)) {
+    const auto first = csv_of_rows(sample(network, 700, seed), true);
+    const auto second = csv_of_rows(sample(network, 500, seed + 100), true);
+    const auto both = first + csv_of_rows(sample(network, 500, seed + 100), false);
+    for (const auto& options : every_prior_kind(network)) {
       const auto d1 = fit_text(first, network.structure(), options);
       ASSERT_TRUE(d1.statistics.has_value());
-      expect_same_tables(estimate_network(network.structure(), *d1.statistics), d1.network);
+      expect_same_estimates(estimate_network(network.structure(), *d1.statistics), d1.network);
       const auto updated_model = update_text(second, network.structure(), *d1.statistics);
       const auto all = fit_text(both, network.structure(), options);
-      expect_same_tables(updated_model.network, all.network);
+      expect_same_estimates(updated_model.network, all.network);
       EXPECT_EQ(updated_model.statistics->rows, 1200.0);
       EXPECT_EQ(updated_model.counts.rows, 500U);
     }
@@ -119,14 +119,14 @@ TEST(fit_statistics, the_equality_holds_with_missing_values_counted_where_availa
   const auto d1 = fit_text(first, structure, options, available);
   update_request request;
   request.missing = available;
-  expect_same_tables(update_text(second, structure, *d1.statistics, request).network,
+  expect_same_estimates(update_text(second, structure, *d1.statistics, request).network,
                      fit_text(both, structure, options, available).network);
 }
 
 TEST(fit_statistics, survive_the_json_model_file_to_the_last_bit) {
   const auto network = random_network(7);
-  const auto text = csv_rows(sample(network, 300, 7), true);
-  for (const auto& options : every_prior(network)) {
+  const auto text = csv_of_rows(sample(network, 300, 7), true);
+  for (const auto& options : every_prior_kind(network)) {
     const auto fitted = fit_text(text, network.structure(), options);
     const auto document = parse_model_json(to_json(fitted.network, *fitted.statistics).dump(2), "model.json");
     ASSERT_TRUE(document.statistics.has_value());
@@ -134,7 +134,7 @@ TEST(fit_statistics, survive_the_json_model_file_to_the_last_bit) {
     for (std::size_t i = 0; i < network.size(); ++i) {
       EXPECT_EQ(document.statistics->counts[i], fitted.statistics->counts[i]);
     }
-    expect_same_tables(estimate_network(document.structure, *document.statistics), fitted.network);
+    expect_same_estimates(estimate_network(document.structure, *document.statistics), fitted.network);
   }
   // A network written without statistics reads back without them.
   EXPECT_FALSE(parse_model_json(to_json(network).dump(), "plain.json").statistics.has_value());
