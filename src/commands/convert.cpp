@@ -37,10 +37,9 @@ void run_convert(const convert_arguments& args) {
   // The counts a network is updated from (pgm fit --keep-counts) stay where JSON can hold them.
   const bool keeps_counts = model.statistics && to == network_format::json;
   std::vector<std::string> notes;
-  write_network(network, args.out, to,
-                {.properties = !args.no_properties,
-                 .notes = &notes,
-                 .statistics = keeps_counts ? &*model.statistics : nullptr});
+  write_network(
+      network, args.out, to,
+      {.properties = !args.no_properties, .notes = &notes, .statistics = keeps_counts ? &*model.statistics : nullptr});
   for (const auto& line : notes) note(line);
   if (model.statistics && !keeps_counts) {
     note("the counts kept in '" + args.in + "' (for pgm update) are not carried by " + std::string(name_of(to)));

@@ -72,7 +72,7 @@ TEST_F(update_cli_test, mistakes_are_refused_with_a_clear_message_and_no_output)
   std::ofstream(path("bad.csv")) << "xOff,onTop\n7,1\n";
   expect_failure("update --model " + path("robot.json").string() + " --data " + path("bad.csv").string() + " --out " +
                      out.string(),
-                 "'7', which is not a state of 'xOff'", out);
+                 "bad.csv:2:1: column 'xOff': '7' is not a state of 'xOff'", out);
   expect_failure(fit("day1.csv", "em.json", "--keep-counts --missing em"),
                  "--keep-counts does not apply with --missing em", path("em.json"));
   EXPECT_EQ(run("update --help").code, 0);

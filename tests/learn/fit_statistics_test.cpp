@@ -120,7 +120,7 @@ TEST(fit_statistics, the_equality_holds_with_missing_values_counted_where_availa
   update_request request;
   request.missing = available;
   expect_same_estimates(update_text(second, structure, *d1.statistics, request).network,
-                     fit_text(both, structure, options, available).network);
+                        fit_text(both, structure, options, available).network);
 }
 
 TEST(fit_statistics, survive_the_json_model_file_to_the_last_bit) {
@@ -162,7 +162,7 @@ TEST(fit_statistics, new_rows_must_hold_the_models_states) {
   const network_structure structure({variable("a", {"0", "1"}), variable("b", {"0", "1"})}, parse_edge_list("a->b"));
   const auto old = fit_text("a,b\n0,0\n1,1\n", structure, {});
   EXPECT_THAT([&] { static_cast<void>(update_text("a,b\n2,0\n", structure, *old.statistics)); },
-              ThrowsMessage<data_error>(HasSubstr("'2', which is not a state of 'a'")));
+              ThrowsMessage<data_error>(HasSubstr("new.csv:2:1: column 'a': '2' is not a state of 'a'")));
 }
 
 TEST(fit_statistics, a_damaged_statistics_entry_is_refused_with_its_json_path) {
