@@ -17,12 +17,13 @@
 /// the estimate (α + E[M]) / (α_u + E[M_u]) maximizes it given the expected counts. For hard EM
 /// the objective is that of the completed data, which rises too.
 ///
-/// Start: every family that some rows observe whole starts from its available-case estimate;
-/// a family with a latent variable starts from a random table (each column 0.5 + U[0, 1),
-/// normalized, from a std::mt19937_64 seeded by the seed and the restart), and `restarts` such
-/// starts run, the one with the highest objective kept. Without latent variables there is one
-/// start. It stops when the objective changes by at most `tolerance` times its size, or after
-/// `max_iterations` M-steps.
+/// Start: every family that some rows observe whole starts from its available-case estimate
+/// with one pseudo-count more per cell (so that no row is impossible at the start: the MLE of
+/// the complete rows alone can rule out a value seen only in rows with a gap, and EM never
+/// brings back a probability of 0); a family with a latent variable starts from a random table (each column 0.5 + U[0,
+/// 1), normalized, from a std::mt19937_64 seeded by the seed and the restart), and `restarts` such starts run, the one
+/// with the highest objective kept. Without latent variables there is one start. It stops when the objective changes by
+/// at most `tolerance` times its size, or after `max_iterations` M-steps.
 ///
 /// The patterns are cut into at most 64 blocks (a number that depends on the patterns, not on
 /// the threads), each summed on its own and the blocks added in order, so the result is the
@@ -334,10 +335,17 @@ class em_runner {
     return bayesian_network(*structure_, std::move(tables));
   }
 
-  /// The available-case estimate, with random tables for the families of latent variables.
+  /// The available-case estimate with one pseudo-count more per cell, with random tables for
+  /// the families of latent variables.
   [[nodiscard]] bayesian_network start(std::size_t restart) const {
     if (options_->start) return *options_->start;
-    auto network = maximize(fixed_);
+    std::vector<cpt<double>> smoothed;
+    for (std::size_t i = 0; i < fixed_.size(); ++i) {
+      auto alpha = alpha_[i];
+      for (auto& a : alpha) a += 1.0;
+      smoothed.push_back(estimate(fixed_[i], pseudo_counts_prior{std::move(alpha)}, fitting_->estimation));
+    }
+    bayesian_network network(*structure_, std::move(smoothed));
     if (!has_latent_) return network;
     std::mt19937_64 random(options_->seed ^ (0x9E3779B97F4A7C15ULL * (restart + 1)));
     std::vector<cpt<double>> tables(network.tables().begin(), network.tables().end());
