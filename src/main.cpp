@@ -93,6 +93,7 @@ int main(int argc, char** argv) {
   pgm::cli::add_fit_command(app);
   pgm::cli::add_update_command(app);
   pgm::cli::add_show_command(app);
+  pgm::cli::add_draw_command(app);
   pgm::cli::add_convert_command(app);
   pgm::cli::add_transfer_command(app);
   pgm::cli::add_correspond_command(app);

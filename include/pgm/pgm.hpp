@@ -67,6 +67,7 @@
 #include "pgm/io/bif.hpp"
 #include "pgm/io/cpt_csv.hpp"
 #include "pgm/io/dataset_file.hpp"
+#include "pgm/io/dot.hpp"
 #include "pgm/io/gzip.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/net.hpp"

@@ -137,6 +137,45 @@ class Network:
         columns = _frame.columns_of(data, names)
         return Network(_core.update(self._net, columns, _frame.column_names(data), decay, _whole(threads, "threads")))
 
+    def to_dot(self, success=None, controllable=None):
+        """The structure as Graphviz DOT text, as `pgm draw --out NAME.dot`: the success
+        variable (default: the one `success` names) bold on green, the `controllable` ones as
+        blue boxes."""
+        return self._net.to_dot(*self._marks(success, controllable))
+
+    def draw(self, path=None, *, success=None, controllable=None):
+        """The structure drawn by Graphviz's dot (Debian's graphviz), as `pgm draw`: the SVG text
+        when `path` is None (what a notebook shows), else written to `path` (.svg, .png, .pdf, or
+        .dot for the text)."""
+        text = self.to_dot(success, controllable)
+        if path is None:
+            return _graphviz(text, "svg").decode("utf-8")
+        path = _path(path, "path")
+        kind = os.path.splitext(path)[1].lower().lstrip(".")
+        if kind not in ("svg", "png", "pdf", "dot"):
+            raise Error(f"path '{path}': expected a .svg, .png, .pdf or .dot file")
+        data = text.encode("utf-8") if kind == "dot" else _graphviz(text, kind)
+        temporary = f"{path}.tmp-{os.getpid()}"
+        with open(temporary, "wb") as out:
+            out.write(data)
+        os.replace(temporary, path)
+        return None
+
+    def _repr_svg_(self):
+        """A notebook's picture of the network (None where Graphviz is not installed)."""
+        try:
+            return self.draw()
+        except Error:
+            return None
+
+    def _marks(self, success, controllable):
+        if success is None:
+            success = [] if self.success is None else [self.success.split("=")[0]]
+        else:
+            success = _names(success, "success")
+        controllable = [] if controllable is None else _names(controllable, "controllable")
+        return success, controllable
+
     def to_pgmpy(self):
         """The network as a pgmpy model (pgmpy must be importable)."""
         from ._pgmpy import to_pgmpy
@@ -148,6 +187,19 @@ class Network:
             f"<pgm.Network: {len(self.variables)} variables, {len(self.edges)} edges, "
             f"{self.free_parameters} free parameters>"
         )
+
+
+def _graphviz(text, kind):
+    """`text` rendered by Graphviz's dot as `kind` (svg, png, pdf)."""
+    import shutil
+    import subprocess
+
+    if shutil.which("dot") is None:
+        raise Error("drawing needs Graphviz's dot (Debian: apt-get install graphviz); to_dot() gives the text")
+    result = subprocess.run(["dot", f"-T{kind}"], input=text.encode("utf-8"), capture_output=True)
+    if result.returncode != 0:
+        raise Error(f"Graphviz's dot could not draw the network: {result.stderr.decode(errors='replace')}")
+    return result.stdout
 
 
 def read_network(path):

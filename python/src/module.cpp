@@ -34,6 +34,7 @@
 #include "pgm/eval/run_scenarios.hpp"
 #include "pgm/eval/scenario_catalog.hpp"
 #include "pgm/eval/simulated_source.hpp"
+#include "pgm/io/dot.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/estimator_choice.hpp"
@@ -625,7 +626,11 @@ PYBIND11_MODULE(_core, m) {
              write_network(h.network, path, {.statistics = keeps ? &*h.statistics : nullptr});
            })
       .def_property_readonly("has_counts", [](const network_handle& h) { return h.statistics.has_value(); })
-      .def("to_json", [](const network_handle& h) { return pgm::to_json(h.network).dump(2); });
+      .def("to_json", [](const network_handle& h) { return pgm::to_json(h.network).dump(2); })
+      .def("to_dot", [](const network_handle& h, const std::vector<std::string>& success,
+                        const std::vector<std::string>& controllable) {
+        return pgm::to_dot(h.network.structure(), {.success = success, .controllable = controllable});
+      });
 
   m.def("read_network", &read_network_file);
   m.def("network_from_tables", &network_from_tables);

@@ -96,3 +96,25 @@ def test_pgmpy_conversions_say_that_pgmpy_is_missing(monkeypatch):
         pgm.read_network(SACHS).to_pgmpy()
     with pytest.raises(ImportError, match="need pgmpy"):
         pgm.from_pgmpy(object())
+
+
+def test_a_network_draws_itself_through_graphviz(tmp_path):
+    net = pgm.fit(
+        pd.DataFrame({"xOff2": [0, 1, 2, 0], "yOff2": [1, 1, 0, 2], "onTop2": [1, 0, 0, 1]}),
+        "xOff2->onTop2,yOff2->onTop2",
+    )
+    dot = net.to_dot(success="onTop2", controllable=["xOff2", "yOff2"])
+    assert '"onTop2" [label="onTop2\\n2 states", shape=doubleoctagon' in dot
+    assert '"xOff2" [label="xOff2\\n3 states", shape=box' in dot
+    svg = net._repr_svg_()
+    assert svg.lstrip().startswith("<?xml") and "<svg" in svg
+    for name in ("xOff2", "yOff2", "onTop2"):
+        assert name in svg
+    net.draw(tmp_path / "net.png", success="onTop2")
+    assert (tmp_path / "net.png").read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
+    net.draw(tmp_path / "net.dot")
+    assert (tmp_path / "net.dot").read_text().startswith("digraph network {")
+    with pytest.raises(pgm.Error, match="expected a .svg, .png, .pdf or .dot file"):
+        net.draw(tmp_path / "net.jpg")
+    with pytest.raises(pgm.Error, match="'onTop3' is not a variable"):
+        net.to_dot(success="onTop3")
