@@ -15,7 +15,7 @@ using ::testing::ThrowsMessage;
 
 network_structure stacking() {
   const std::vector<std::string> five{"0", "1", "2", "3", "4"};
-  return network_structure({variable("xOff2", five), variable("yOff2", five), variable("say \"hi\"", {"a", "b"}),
+  return network_structure({variable("xOff2", five), variable("yOff2", five), variable(R"(a"b\c)", {"a", "b"}),
                             variable("onTop2", {"0", "1"})},
                            parse_edge_list("xOff2->onTop2,yOff2->onTop2"));
 }
@@ -24,7 +24,7 @@ TEST(dot_test, every_variable_and_edge_is_drawn_and_names_are_quoted) {
   const auto text = to_dot(stacking());
   EXPECT_THAT(text, HasSubstr("digraph network {"));
   EXPECT_THAT(text, HasSubstr("\"xOff2\" [label=\"xOff2\\n5 states\"];"));
-  EXPECT_THAT(text, HasSubstr("\"say \\\"hi\\\"\" [label=\"say \\\"hi\\\"\\n2 states\"];"));
+  EXPECT_THAT(text, HasSubstr(R"("a\"b\\c" [label="a\"b\\c\n2 states"];)"));
   EXPECT_THAT(text, HasSubstr("\"xOff2\" -> \"onTop2\";"));
   EXPECT_THAT(text, HasSubstr("\"yOff2\" -> \"onTop2\";"));
   EXPECT_THAT(text, Not(HasSubstr("dir=none")));
