@@ -10,11 +10,10 @@ by cmake into build/peers, see docs/peers.md); without it only pgm is timed.
 """
 
 import argparse
-import statistics
-import time
 
 import numpy as np
 import pandas as pd
+from bench_fit import median_seconds
 
 import pgm
 
@@ -33,15 +32,6 @@ def latent_class_rows(rows, seed):
         cumulative = np.where(h[:, None], np.cumsum(high)[None, :], np.cumsum(low)[None, :])
         frame[name] = (draw[:, None] > cumulative).sum(axis=1).astype(np.int64)
     return pd.DataFrame(frame)
-
-
-def median_seconds(call, repeats):
-    times = []
-    for _ in range(repeats):
-        start = time.perf_counter()
-        call()
-        times.append(time.perf_counter() - start)
-    return statistics.median(times)
 
 
 def main():
