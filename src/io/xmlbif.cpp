@@ -279,7 +279,7 @@ class xmlbif_reader {
     try {
       return read_document(options);
     } catch (const xml_problem& problem) {
-      fail(detail::position_of(text_, problem.offset), problem.what);
+      fail(position(problem.offset), problem.what);
     }
   }
 
@@ -333,9 +333,23 @@ class xmlbif_reader {
     return node.type() == pugi::node_element && o > 0 ? o - 1 : o;
   }
 
-  detail::text_position at(const pugi::xml_node& node) const {
+  detail::text_position at(const pugi::xml_node& node) {
     if (node.offset_debug() < 0) return {};
-    return detail::position_of(text_, start_of(node));
+    return position(start_of(node));
+  }
+
+  /// Line and column of a byte of the file, by binary search over the line starts, found once
+  /// (each variable and table records where it is declared).
+  detail::text_position position(std::size_t offset) {
+    if (line_starts_.empty()) {
+      line_starts_.push_back(0);
+      for (std::size_t i = 0; i < text_.size(); ++i) {
+        if (text_[i] == '\n') line_starts_.push_back(i + 1);
+      }
+    }
+    offset = std::min(offset, text_.size());
+    const auto line = std::upper_bound(line_starts_.begin(), line_starts_.end(), offset) - line_starts_.begin();
+    return {static_cast<std::size_t>(line), offset - line_starts_[static_cast<std::size_t>(line - 1)] + 1};
   }
 
   /// An element's text as ElementTree's `.text` gives it (what pgmpy reads): its character
@@ -415,14 +429,16 @@ class xmlbif_reader {
       while (i < numbers.size() && std::string_view(" \t\r\n").find(numbers[i]) == std::string_view::npos) ++i;
       if (start == i) break;
       const auto word = numbers.substr(start, i - start);
-      const auto where = verbatim ? detail::position_of(text_, offset_of(text_node) + start) : table.values_at;
+      // Found only for an error: a scan of the file per number would make reading quadratic.
+      const auto where = [&] { return verbatim ? position(offset_of(text_node) + start) : table.values_at; };
       const auto value = detail::parse_double(word);
       if (!value || !std::isfinite(*value)) {
-        fail(where, "expected a probability in the table of '" + table.child + "', found '" + std::string(word) + "'");
+        fail(where(),
+             "expected a probability in the table of '" + table.child + "', found '" + std::string(word) + "'");
       }
       if (table.values.size() == max_table_cells) {
-        fail(where, "more than " + std::to_string(max_table_cells) + " probabilities in the table of '" + table.child +
-                        "', pgm's limit of cells per table (docs/limits.md)");
+        fail(where(), "more than " + std::to_string(max_table_cells) + " probabilities in the table of '" +
+                          table.child + "', pgm's limit of cells per table (docs/limits.md)");
       }
       table.values.push_back(*value);
     }
@@ -432,6 +448,7 @@ class xmlbif_reader {
   std::string_view text_;
   const std::string& source_;
   xml_text_decoder decoder_;
+  std::vector<std::size_t> line_starts_;
 };
 
 void add_text(pugi::xml_node parent, const char* name, const std::string& text) {

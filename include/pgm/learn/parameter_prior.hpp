@@ -85,13 +85,16 @@ concept ParameterPrior = std::copy_constructible<P> && detail::NamedPrior<P> && 
 /// A user's prior, type-erased; it models ParameterPrior itself.
 class any_parameter_prior {
  public:
-  template <ParameterPrior P>
-  requires(!std::same_as<P, any_parameter_prior>)
-      any_parameter_prior(P prior)  // NOLINT(google-explicit-constructor): `options.prior = mine{}`
+  // Whether P is this type is asked first: checking ParameterPrior<any_parameter_prior> asks
+  // whether it is copy constructible, which would otherwise ask this constraint again (clang
+  // recurses without end).
+  template <class P>
+  requires(!std::same_as<P, any_parameter_prior>) &&
+      ParameterPrior<P> any_parameter_prior(P prior)  // NOLINT(google-explicit-constructor): `options.prior = mine{}`
       : name_(prior.name()),
-        pseudo_counts_([p = std::move(prior)](const variable& child, const std::vector<variable>& parents) {
-          return p.pseudo_counts(child, parents);
-        }) {}
+  pseudo_counts_([p = std::move(prior)](const variable& child, const std::vector<variable>& parents) {
+    return p.pseudo_counts(child, parents);
+  }) {}
 
   [[nodiscard]] std::string_view name() const noexcept { return name_; }
   [[nodiscard]] std::vector<double> pseudo_counts(const variable& child, const std::vector<variable>& parents) const {
