@@ -89,12 +89,12 @@ class any_parameter_prior {
   // whether it is copy constructible, which would otherwise ask this constraint again (clang
   // recurses without end).
   template <class P>
-  requires(!std::same_as<P, any_parameter_prior>) &&
-      ParameterPrior<P> any_parameter_prior(P prior)  // NOLINT(google-explicit-constructor): `options.prior = mine{}`
+  requires(!std::same_as<P, any_parameter_prior> && ParameterPrior<P>)
+      any_parameter_prior(P prior)  // NOLINT(google-explicit-constructor): `options.prior = mine{}`
       : name_(prior.name()),
-  pseudo_counts_([p = std::move(prior)](const variable& child, const std::vector<variable>& parents) {
-    return p.pseudo_counts(child, parents);
-  }) {}
+        pseudo_counts_([p = std::move(prior)](const variable& child, const std::vector<variable>& parents) {
+          return p.pseudo_counts(child, parents);
+        }) {}
 
   [[nodiscard]] std::string_view name() const noexcept { return name_; }
   [[nodiscard]] std::vector<double> pseudo_counts(const variable& child, const std::vector<variable>& parents) const {
