@@ -15,12 +15,14 @@
 #include <iostream>
 #include <new>
 #include <optional>
+#include <string>
 
 #include "cli/common.hpp"
 #include "cli/launch.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/detail/process_group.hpp"
 #include "pgm/detail/text.hpp"
+#include "pgm/version.hpp"
 #ifdef PGM_WITH_MPI
 #include "mpi/mpi_processes.hpp"
 #endif
@@ -88,12 +90,13 @@ int main(int argc, char** argv) {
 
   CLI::App app{"pgm: causal Bayesian networks for robot tasks, with priors transferred between tasks", "pgm"};
   app.require_subcommand(1, 1);
-  app.set_version_flag("--version", "pgm 0.1.0");
+  app.set_version_flag("--version", std::string("pgm ") + pgm::version);
   pgm::cli::add_discretize_command(app);
   pgm::cli::add_fit_command(app);
   pgm::cli::add_update_command(app);
   pgm::cli::add_show_command(app);
   pgm::cli::add_draw_command(app);
+  pgm::cli::add_plot_table_command(app);
   pgm::cli::add_convert_command(app);
   pgm::cli::add_transfer_command(app);
   pgm::cli::add_correspond_command(app);

@@ -33,6 +33,7 @@
 #include "pgm/decide/predict.hpp"
 #include "pgm/decide/prevent.hpp"
 #include "pgm/decide/success_table.hpp"
+#include "pgm/decide/table_slice.hpp"
 #include "pgm/eval/cached_source.hpp"
 #include "pgm/eval/disk_cache.hpp"
 #include "pgm/eval/experiment.hpp"

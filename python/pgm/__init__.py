@@ -19,6 +19,8 @@ from ._core import Error
 from . import _checks
 from ._inference import ENGINES, InferenceEngine
 
+__version__ = _core.__version__
+
 __all__ = [
     "ENGINES",
     "backdoor_sets",
@@ -145,11 +147,11 @@ class Network:
 
     def draw(self, path=None, *, success=None, controllable=None):
         """The structure drawn by Graphviz's dot (Debian's graphviz), as `pgm draw`: the SVG text
-        when `path` is None (what a notebook shows), else written to `path` (.svg, .png, .pdf, or
-        .dot for the text)."""
+        when `path` is None (a str that a notebook shows as the picture), else written to `path`
+        (.svg, .png, .pdf, or .dot for the text)."""
         text = self.to_dot(success, controllable)
         if path is None:
-            return _graphviz(text, "svg").decode("utf-8")
+            return _Svg(_graphviz(text, "svg").decode("utf-8"))
         path = _path(path, "path")
         kind = os.path.splitext(path)[1].lower().lstrip(".")
         if kind not in ("svg", "png", "pdf", "dot"):
@@ -161,10 +163,100 @@ class Network:
         os.replace(temporary, path)
         return None
 
+    def plot_table(self, node, x, y, *, given=None, average=False, state=None, counts=False, path=None, ax=None):
+        """The table of `node` as a heat map over its parents `x` (across) and `y` (up), as
+        `pgm plot-table`: the probability of `state` (default: the success state when `node` is
+        the success variable, else the last state) in each cell, ticks at the interval edges in
+        the variables' units. The other parents are fixed by `given` ({name: value}, a number
+        in an interval variable's units or "@label", as for pgm.predict) or, with `average`,
+        summed out under the network's joint. counts: write each cell's rows too (a network fitted
+        with keep_counts=True). Draws into `ax` when given, else a new figure; writes `path`
+        (.png, .svg, .pdf) when given. Returns the matplotlib Figure. Needs matplotlib."""
+        try:
+            from matplotlib.figure import Figure
+        except ImportError:
+            raise Error("plot_table needs matplotlib (Debian: apt-get install python3-matplotlib)") from None
+        if state is None and self.success is not None and self.success.split("=")[0] == node:
+            state = self.success.split("=", 1)[1]
+        given = None if given is None else _assignment(given, "given", "{'xOff1': '@2'}")
+        probability, rows, label = _core.slice_table(
+            self._net,
+            _variable(node), _variable(x), _variable(y), given, _flag(average, "average"),
+            None if state is None else str(state), _flag(counts, "counts"),
+        )
+        if ax is None:
+            figure = Figure(figsize=(6.4, 5.2), layout="constrained")
+            ax = figure.add_subplot()
+        figure = ax.figure
+        x_edges, x_ticks, x_labels = self._axis(x)
+        y_edges, y_ticks, y_labels = self._axis(y)
+        mesh = ax.pcolormesh(x_edges, y_edges, probability, cmap="viridis", vmin=0.0, vmax=1.0)
+        ax.set_xticks(x_ticks, x_labels)
+        ax.set_yticks(y_ticks, y_labels)
+        ax.set_xlabel(x)
+        ax.set_ylabel(y)
+        if isinstance(given, str):
+            conditions = [x, y, given]
+        else:
+            conditions = [x, y] + [f"{name} = {value}" for name, value in (given or {}).items()]
+        ax.set_title(f"P({node} = {label} | {', '.join(conditions)})" + (", others averaged" if average else ""), fontsize=10)
+        figure.colorbar(mesh, ax=ax, label=f"P({node} = {label})")
+        if rows is not None:
+            for j in range(probability.shape[0]):
+                for i in range(probability.shape[1]):
+                    ax.text(
+                        (x_edges[i] + x_edges[i + 1]) / 2, (y_edges[j] + y_edges[j + 1]) / 2,
+                        f"{probability[j, i]:.2f}\n{rows[j, i]:g} rows", ha="center", va="center", fontsize=8,
+                        color="white" if probability[j, i] < 0.6 else "black",
+                    )
+        if path is not None:
+            path = _path(path, "path")
+            kind = os.path.splitext(path)[1].lower().lstrip(".")
+            if kind not in ("png", "svg", "pdf"):
+                raise Error(f"path '{path}': expected a .png, .svg or .pdf file")
+            temporary = f"{path}.tmp-{os.getpid()}.{kind}"
+            figure.savefig(temporary, format=kind, dpi=110)
+            os.replace(temporary, path)
+        return figure
+
+    def _axis(self, name):
+        """A plot axis of a variable: cell edges, tick positions and labels (interval edges in its
+        units; one unit per state of a categorical variable, labelled at its middle)."""
+        edges = self.interval_edges(name)
+        if edges is not None:
+            return np.asarray(edges), edges, [f"{e:.3g}" for e in edges]
+        states = self.states(name)
+        return np.arange(len(states) + 1.0), [k + 0.5 for k in range(len(states))], states
+
+    def _repr_html_(self):
+        """A notebook's table of the network: each variable's states, parents and table size."""
+        from html import escape
+
+        rows = []
+        for name in self.variables:
+            states = self.states(name)
+            shown = ", ".join(states[:8]) + (f", … ({len(states)} states)" if len(states) > 8 else "")
+            parents = self.parents(name)
+            size = len(states)
+            for parent in parents:
+                size *= len(self.states(parent))
+            rows.append(
+                f"<tr><td><b>{escape(name)}</b></td><td>{escape(shown)}</td>"
+                f"<td>{escape(', '.join(parents)) or '—'}</td><td style='text-align:right'>{size}</td></tr>"
+            )
+        counts = "; it carries its counts" if self.has_counts else ""
+        success = f"; success: {escape(self.success)}" if self.success else ""
+        return (
+            f"<p><b>pgm.Network</b>: {len(self.variables)} variables, {len(self.edges)} edges, "
+            f"{self.free_parameters} free parameters{success}{counts}</p>"
+            "<table><thead><tr><th>variable</th><th>states</th><th>parents</th><th>table cells</th></tr></thead>"
+            f"<tbody>{''.join(rows)}</tbody></table>"
+        )
+
     def _repr_svg_(self):
         """A notebook's picture of the network (None where Graphviz is not installed)."""
         try:
-            return self.draw()
+            return str(self.draw())
         except Error:
             return None
 
@@ -187,6 +279,13 @@ class Network:
             f"<pgm.Network: {len(self.variables)} variables, {len(self.edges)} edges, "
             f"{self.free_parameters} free parameters>"
         )
+
+
+class _Svg(str):
+    """SVG text that a notebook shows as the picture."""
+
+    def _repr_svg_(self):
+        return str(self)
 
 
 def _graphviz(text, kind):
@@ -299,6 +398,7 @@ def fit(
     tolerance=1e-6,
     hard=False,
     keep_counts=False,
+    states=None,
 ):
     """Estimates every table of the network `edges` describe from `data`, as `pgm fit`.
 
@@ -319,7 +419,9 @@ def fit(
     latent tables (the best kept) and their seed; max_iterations, tolerance: when EM stops
     (relative change of the log-likelihood plus the prior's term); hard: hard EM. How EM went
     is in the network's `notes`. keep_counts: keep the counts with the network, so that
-    `Network.update` can add rows later (as `--keep-counts`; not with "em").
+    `Network.update` can add rows later (as `--keep-counts`; not with "em"). states: {name:
+    states in order} for columns whose states are not just the values seen (a success variable
+    whose first trials all failed): each is a state, also one no row has yet.
     """
     names = _frame.column_names(data)
     pairs = _edge_pairs(edges)
@@ -371,6 +473,7 @@ def fit(
         _text(match, "match") or "midpoint",
         em,
         latent_states,
+        _named_states(states),
         _flag(keep_counts, "keep_counts"),
     )
     return Network(net)
@@ -397,6 +500,25 @@ def _em_arguments(missing, latent, restarts, seed, max_iterations, tolerance, ha
         tolerance,
         _flag(hard, "hard"),
     )
+
+
+def _named_states(states):
+    """[(name, labels)] of states={name: [state, ...]}; a state is labelled as a column's value is
+    (0 → "0")."""
+    if states is None:
+        return []
+    if not isinstance(states, Mapping):
+        raise TypeError(f"states must be a dict {{name: list of states}}, got {states!r}")
+    result = []
+    for name, values in states.items():
+        _text(name, "states' names")
+        if isinstance(values, (str, bytes)) or not hasattr(values, "__iter__"):
+            raise TypeError(f"states['{name}'] must be a list of states, got {values!r}")
+        labels = [_frame._label(v) for v in values]
+        if not labels or len(set(labels)) != len(labels):
+            raise Error(f"states['{name}'] must name each state once, got {list(values)!r}")
+        result.append((name, labels))
+    return result
 
 
 def _latent_states(latent, variables):
@@ -650,6 +772,17 @@ def discretize(data, bins=5, columns=None, *, method="quantile", edges=None, mis
     return result, fitted
 
 
+def _tasks_folder(tasks_dir):
+    """Where tasks are found: `tasks_dir`, else $PGM_TASKS_DIR, else the tasks an installed
+    package carries (pgm/tasks), else the library's own defaults (None: the source tree's)."""
+    if tasks_dir is not None:
+        return _path(tasks_dir, "tasks_dir")
+    if os.environ.get("PGM_TASKS_DIR"):
+        return None
+    packaged = os.path.join(os.path.dirname(os.path.abspath(__file__)), "tasks")
+    return packaged if os.path.isdir(packaged) else None
+
+
 def simulate(task, rows, seed=0, backend="analytic", variant="sim", *, threads=0, tasks_dir=None):
     """Runs `rows` experiments of a task (1-stack, 2-stack, drop-plate, …) with a simulator
     back-end, as `pgm simulate`: the raw data as a DataFrame. The same seed gives the same data
@@ -662,7 +795,7 @@ def simulate(task, rows, seed=0, backend="analytic", variant="sim", *, threads=0
         _text(backend, "backend"),
         _text(variant, "variant"),
         _whole(threads, "threads"),
-        None if tasks_dir is None else _path(tasks_dir, "tasks_dir"),
+        _tasks_folder(tasks_dir),
     )
     return _frame.frame_of(columns)
 
@@ -680,7 +813,7 @@ def experiment(scenario, reps=None, seed=1, backend="analytic", *, threads=0, di
         _whole(threads, "threads"),
         _text(distance, "distance"),
         _flag(auto, "auto"),
-        None if tasks_dir is None else _path(tasks_dir, "tasks_dir"),
+        _tasks_folder(tasks_dir),
     )
     frame = pd.DataFrame(
         {

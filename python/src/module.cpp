@@ -29,6 +29,7 @@
 #include "pgm/decide/decision_model.hpp"
 #include "pgm/decide/explain.hpp"
 #include "pgm/decide/predict.hpp"
+#include "pgm/decide/table_slice.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/eval/cached_source.hpp"
 #include "pgm/eval/run_scenarios.hpp"
@@ -49,6 +50,7 @@
 #include "pgm/sim/task_lookup.hpp"
 #include "pgm/sim/task_variant.hpp"
 #include "pgm/transfer/transfer_settings.hpp"
+#include "pgm/version.hpp"
 
 namespace py = pybind11;
 
@@ -167,6 +169,8 @@ struct fit_arguments {
   /// missing="em": how EM runs, and the latent variables with their states.
   std::optional<em_options> em;
   std::vector<latent_variable> latent;
+  /// Columns whose states are given, {name: labels} (states=).
+  std::vector<std::pair<std::string, std::vector<std::string>>> states;
   bool keep_counts = false;
 };
 
@@ -210,6 +214,12 @@ network_handle fit_frame(const py::list& columns, const std::vector<std::string>
   if (args.intervals || args.intervals_file) {
     request.intervals = intervals_of(args.intervals, args.intervals_file);
     request.intervals_source = args.intervals_file.value_or("intervals");
+  }
+  for (const auto& [name, labels] : args.states) {
+    if (std::find(observed.begin(), observed.end(), name) == observed.end()) {
+      throw error("states: '" + name + "' is in no edge, or is latent");
+    }
+    request.states.emplace(name, variable(name, labels));
   }
   if (args.prior_model) {
     request.prior_network = &args.prior_model->network;
@@ -293,6 +303,29 @@ double predict_plan(const network_handle& handle, const py::object& planned, con
   const auto event = success_of(handle, success);
   return predict_success(handle.network, event, assignment_of(handle.network, planned),
                          {.marginalize_missing = marginalize});
+}
+
+/// The table of `node` over its parents x and y (Network.plot_table): (P[y, x] of the state, the
+/// rows behind each cell or None, the state's label).
+py::tuple slice_of(const network_handle& handle, const std::string& node, const std::string& x, const std::string& y,
+                   const py::object& given, bool average, const std::optional<std::string>& state, bool counts) {
+  if (counts && !handle.statistics) {
+    throw pgm::error("counts=True: the network carries no counts; fit it with keep_counts=True");
+  }
+  table_slice_request request{node, x, y, {}, average, state};
+  if (!given.is_none()) request.given = assignment_of(handle.network, given);
+  const auto slice = slice_table(handle.network, request, counts ? &*handle.statistics : nullptr);
+  const auto nx = static_cast<py::ssize_t>(slice.x->cardinality()),
+             ny = static_cast<py::ssize_t>(slice.y->cardinality());
+  py::array_t<double> probability({ny, nx});
+  std::copy(slice.probability.begin(), slice.probability.end(), probability.mutable_data());
+  py::object rows = py::none();
+  if (slice.rows) {
+    py::array_t<double> cells({ny, nx});
+    std::copy(slice.rows->begin(), slice.rows->end(), cells.mutable_data());
+    rows = std::move(cells);
+  }
+  return py::make_tuple(probability, rows, slice.node->states()[slice.state]);
 }
 
 py::dict prevent_plan(const network_handle& handle, const py::object& planned,
@@ -597,6 +630,7 @@ PYBIND11_MODULE(_core, m) {
   using namespace pgm::python;
   m.doc() = "pgm's library calls for Python; use the package pgm, which wraps them for pandas.";
   py::register_exception<pgm::error>(m, "Error", PyExc_ValueError);
+  m.attr("__version__") = pgm::version;
 
   py::class_<network_handle>(m, "Network")
       .def_property_readonly("variables", [](const network_handle& h) { return names_of(h.network.variables()); })
@@ -646,9 +680,11 @@ PYBIND11_MODULE(_core, m) {
          const network_handle* prior_model, const std::string& strategy, const std::string& map,
          std::optional<double> w_prior, const std::string& success, const std::string& match,
          const std::optional<em_arguments>& em,
-         const std::vector<std::pair<std::string, std::vector<std::string>>>& latent, bool keep_counts) {
+         const std::vector<std::pair<std::string, std::vector<std::string>>>& latent,
+         const std::vector<std::pair<std::string, std::vector<std::string>>>& named_states, bool keep_counts) {
         fit_arguments args;
         args.keep_counts = keep_counts;
+        args.states = named_states;
         args.estimator = {estimator, prior.value_or(""), alpha, ess};
         args.empty = empty;
         args.threads = threads;
@@ -670,12 +706,13 @@ PYBIND11_MODULE(_core, m) {
       py::arg("alpha"), py::arg("ess"), py::arg("empty"), py::arg("threads"), py::arg("intervals"),
       py::arg("intervals_file"), py::arg("prior_model").none(true), py::arg("strategy"), py::arg("map"),
       py::arg("w_prior"), py::arg("success"), py::arg("match"), py::arg("em").none(true), py::arg("latent"),
-      py::arg("keep_counts"));
+      py::arg("states"), py::arg("keep_counts"));
   m.def("update", &update_frame);
 
   add_inference(m);
   add_causal(m);
   m.def("predict", &predict_plan);
+  m.def("slice_table", &slice_of);
   m.def("prevent", &prevent_plan);
 
   m.def("learn_structure",

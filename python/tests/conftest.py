@@ -15,6 +15,13 @@ import pytest
 
 def pytest_configure(config):
     config.addinivalue_line("markers", "bullet: needs the Bullet simulator back-end")
+    # scripts/test-python-package runs the suite against the package pip installed in a venv.
+    venv = os.environ.get("PGM_EXPECT_INSTALLED")
+    if venv:
+        import pgm
+
+        if not Path(pgm.__file__).resolve().is_relative_to(Path(venv).resolve()):
+            raise pytest.UsageError(f"pgm was imported from {pgm.__file__}, not from the venv {venv}")
 
 
 SOURCE_DIR = Path(os.environ.get("PGM_SOURCE_DIR", Path(__file__).resolve().parents[2]))

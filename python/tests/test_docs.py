@@ -1,16 +1,27 @@
 """docs/python.md: its 2-Stack transfer runs as written and says what the page says (the pgmpy
-round trip, which needs pgmpy, is run by test_pgmpy.py)."""
+round trip, which needs pgmpy, is run by test_pgmpy.py), and so does its heat map."""
 
 from conftest import python_blocks
 
 import pgm
 
 
+def test_the_heat_map_example_runs_as_written(tmp_path, monkeypatch):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    monkeypatch.chdir(tmp_path)
+    names = {}
+    exec(compile(python_blocks("docs/python.md")[0], "docs/python.md", "exec"), names)
+    assert (tmp_path / "onTop2.png").read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
+    assert names["figure"].axes[0].get_title() == "P(onTop2 = 1 | xOff2, yOff2, xOff1 = @2, yOff1 = @2)"
+
+
 def test_the_two_stack_transfer_runs_as_written(capsys):
     blocks = python_blocks("docs/python.md")
-    assert len(blocks) == 2
+    assert len(blocks) == 3
     names = {}
-    exec(compile(blocks[0], "docs/python.md", "exec"), names)
+    exec(compile(blocks[1], "docs/python.md", "exec"), names)
     printed = capsys.readouterr().out.splitlines()
     mle_says, minimal_says = (float(x) for x in printed[0].split())
     assert mle_says == 0.5  # the page's comment: an unseen configuration

@@ -337,3 +337,22 @@ def test_update_arguments_are_checked():
         kept.update(frame.drop(columns=["yOff1"]))
     with pytest.raises(pgm.Error, match="keep_counts does not apply"):
         pgm.fit(frame, ONE_EDGES, missing="em", keep_counts=True)
+
+
+def test_states_named_are_states_also_before_any_row_has_them():
+    frame = pd.DataFrame({"x": [0, 1, 1], "onTop": [0, 0, 0]})
+    net = pgm.fit(frame, "x->onTop", states={"onTop": [0, 1]}, keep_counts=True)
+    assert net.states("onTop") == ["0", "1"]
+    table = net.cpt("onTop")
+    assert table["0"].tolist() == [1.0, 1.0] and table["1"].tolist() == [0.0, 0.0]
+    later = net.update(pd.DataFrame({"x": [1], "onTop": [1]}))
+    assert later.cpt("onTop")["1"].tolist() == [0.0, 1 / 3]
+    assert pgm.fit(frame, "x->onTop", states={"x": ["1", "0", "2"]}).states("x") == ["1", "0", "2"]
+    with pytest.raises(pgm.Error, match="'2'"):
+        pgm.fit(frame.assign(onTop=[0, 2, 0]), "x->onTop", states={"onTop": [0, 1]})
+    with pytest.raises(pgm.Error, match="states: 'y' is in no edge"):
+        pgm.fit(frame, "x->onTop", states={"y": [0, 1]})
+    with pytest.raises(pgm.Error, match="must name each state once"):
+        pgm.fit(frame, "x->onTop", states={"onTop": [0, 0]})
+    with pytest.raises(TypeError, match="must be a list of states"):
+        pgm.fit(frame, "x->onTop", states={"onTop": "01"})

@@ -118,3 +118,57 @@ def test_a_network_draws_itself_through_graphviz(tmp_path):
         net.draw(tmp_path / "net.jpg")
     with pytest.raises(pgm.Error, match="'onTop3' is not a variable"):
         net.to_dot(success="onTop3")
+
+
+def test_a_table_is_drawn_as_a_heat_map_with_the_table_s_numbers(tmp_path, program):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    random = np.random.default_rng(3)
+    frame = pd.DataFrame({name: random.integers(0, 2, 300) for name in ("x", "y", "z")})
+    frame["onTop"] = (random.random(300) < 0.2 + 0.2 * (frame.x + frame.y + frame.z)).astype(int)
+    net = pgm.fit(frame, "x->onTop,y->onTop,z->onTop", keep_counts=True)
+    figure = net.plot_table("onTop", "x", "y", given={"z": "1"}, counts=True, path=tmp_path / "t.png")
+    (axes, colorbar) = figure.axes
+    cells = axes.collections[0].get_array().reshape(2, 2)  # [y, x]
+    table = net.cpt("onTop")
+    for x in (0, 1):
+        for y in (0, 1):
+            row = table[(table.x == str(x)) & (table.y == str(y)) & (table.z == "1")]
+            assert cells[y, x] == row["1"].item()
+    texts = [t.get_text() for t in axes.texts]
+    rows_at_1_1 = int(((frame.x == 1) & (frame.y == 1) & (frame.z == 1)).sum())
+    assert f"{cells[1, 1]:.2f}\n{rows_at_1_1} rows" in texts
+    assert axes.get_title() == "P(onTop = 1 | x, y, z = 1)"
+    assert (tmp_path / "t.png").read_bytes().startswith(b"\x89PNG\r\n\x1a\n")
+    # The program draws the same numbers.
+    path = tmp_path / "m.json"
+    net.write(path)
+    program.run("plot-table", "--model", path, "--node", "onTop", "--x", "x", "--y", "y", "--given", "z=1",
+                "--out", tmp_path / "t.gp")
+    script = (tmp_path / "t.gp").read_text()
+    block = script.split("$cells << EOD\n")[1].split("EOD\n")[0]
+    drawn = {(float(c[0]), float(c[1])): float(c[6]) for c in (line.split() for line in block.splitlines())}
+    assert drawn == {(x + 0.5, y + 0.5): cells[y, x] for x in (0, 1) for y in (0, 1)}
+    averaged = net.plot_table("onTop", "x", "y", average=True, state="0", path=tmp_path / "a.svg")
+    assert "others averaged" in averaged.axes[0].get_title()
+    assert "<svg" in (tmp_path / "a.svg").read_text()
+    with pytest.raises(pgm.Error, match=r"give z a state each \(e.g. z=0\), or average over them"):
+        net.plot_table("onTop", "x", "y")
+    with pytest.raises(pgm.Error, match="expected a .png, .svg or .pdf file"):
+        net.plot_table("onTop", "x", "y", average=True, path=tmp_path / "t.jpg")
+    assert not (tmp_path / "t.jpg").exists()
+    with pytest.raises(pgm.Error, match="carries no counts"):
+        pgm.fit(frame, "x->onTop,y->onTop,z->onTop").plot_table("onTop", "x", "y", average=True, counts=True)
+
+
+def test_a_network_shows_itself_as_a_table_in_a_notebook():
+    net = pgm.fit(
+        pd.DataFrame({"xOff2": [0, 1, 2, 0], "yOff2": ["a", "b", "a", "<b>"], "onTop2": [1, 0, 0, 1]}),
+        "xOff2->onTop2,yOff2->onTop2",
+        keep_counts=True,
+    )
+    html = net._repr_html_()
+    assert html.startswith("<p><b>pgm.Network</b>: 3 variables, 2 edges, 13 free parameters; it carries its counts")
+    assert "<td><b>onTop2</b></td><td>0, 1</td><td>xOff2, yOff2</td><td style='text-align:right'>18</td>" in html
+    assert "&lt;b&gt;" in html and "<b>b>" not in html  # state names are escaped

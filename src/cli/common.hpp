@@ -106,6 +106,7 @@ void add_update_command(CLI::App& app);
 void add_discretize_command(CLI::App& app);
 void add_show_command(CLI::App& app);
 void add_draw_command(CLI::App& app);
+void add_plot_table_command(CLI::App& app);
 void add_transfer_command(CLI::App& app);
 void add_correspond_command(CLI::App& app);
 void add_learn_structure_command(CLI::App& app);

@@ -1,6 +1,8 @@
 // Fits a two-node network through the installed or fetched library and checks one value.
 #include <iostream>
 #include <pgm/pgm.hpp>
+#include <pgm/version.hpp>
+#include <string_view>
 
 int main() {
   const pgm::variable a("a", {"no", "yes"});
@@ -10,6 +12,6 @@ int main() {
   data.add(pgm::discrete_column(b, std::vector<unsigned>{0, 0, 1, 1}));
   const auto network = pgm::fit(pgm::network_structure({a, b}, {{"a", "b"}}), data);
   const double p = network.table("b").probability("yes", {"yes"});
-  std::cout << "P(b=yes | a=yes) = " << p << '\n';
-  return p * 3 == 2 ? 0 : 1;
+  std::cout << "pgm " << pgm::version << ": P(b=yes | a=yes) = " << p << '\n';
+  return p * 3 == 2 && !std::string_view(pgm::version).empty() ? 0 : 1;
 }

@@ -147,6 +147,28 @@ TEST(fit_pipeline, raw_columns_are_binned_and_intervals_kept_alike_in_every_sour
   EXPECT_EQ(streamed.network.structure().at("x").edges(), (std::vector<double>{0.0, 0.5, 1.0}));
 }
 
+// Codes of saved intervals (pgm discretize --method edges on new data): every interval is a state,
+// also those no row falls in, whose column of the table is the empty-configuration rule's.
+TEST(fit_pipeline, saved_intervals_give_every_state_also_those_no_row_has) {
+  const std::string text = "x,y\n2,a\n3,b\n2,a\n4,b\n";
+  fit_request request;
+  request.structure = parse_edge_list("x->y");
+  request.intervals.emplace("x", variable::intervals("x", {0.0, 1.0, 2.0, 3.0, 4.0, 5.0}));
+  for (const auto& result : {fit_csv(text, request), fit_data(parse_discrete(text), request)}) {
+    const auto& x = result.network.structure().at("x");
+    EXPECT_EQ(x.states(), (std::vector<std::string>{"0", "1", "2", "3", "4"}));
+    EXPECT_EQ(x.edges(), (std::vector<double>{0.0, 1.0, 2.0, 3.0, 4.0, 5.0}));
+    const auto& marginal = result.network.table(detail::node_of(result.network, "x")).values();
+    EXPECT_EQ(std::vector<double>(marginal.begin(), marginal.end()), (std::vector<double>{0, 0, 0.5, 0.25, 0.25}));
+    const auto& y = result.network.table(detail::node_of(result.network, "y"));
+    EXPECT_EQ(y(state_index(0), config_index(0)), 0.5);  // x = 0: no rows, uniform
+    EXPECT_EQ(y(state_index(0), config_index(2)), 1.0);
+  }
+  request.intervals.clear();
+  request.intervals.emplace("x", variable::intervals("x", {0.0, 1.0, 2.0}));  // 2 states: "3" is none of them
+  EXPECT_THROW(static_cast<void>(fit_csv(text, request)), data_error);
+}
+
 // Data errors come before structure errors, as when the data are read first.
 TEST(fit_pipeline, a_missing_column_is_reported_before_a_cycle) {
   const std::string text = "a,b\n0,1\n1,0\n";

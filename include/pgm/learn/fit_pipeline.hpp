@@ -50,6 +50,10 @@ struct fit_request {
   /// `intervals_source` names where they came from, in messages.
   discretization intervals;
   std::string intervals_source = "intervals";
+  /// With edges: columns whose states are given (in order), not taken from the values seen;
+  /// every one is a state, also one no row has, and a value among none of them is an error.
+  /// Saved `intervals` give their columns' states alike.
+  discretization states;
   /// What a missing value is and what happens to it.
   missing_values missing;
   /// A related task's network: every node the map of `transfer` reaches gets its transferred
@@ -120,6 +124,14 @@ namespace detail {
   return found == request.latent.end() ? nullptr : &*found;
 }
 
+/// The variable whose states column `name` holds, when the request gives them (saved intervals,
+/// or states named), else nullptr.
+[[nodiscard]] inline const variable* known_states(const fit_request& request, std::string_view name) {
+  if (const auto found = request.intervals.find(name); found != request.intervals.end()) return &found->second;
+  if (const auto found = request.states.find(name); found != request.states.end()) return &found->second;
+  return nullptr;
+}
+
 /// The EM path of fit(): the source's rows read once, the latent variables added to the
 /// structure, the transferred priors chosen from the available-case counts.
 template <row_source Source>
@@ -157,7 +169,11 @@ template <row_source Source>
     for (const auto& name : columns_of(*edges)) {
       if (latent_named(request, name)) continue;
       reading.columns.push_back(name);
-      if (request.bin.contains(name)) reading.intervals.emplace(name, request.bin.at(name));
+      if (request.bin.contains(name)) {
+        reading.intervals.emplace(name, request.bin.at(name));
+      } else if (const auto* known = known_states(request, name)) {
+        reading.variables.emplace(name, *known);
+      }
     }
   }
   fit_result result;
@@ -231,7 +247,11 @@ template <family_source Source>
   } else {
     counting.columns = detail::columns_of(*edges);
     for (const auto& name : counting.columns) {
-      if (request.bin.contains(name)) counting.intervals.emplace(name, request.bin.at(name));
+      if (request.bin.contains(name)) {
+        counting.intervals.emplace(name, request.bin.at(name));
+      } else if (const auto* known = detail::known_states(request, name)) {
+        counting.variables.emplace(name, *known);
+      }
     }
     // The families come from the structure over the source's columns in its order (as
     // structure_from_data builds it), with placeholder states until the data give theirs.
