@@ -117,7 +117,8 @@ class Network:
 
     def write(self, path):
         """Writes the network as .bif, .xml (XMLBIF), .net (Hugin) or .json (by the extension), atomically.
-        A network with counts (`has_counts`) keeps them in a .json file."""
+        A network with counts (`has_counts`) keeps them, in BIF, XMLBIF and NET as a property
+        that other tools ignore."""
         self._net.write(_path(path, "path"))
 
     @property

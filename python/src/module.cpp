@@ -655,9 +655,8 @@ PYBIND11_MODULE(_core, m) {
       .def("table", &table_of)
       .def("write",
            [](const network_handle& h, const std::filesystem::path& path) {
-             // The counts go where they can be kept: into a JSON model.
-             const bool keeps = h.statistics && pgm::format_of(path) == pgm::network_format::json;
-             write_network(h.network, path, {.statistics = keeps ? &*h.statistics : nullptr});
+             // The counts go along, in any format (BIF, XMLBIF, NET: as a property peers ignore).
+             write_network(h.network, path, {.statistics = h.statistics ? &*h.statistics : nullptr});
            })
       .def_property_readonly("has_counts", [](const network_handle& h) { return h.statistics.has_value(); })
       .def("to_json", [](const network_handle& h) { return pgm::to_json(h.network).dump(2); })

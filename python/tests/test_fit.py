@@ -321,9 +321,12 @@ def test_the_counts_go_through_a_json_file_and_equal_pgm_update(program, tmp_pat
     program.run("update", "--model", tmp_path / "cli.json", "--data", tmp_path / "second.csv", "--decay", "0.5",
                 "--out", tmp_path / "cli2.json")
     assert_same_network(ours, pgm.read_network(tmp_path / "cli2.json"))
-    # A BIF file cannot hold the counts: the network is written without them.
-    ours.write(tmp_path / "no-counts.bif")
-    assert not pgm.read_network(tmp_path / "no-counts.bif").has_counts
+    # BIF, XMLBIF and NET keep them too, in a property other tools ignore.
+    for name in ("counts.bif", "counts.xml", "counts.net"):
+        ours.write(tmp_path / name)
+        read = pgm.read_network(tmp_path / name)
+        assert read.has_counts, name
+        assert_same_network(read.update(second), ours.update(second))
 
 
 def test_update_arguments_are_checked():

@@ -34,15 +34,16 @@ void run_convert(const convert_arguments& args) {
   detail::check_output_path(args.out);
   const auto model = read_model_file(args.in);
   const auto network = model.network();
-  // The counts a network is updated from (pgm fit --keep-counts) stay where JSON can hold them.
-  const bool keeps_counts = model.statistics && to == network_format::json;
+  // The counts a network is updated from (pgm fit --keep-counts) go along: in JSON under
+  // "statistics", elsewhere in a property peers ignore, which --no-properties leaves out.
+  const bool keeps_counts = model.statistics && (to == network_format::json || !args.no_properties);
   std::vector<std::string> notes;
   write_network(
       network, args.out, to,
       {.properties = !args.no_properties, .notes = &notes, .statistics = keeps_counts ? &*model.statistics : nullptr});
   for (const auto& line : notes) note(line);
   if (model.statistics && !keeps_counts) {
-    note("the counts kept in '" + args.in + "' (for pgm update) are not carried by " + std::string(name_of(to)));
+    note("the counts kept in '" + args.in + "' (for pgm update) are left out with --no-properties");
   }
   if (from == network_format::json && to != network_format::json && read_success_metadata(args.in)) {
     note("the success event in the metadata of '" + args.in + "' is not carried by " + std::string(name_of(to)) +

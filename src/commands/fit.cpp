@@ -104,10 +104,6 @@ void note_transfer(const transfer_report& report, const std::string& strategy) {
 
 void run_fit(const fit_arguments& args) {
   require_network_extension(args.out);
-  if (args.keep_counts && format_of(args.out) != network_format::json) {
-    throw error("--keep-counts: the counts are kept in pgm's JSON models only; give --out a .json file, not '" +
-                args.out + "'");
-  }
   if (args.data == "-" && detail::processes().size() > 1) {
     throw error("--data -: standard input reaches one process only; under mpirun give a file every process can read");
   }
@@ -243,7 +239,8 @@ void add_fit_command(CLI::App& app) {
                 "With --missing em: hard EM (each incomplete row completed by its most probable values)");
   cmd->add_flag("--verbose", args->verbose, "With --missing em: print the log-likelihood of every iteration");
   cmd->add_flag("--keep-counts", args->keep_counts,
-                "Keep the counts and priors in the model (.json), so that pgm update can add new data to it");
+                "Keep the counts and priors in the model (in JSON under \"statistics\", in BIF, XMLBIF and NET as a "
+                "property peers ignore), so that pgm update can add new data to it");
   add_transfer_options(*cmd, args->transfer, true);
   cmd->callback([args] {
     if (args->edges.empty() && args->model.empty()) throw error("give the structure with --edges or --model");

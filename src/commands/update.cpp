@@ -24,20 +24,12 @@ struct update_arguments {
 
 void run_update(const update_arguments& args) {
   require_network_extension(args.out);
-  if (format_of(args.out) != network_format::json) {
-    throw error(
-        "--out: an updated network keeps its counts, which pgm's JSON models alone hold; give a .json file, "
-        "not '" +
-        args.out + "'");
-  }
   if (args.data == "-" && detail::processes().size() > 1) {
     throw error("--data -: standard input reaches one process only; under mpirun give a file every process can read");
   }
   const auto model = read_model_file(args.model);
   if (!model.statistics) {
-    throw error("'" + args.model +
-                "' carries no counts to add the new rows to: fit it with pgm fit --keep-counts "
-                "--out MODEL.json");
+    throw error("'" + args.model + "' carries no counts to add the new rows to: fit it with pgm fit --keep-counts");
   }
   update_request request;
   request.missing = missing_of(args.missing);
@@ -63,7 +55,8 @@ void add_update_command(CLI::App& app) {
       "update",
       "Add new rows to a network fitted with --keep-counts and estimate its tables again with the same priors.\n"
       "Example: pgm update --model robot.json --data today.csv --out robot.json");
-  cmd->add_option("--model", args->model, "The network, fitted with pgm fit --keep-counts (.json)")->required();
+  cmd->add_option("--model", args->model, "The network, fitted with pgm fit --keep-counts (.json, .bif, .xml or .net)")
+      ->required();
   cmd->add_option("--data", args->data,
                   std::string("CSV file of the new rows, one column per variable of the model") + data_file_help)
       ->required();
@@ -75,7 +68,9 @@ void add_update_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Counting threads (0: all cores)")
       ->check(whole_number(0, 1024))
       ->capture_default_str();
-  cmd->add_option("--out", args->out, "The updated network with its counts (.json; may be --model itself)")->required();
+  cmd->add_option("--out", args->out,
+                  "The updated network with its counts (.json, .bif, .xml or .net; may be --model itself)")
+      ->required();
   add_missing_options(*cmd, args->missing, false);
   cmd->callback([args] { run_update(*args); });
 }

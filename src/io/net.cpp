@@ -4,6 +4,7 @@
 #include "pgm/io/net.hpp"
 
 #include <cctype>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -30,7 +31,7 @@ class net_parser {
     while (current_.type != net_token::kind::end) {
       const auto keyword = expect_word("'net', 'node' or 'potential'");
       if (keyword.text == "net") {
-        skip_attributes_block();
+        read_net_attributes(options.properties);
       } else if (keyword.text == "node") {
         read_node(keyword);
       } else if (keyword.text == "discrete" && current_.type == net_token::kind::word && current_.text == "node") {
@@ -176,6 +177,14 @@ class net_parser {
   }
   void skip_attributes_block() {
     read_attributes([](const net_token&, const net_token&) { return false; });
+  }
+  /// The net block: pgm's own attributes (`pgm_KEY = "VALUE";`) into `properties`, the others skipped.
+  void read_net_attributes(std::map<std::string, std::string>* properties) {
+    read_attributes([&](const net_token& attribute, const net_token&) {
+      if (!properties || !attribute.text.starts_with("pgm_")) return false;
+      (*properties)[attribute.text.substr(4)] = joined(leaves_of_value(1, "values of '" + attribute.text + "'"));
+      return true;
+    });
   }
 
   /// The leaves of one value, at most `limit` of them (`what` names them in the refusal).
@@ -344,7 +353,11 @@ std::optional<std::string> net_name_problem(std::string_view name) {
 
 void write_net(const bayesian_network& network, std::ostream& out, const net_write_options& options) {
   std::ostringstream text;
-  text << "net\n{\n}\n";
+  text << "net\n{\n";
+  for (const auto& [key, value] : options.network_properties) {
+    text << "  pgm_" << key << " = " << quoted(value, "the network property '" + key + "'") << ";\n";
+  }
+  text << "}\n";
   for (const auto& v : network.variables()) {
     if (const auto problem = net_name_problem(v.name())) {
       throw model_error("variable '" + v.name() + "' cannot be written to NET: " + *problem);

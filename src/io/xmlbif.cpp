@@ -311,8 +311,16 @@ class xmlbif_reader {
       const std::string_view name = node.name();
       if (name == "DEFINITION" || name == "PROBABILITY") {  // PROBABILITY: XMLBIF 0.2
         tables.push_back(read_table(node, variables));
+      } else if (name == "PROPERTY" && options.properties) {  // pgm's own: "pgm.KEY = VALUE"
+        const auto text = text_of(node);
+        const std::string_view view(text);
+        const auto eq = view.find('=');
+        const auto key = detail::trim(view.substr(0, eq == std::string_view::npos ? 0 : eq));
+        if (key.starts_with("pgm.")) {
+          (*options.properties)[std::string(key.substr(4))] = std::string(detail::trim(view.substr(eq + 1)));
+        }
       }
-      // NAME, PROPERTY and elements of later versions carry nothing pgm keeps.
+      // NAME, other properties and elements of later versions carry nothing pgm keeps.
     }
     if (variables.empty()) fail(at(network), "the file declares no variables");
     return detail::build_network(variables, std::move(tables), source_, options,
@@ -474,6 +482,7 @@ void write_xmlbif(const bayesian_network& network, std::ostream& out, const xmlb
   root.append_attribute("VERSION") = "0.3";
   auto net = root.append_child("NETWORK");
   add_text(net, "NAME", options.network_name);
+  for (const auto& [key, value] : options.network_properties) add_text(net, "PROPERTY", "pgm." + key + " = " + value);
   for (const auto& v : network.variables()) {
     auto node = net.append_child("VARIABLE");
     node.append_attribute("TYPE") = "nature";

@@ -1,12 +1,13 @@
 // Updates (pgm/learn/fit_statistics.hpp, update() in pgm/learn/fit_pipeline.hpp): fitting D1
 // and adding D2 equals fitting D1 ∪ D2 to the last bit, for every prior; the statistics survive
-// the JSON model file; a decay weighs the old counts down.
+// every model file format; a decay weighs the old counts down.
 
 #include "pgm/learn/fit_statistics.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "pgm/data/csv_source.hpp"
 #include "pgm/inference/sampling.hpp"
 #include "pgm/io/json_model.hpp"
+#include "pgm/io/network_file.hpp"
 #include "pgm/learn/fit_pipeline.hpp"
 #include "support/random_network.hpp"
 
@@ -138,6 +140,31 @@ TEST(fit_statistics, survive_the_json_model_file_to_the_last_bit) {
   }
   // A network written without statistics reads back without them.
   EXPECT_FALSE(parse_model_json(to_json(network).dump(), "plain.json").statistics.has_value());
+}
+
+// BIF, XMLBIF and NET keep them in a network-level property, base64 of the same JSON.
+TEST(fit_statistics, survive_every_model_file_format_to_the_last_bit) {
+  const auto network = random_network(8);
+  const auto text = csv_of_rows(sample(network, 300, 8), true);
+  const auto folder = std::filesystem::temp_directory_path() / "pgm_fit_statistics_formats";
+  std::filesystem::create_directories(folder);
+  for (const auto& options : every_prior_kind(network)) {
+    const auto fitted = fit_text(text, network.structure(), options);
+    for (const char* name : {"model.bif", "model.xml", "model.net"}) {
+      SCOPED_TRACE(name);
+      write_network(fitted.network, folder / name, {.statistics = &*fitted.statistics});
+      const auto document = read_model(folder / name);
+      ASSERT_TRUE(document.statistics.has_value());
+      EXPECT_EQ(document.statistics->rows, 300.0);
+      for (std::size_t i = 0; i < network.size(); ++i) {
+        EXPECT_EQ(document.statistics->counts[i], fitted.statistics->counts[i]);
+      }
+      expect_same_estimates(estimate_network(document.structure, *document.statistics), fitted.network);
+      write_network(fitted.network, folder / name);
+      EXPECT_FALSE(read_model(folder / name).statistics.has_value());
+    }
+  }
+  std::filesystem::remove_all(folder);
 }
 
 TEST(fit_statistics, a_decay_weighs_the_old_counts_down_before_adding_the_new) {

@@ -347,11 +347,27 @@ TEST_F(pgmpy_agreement_test, files_we_write_pgmpy_reads_and_files_pgmpy_writes_w
     write_network(*net, path(name));
     request["read"].push_back(path(name).string());
   }
+  // A fit's counts, kept in a network-level property (pgm fit --keep-counts), which pgmpy ignores.
+  fit_statistics counted;
+  counted.rows = 3;
+  for (const auto& table : dashed.tables()) {
+    expected_count_table counts(table.child(), table.parents());
+    counts.counts()[0] = 3;
+    counted.counts.push_back(std::move(counts));
+    counted.priors.emplace_back(k2_prior{});
+  }
+  for (const char* name : {"counted.bif", "counted.xml"}) {
+    write_network(dashed, path(name), {.statistics = &counted});
+    ASSERT_TRUE(read_model(path(name)).statistics.has_value());
+    request["read"].push_back(path(name).string());
+  }
   request["rewrite"] = {
       {{"in", sachs_path.string()}, {"bif", path("pgmpy.bif").string()}, {"xmlbif", path("pgmpy.xml").string()}}};
   const auto answers = ask_pgmpy("formats", "-", request);
-  ASSERT_EQ(answers.size(), ours.size());
+  ASSERT_EQ(answers.size(), ours.size() + 2);
   for (std::size_t i = 0; i < ours.size(); ++i) expect_same_tables(answers[i], *ours[i].second, ours[i].first);
+  expect_same_tables(answers[ours.size()], dashed, "counted.bif");
+  expect_same_tables(answers[ours.size() + 1], dashed, "counted.xml");
   // pgmpy's BIFWriter and XMLBIFWriter output, read by us: the same network (sachs's states are
   // letters, which pgmpy's XMLBIFWriter leaves alone; it rewrites others to letters, digits, '_').
   EXPECT_EQ(read_network(path("pgmpy.bif")), sachs);

@@ -40,7 +40,9 @@ struct table_slice {
   std::size_t state = 0;
   /// P(node = state | x_i, y_j, ...) at [j * x_states + i].
   std::vector<double> probability;
-  /// The rows behind each cell, when the network's counts were given.
+  /// The rows behind each cell, when the network's counts were given: the node's family counts
+  /// at x, y and the given parents, summed over the others (observations of variables outside
+  /// the family do not narrow them).
   std::optional<std::vector<double>> rows;
   [[nodiscard]] double at(std::size_t i, std::size_t j) const { return probability[j * x->cardinality() + i]; }
 };

@@ -146,7 +146,10 @@ class bif_lexer {
 class bif_parser {
  public:
   bif_parser(std::string_view text, std::string source, const network_read_options& options)
-      : lexer_(text, std::move(source)), normalizer_(options.tolerance), notes_(options.notes) {
+      : lexer_(text, std::move(source)),
+        normalizer_(options.tolerance),
+        notes_(options.notes),
+        properties_(options.properties) {
     advance();
   }
 
@@ -264,7 +267,12 @@ class bif_parser {
     while (!accept_symbol('}')) {
       const auto keyword = expect_word("'property' or '}'");
       if (keyword.text != "property") fail(keyword, "expected 'property' or '}', found '" + keyword.text + "'");
-      property_value();
+      const auto text = property_value();
+      const auto eq = text.find('=');
+      const auto key = trim(std::string_view(text).substr(0, eq == std::string::npos ? 0 : eq));
+      if (properties_ && key.starts_with("pgm.")) {
+        (*properties_)[std::string(key.substr(4))] = std::string(trim(std::string_view(text).substr(eq + 1)));
+      }
     }
   }
 
@@ -501,6 +509,7 @@ class bif_parser {
   bif_token current_;
   column_normalizer normalizer_;
   std::vector<std::string>* notes_;
+  std::map<std::string, std::string>* properties_;
   std::map<std::string, declaration, std::less<>> declared_;
   std::vector<std::string> order_;
   std::vector<probability_block> blocks_;
@@ -557,6 +566,9 @@ struct bif_write_options {
   /// When set, receives a line for anything written that a peer reads differently (a name
   /// with '.', which pgmpy 0.1.26 reads in `variable` lines but not in `probability` lines).
   std::vector<std::string>* notes = nullptr;
+  /// pgm's network-level properties, written `property pgm.KEY = VALUE ;` in the network block
+  /// (values of letters, digits, '+', '/', '=', '.', '-': base64 or numbers).
+  std::vector<std::pair<std::string, std::string>> network_properties;
 };
 
 /// Writes BIF as pgmpy does: one `(parent states) probabilities;` line per configuration.
@@ -578,7 +590,10 @@ inline void write_bif(const bayesian_network& network, std::ostream& out, const 
     return state;
   };
   std::ostringstream text;
-  text << "network " << checked(options.network_name, "network name") << " {\n}\n";
+  text << "network " << checked(options.network_name, "network name") << " {\n";
+  for (const auto& [key, value] : options.network_properties)
+    text << "  property pgm." << key << " = " << value << " ;\n";
+  text << "}\n";
   for (const auto& v : network.variables()) {
     text << "variable " << checked(v.name(), "variable name") << " {\n  type discrete [ " << v.cardinality() << " ] { ";
     for (std::size_t s = 0; s < v.cardinality(); ++s) {

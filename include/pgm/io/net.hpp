@@ -16,6 +16,8 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/io/read_options.hpp"
@@ -31,6 +33,8 @@ namespace pgm {
 struct net_write_options {
   /// Write interval edges and semantic tags as `pgm_*` node attributes.
   bool properties = true;
+  /// pgm's network-level properties, written `pgm_KEY = "VALUE";` in the net block.
+  std::vector<std::pair<std::string, std::string>> network_properties;
 };
 
 /// Why `name` cannot be a NET node name, or nothing.

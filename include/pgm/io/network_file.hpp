@@ -5,19 +5,24 @@
 /// (`.json`). Every command that reads a model reads it through `read_model` or `read_network`,
 /// so every command reads every format. docs/formats.md says what each format carries.
 
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <ostream>
 #include <sstream>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/detail/base64.hpp"
 #include "pgm/detail/file.hpp"
+#include "pgm/detail/json_reader.hpp"
 #include "pgm/io/bif.hpp"
 #include "pgm/io/gzip.hpp"
 #include "pgm/io/json_model.hpp"
@@ -147,14 +152,51 @@ namespace detail {
 
 }  // namespace detail
 
+namespace detail {
+
+/// The property a fit's counts are kept in, in BIF, XMLBIF and NET files: the counts as
+/// pgm's JSON (pgm/io/statistics_json.hpp), compact, in base64 without its '=' padding, which
+/// peers' property readers split at.
+inline constexpr const char* statistics_property = "statistics";
+
+[[nodiscard]] inline std::string statistics_property_value(const fit_statistics& statistics) {
+  auto text = base64_encode(to_json(statistics).dump());
+  text.erase(std::find(text.begin(), text.end(), '='), text.end());
+  return text;
+}
+
+/// The counts a BIF, XMLBIF or NET file keeps in its statistics property, for `structure`.
+[[nodiscard]] inline fit_statistics statistics_of_property(std::string value, const network_structure& structure,
+                                                           const std::string& source) {
+  value.append((4 - value.size() % 4) % 4, '=');
+  const auto bytes = base64_decode(value);
+  const auto document = bytes ? nlohmann::json::parse(*bytes, nullptr, false) : nlohmann::json();
+  if (!bytes || document.is_discarded()) {
+    throw model_error("'" + source + "': the property pgm." + statistics_property +
+                      " (the counts of pgm fit --keep-counts) is damaged: not base64 of JSON");
+  }
+  return parse_statistics_json(json_reader(source + " (property pgm." + statistics_property + ")"), document,
+                               structure);
+}
+
+}  // namespace detail
+
 /// A model file of any format, compressed with gzip or not: a structure, with tables unless it
-/// is a JSON structure file (BIF, XMLBIF and NET files always hold tables).
+/// is a JSON structure file (BIF, XMLBIF and NET files always hold tables), and the counts of
+/// pgm fit --keep-counts when the file keeps them.
 [[nodiscard]] inline model_document read_model(const std::filesystem::path& path,
                                                const network_read_options& options = {}) {
   const auto format = format_to_read(path);
   if (format == network_format::json) return parse_model_json(detail::read_model_text(path), path.string());
-  auto network = parse_network(detail::read_model_text(path), format, path.string(), options);
-  return model_document{network.structure(), network.tables()};
+  std::map<std::string, std::string> properties;
+  auto reading = options;
+  reading.properties = &properties;
+  auto network = parse_network(detail::read_model_text(path), format, path.string(), reading);
+  model_document document{network.structure(), network.tables()};
+  if (const auto kept = properties.find(detail::statistics_property); kept != properties.end()) {
+    document.statistics = detail::statistics_of_property(kept->second, document.structure, path.string());
+  }
+  return document;
 }
 
 /// A fitted network from a file of any supported format, compressed with gzip or not.
@@ -169,24 +211,29 @@ struct network_write_options {
   bool properties = true;
   /// Receives a line for anything written that a peer would read differently.
   std::vector<std::string>* notes = nullptr;
-  /// The counts and priors to keep with the network, for `pgm update` (JSON models only).
+  /// The counts and priors to keep with the network, for `pgm update`: under "statistics" in
+  /// JSON, in a network-level property pgm.statistics elsewhere (which peers ignore).
   const fit_statistics* statistics = nullptr;
 };
 
 /// The text of `network` in `format`; throws model_error for what the format cannot hold.
 [[nodiscard]] inline std::string to_text(const bayesian_network& network, network_format format,
                                          const network_write_options& options = {}) {
+  std::vector<std::pair<std::string, std::string>> kept;
+  if (options.statistics && format != network_format::json) {
+    kept.emplace_back(detail::statistics_property, detail::statistics_property_value(*options.statistics));
+  }
   switch (format) {
     case network_format::bif:
-      return to_bif(network, {.properties = options.properties, .notes = options.notes});
+      return to_bif(network, {.properties = options.properties, .notes = options.notes, .network_properties = kept});
     case network_format::xmlbif:
-      return to_xmlbif(network, {.properties = options.properties});
+      return to_xmlbif(network, {.properties = options.properties, .network_properties = kept});
     case network_format::net:
-      return to_net(network, {.properties = options.properties});
+      return to_net(network, {.properties = options.properties, .network_properties = kept});
     case network_format::json:
       break;
   }
-  return to_json(network).dump(2) + "\n";
+  return (options.statistics ? to_json(network, *options.statistics) : to_json(network)).dump(2) + "\n";
 }
 
 /// Writes a network in `format`, atomically; nothing is written if the format cannot hold it.
@@ -195,11 +242,6 @@ inline void write_network(const bayesian_network& network, const std::filesystem
   if (format == network_format::json) {
     write_model_json(options.statistics ? to_json(network, *options.statistics) : to_json(network), path);
     return;
-  }
-  if (options.statistics) {
-    throw model_error("'" + path.string() +
-                      "': the counts a network is updated from are kept in pgm's JSON models "
-                      "only; write a .json file");
   }
   const auto text = to_text(network, format, options);
   detail::write_file_atomically(path, [&](std::ostream& out) { out << text; });

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <map>
 #include <optional>
 #include <span>
 #include <string>
@@ -26,6 +27,10 @@ struct network_read_options {
   /// When set, receives one line per thing the reader changed or ignored (normalized columns,
   /// properties it does not know), for the caller to show.
   std::vector<std::string>* notes = nullptr;
+  /// When set, receives pgm's own network-level properties, by key without its prefix: BIF's
+  /// `network { property pgm.KEY = VALUE ; }`, XMLBIF's `<NETWORK><PROPERTY>pgm.KEY = VALUE`,
+  /// NET's `net { pgm_KEY = "VALUE"; }` (a fit's counts, pgm/io/network_file.hpp).
+  std::map<std::string, std::string>* properties = nullptr;
 };
 
 namespace detail {

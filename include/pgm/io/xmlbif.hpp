@@ -13,6 +13,8 @@
 #include <ostream>
 #include <string>
 #include <string_view>
+#include <utility>
+#include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/io/read_options.hpp"
@@ -29,6 +31,8 @@ struct xmlbif_write_options {
   /// Write interval edges and semantic tags as `<PROPERTY>` elements.
   bool properties = true;
   std::string network_name = "unknown";
+  /// pgm's network-level properties, written `<PROPERTY>pgm.KEY = VALUE</PROPERTY>` in <NETWORK>.
+  std::vector<std::pair<std::string, std::string>> network_properties;
 };
 
 /// Writes XMLBIF; throws model_error (before writing anything) for a tag that holds '=',
