@@ -588,12 +588,13 @@ def backdoor_sets(network, x, y, *, limit=100_000):
     return _core.backdoor_sets(handle, _names(x, "x"), _names(y, "y"), _whole(limit, "limit", 1))
 
 
-def check(network, data, test="chi2", alpha=0.05, *, threads=0):
+def check(network, data, test=None, alpha=0.05, *, threads=0):
     """Tests every independence the network's DAG implies (one per pair of variables without an
     edge: each given the parents of the one that does not descend from the other) on the frame
     `data`, as `pgm check`: a DataFrame x, y, given, statistic, df, p_value, rejected, the
     smallest p-value first."""
     handle = _handle(network)
+    test = _core.default_ci_test if test is None else test
     if test not in ("chi2", "g2"):
         raise Error(f"test must be chi2 or g2, got {test!r}")
     alpha = _real(alpha, "alpha")
@@ -638,7 +639,7 @@ def prevent(network, assign, controllable=None, epsilon=0.8, success=None, dista
 
 def learn_structure(
     data,
-    test="g2",
+    test=None,
     alpha=0.01,
     tiers=None,
     forbid=None,
@@ -664,7 +665,7 @@ def learn_structure(
     """Structure learning on the frame's columns (all discrete), as `pgm learn-structure`: the
     edges of the learned DAG as (parent, child) pairs. algorithm: "pc" (PC-stable; the DAG is one
     of its equivalence class), "hc" (hill climbing), "tabu" or "mmhc" (PC-stable's skeleton
-    restricts hill climbing). test, alpha, max_cond: PC's tests. score ("bic", "aic", "bdeu",
+    restricts hill climbing). test ("chi2" by default, as the program's, or "g2"), alpha, max_cond: PC's tests. score ("bic", "aic", "bdeu",
     "k2", "loglik"), iss, max_parents (0: no limit), tabu, max_tabu, restarts, perturb, seed and
     start (a pgm.Network, (parent, child) pairs or "pc" to start from): the score searches', as
     docs/structure-learning.md says. prior_model (a pgm.Network of a related task), map (its
@@ -691,7 +692,7 @@ def learn_structure(
         tiers_text = ";".join(",".join(_names(tier, "each tier")) for tier in tiers)
     return _core.learn_structure(
         columns,
-        _text(test, "test"),
+        _core.default_ci_test if test is None else _text(test, "test"),
         _real(alpha, "alpha"),
         _whole(max_cond, "max_cond"),
         tiers_text,

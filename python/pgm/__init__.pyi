@@ -143,7 +143,12 @@ def d_separated(network: Network, x: _Names, y: _Names, given: Optional[_Names] 
 def intervene(network: Network, do: _Evidence) -> Network: ...
 def backdoor_sets(network: Network, x: _Names, y: _Names, *, limit: int = 100_000) -> tuple[list[list[str]], bool]: ...
 def check(
-    network: Network, data: pd.DataFrame, test: Literal["chi2", "g2"] = "chi2", alpha: float = 0.05, *, threads: int = 0
+    network: Network,
+    data: pd.DataFrame,
+    test: Optional[Literal["chi2", "g2"]] = None,
+    alpha: float = 0.05,
+    *,
+    threads: int = 0,
 ) -> pd.DataFrame: ...
 def predict(
     network: Network, assign: _Assignment, success: Optional[str] = None, marginalize: bool = False
@@ -159,7 +164,7 @@ def prevent(
 ) -> dict[str, Any]: ...
 def learn_structure(
     data: pd.DataFrame,
-    test: str = "g2",
+    test: Optional[Literal["chi2", "g2"]] = None,
     alpha: float = 0.01,
     tiers: Union[str, Sequence[Sequence[str]], None] = None,
     forbid: Optional[_Edges] = None,

@@ -365,7 +365,7 @@ py::dict prevent_plan(const network_handle& handle, const py::object& planned,
 // ---- structure, discretization, simulation, experiments --------------------------------------
 
 struct learn_arguments {
-  std::string test = "g2";
+  std::string test{to_string(pc_options{}.test)};
   double alpha = 0.01;
   std::size_t max_conditioning = 3;
   std::string tiers;
@@ -631,6 +631,8 @@ PYBIND11_MODULE(_core, m) {
   m.doc() = "pgm's library calls for Python; use the package pgm, which wraps them for pandas.";
   py::register_exception<pgm::error>(m, "Error", PyExc_ValueError);
   m.attr("__version__") = pgm::version;
+  // The library's defaults, which the package's own default None stands for (as the program's).
+  m.attr("default_ci_test") = std::string(to_string(pgm::pc_options{}.test));
 
   py::class_<network_handle>(m, "Network")
       .def_property_readonly("variables", [](const network_handle& h) { return names_of(h.network.variables()); })

@@ -25,13 +25,14 @@ def cli_edges(program, tmp_path, frame, *arguments):
 @pytest.mark.parametrize(
     "kwargs, arguments",
     [
-        ({}, ["--test", "g2"]),
+        ({}, []),  # the same default test (chi2)
+        ({"test": "g2"}, ["--test", "g2"]),
         ({"test": "chi2", "alpha": 0.05}, ["--test", "chi2", "--alpha", "0.05"]),
         ({"tiers": [["xOff1", "yOff1", "xOff2", "yOff2", "colour"], ["onTop1"], ["onTop2"]]},
-         ["--test", "g2", "--tiers", "xOff1,yOff1,xOff2,yOff2,colour;onTop1;onTop2"]),
+         ["--tiers", "xOff1,yOff1,xOff2,yOff2,colour;onTop1;onTop2"]),
         ({"forbid": [("onTop1", "onTop2")], "require": "yOff2->onTop2"},
-         ["--test", "g2", "--forbid", "onTop1->onTop2", "--require", "yOff2->onTop2"]),
-        ({"max_cond": 1}, ["--test", "g2", "--max-cond", "1"]),
+         ["--forbid", "onTop1->onTop2", "--require", "yOff2->onTop2"]),
+        ({"max_cond": 1}, ["--max-cond", "1"]),
     ],
 )
 def test_the_programs_dag_from_the_same_data(program, tmp_path, data, kwargs, arguments):

@@ -20,7 +20,7 @@ namespace {
 struct check_arguments {
   std::string model;
   std::string data;
-  std::string test = "chi2";
+  std::string test{to_string(ci_test_options{}.test)};
   double alpha = 0.05;
   bool all = false;
   std::string format = "text";

@@ -43,7 +43,7 @@ struct learn_structure_arguments {
   std::string map;
   double prior_weight = 5.0;
   std::optional<double> threshold;
-  std::string test = "chi2";
+  std::string test{to_string(pc_options{}.test)};  // the library's default, as Python's
   double alpha = 0.01;
   std::string correction = "none";
   double min_rows_per_cell = 0.0;
