@@ -3,7 +3,7 @@
 and scenario files the package needs at run time, in pgm/tasks.
 
 PGM_CMAKE_BUILD_DIR names a build tree to configure and build in (default: build/python-package);
-an existing tree of the same configuration is reused, so a second install compiles nothing.
+an existing tree is configured again and reused, so a second install compiles nothing.
 PGM_CMAKE_ARGS adds arguments to the configure step (e.g. "-DPGM_BUILD_BULLET=OFF").
 """
 
@@ -55,8 +55,8 @@ class CMakeBuild(build_ext):
             "-DPGM_INSTALL=OFF",
             *shlex.split(os.environ.get("PGM_CMAKE_ARGS", "")),
         ]
-        if not (build_dir / "CMakeCache.txt").exists() or "PGM_CMAKE_ARGS" in os.environ:
-            subprocess.run(configure, check=True)
+        # Configuring again is quick, and names this interpreter even in a tree made for another.
+        subprocess.run(configure, check=True)
         subprocess.run(["cmake", "--build", str(build_dir), "--target", ext.target], check=True)
         built = sorted((build_dir / "python" / "pgm").glob("_core*.so"))
         if not built:

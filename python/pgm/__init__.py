@@ -177,12 +177,16 @@ class Network:
             from matplotlib.figure import Figure
         except ImportError:
             raise Error("plot_table needs matplotlib (Debian: apt-get install python3-matplotlib)") from None
+        if path is not None:
+            path = _path(path, "path")
+            kind = os.path.splitext(path)[1].lower().lstrip(".")
+            if kind not in ("png", "svg", "pdf"):
+                raise Error(f"path '{path}': expected a .png, .svg or .pdf file")
         if state is None and self.success is not None and self.success.split("=")[0] == node:
             state = self.success.split("=", 1)[1]
         given = None if given is None else _assignment(given, "given", "{'xOff1': '@2'}")
         probability, rows, label = _core.slice_table(
-            self._net,
-            _variable(node), _variable(x), _variable(y), given, _flag(average, "average"),
+            self._net, _variable(node), _variable(x), _variable(y), given, _flag(average, "average"),
             None if state is None else str(state), _flag(counts, "counts"),
         )
         if ax is None:
@@ -200,7 +204,8 @@ class Network:
             conditions = [x, y, given]
         else:
             conditions = [x, y] + [f"{name} = {value}" for name, value in (given or {}).items()]
-        ax.set_title(f"P({node} = {label} | {', '.join(conditions)})" + (", others averaged" if average else ""), fontsize=10)
+        title = f"P({node} = {label} | {', '.join(conditions)})" + (", others averaged" if average else "")
+        ax.set_title(title, fontsize=10)
         figure.colorbar(mesh, ax=ax, label=f"P({node} = {label})")
         if rows is not None:
             for j in range(probability.shape[0]):
@@ -211,10 +216,6 @@ class Network:
                         color="white" if probability[j, i] < 0.6 else "black",
                     )
         if path is not None:
-            path = _path(path, "path")
-            kind = os.path.splitext(path)[1].lower().lstrip(".")
-            if kind not in ("png", "svg", "pdf"):
-                raise Error(f"path '{path}': expected a .png, .svg or .pdf file")
             temporary = f"{path}.tmp-{os.getpid()}.{kind}"
             figure.savefig(temporary, format=kind, dpi=110)
             os.replace(temporary, path)
