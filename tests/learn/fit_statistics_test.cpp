@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -164,6 +165,15 @@ TEST(fit_statistics, survive_every_model_file_format_to_the_last_bit) {
       EXPECT_FALSE(read_model(folder / name).statistics.has_value());
     }
   }
+  // Base64 of JSON that is not the statistics: refused with the JSON path, naming the property.
+  const auto fitted = fit_text(text, network.structure(), {});
+  write_network(fitted.network, folder / "model.bif", {.statistics = &*fitted.statistics});
+  auto bif = detail::read_file(folder / "model.bif");
+  const auto begin = bif.find("pgm.statistics = ") + 17;
+  bif.replace(begin, bif.find(' ', begin) - begin, "eyJyb3dzIjotMX0");  // {"rows":-1}
+  std::ofstream(folder / "wrong.bif") << bif;
+  EXPECT_THAT([&] { (void)read_model(folder / "wrong.bif"); },
+              ThrowsMessage<data_error>(HasSubstr("(property pgm.statistics): /statistics")));
   std::filesystem::remove_all(folder);
 }
 
