@@ -311,14 +311,8 @@ class xmlbif_reader {
       const std::string_view name = node.name();
       if (name == "DEFINITION" || name == "PROBABILITY") {  // PROBABILITY: XMLBIF 0.2
         tables.push_back(read_table(node, variables));
-      } else if (name == "PROPERTY" && options.properties) {  // pgm's own: "pgm.KEY = VALUE"
-        const auto text = text_of(node);
-        const std::string_view view(text);
-        const auto eq = view.find('=');
-        const auto key = detail::trim(view.substr(0, eq == std::string_view::npos ? 0 : eq));
-        if (key.starts_with("pgm.")) {
-          (*options.properties)[std::string(key.substr(4))] = std::string(detail::trim(view.substr(eq + 1)));
-        }
+      } else if (name == "PROPERTY" && options.properties) {
+        detail::keep_pgm_property(text_of(node), options.properties);
       }
       // NAME, other properties and elements of later versions carry nothing pgm keeps.
     }

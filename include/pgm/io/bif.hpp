@@ -267,12 +267,7 @@ class bif_parser {
     while (!accept_symbol('}')) {
       const auto keyword = expect_word("'property' or '}'");
       if (keyword.text != "property") fail(keyword, "expected 'property' or '}', found '" + keyword.text + "'");
-      const auto text = property_value();
-      const auto eq = text.find('=');
-      const auto key = trim(std::string_view(text).substr(0, eq == std::string::npos ? 0 : eq));
-      if (properties_ && key.starts_with("pgm.")) {
-        (*properties_)[std::string(key.substr(4))] = std::string(trim(std::string_view(text).substr(eq + 1)));
-      }
+      keep_pgm_property(property_value(), properties_);
     }
   }
 

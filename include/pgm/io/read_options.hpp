@@ -12,6 +12,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -34,6 +35,15 @@ struct network_read_options {
 };
 
 namespace detail {
+
+/// Keeps a network-level property's text "pgm.KEY = VALUE" (BIF, XMLBIF) in `properties` as
+/// KEY → VALUE; another property, or no `properties`, is left alone.
+inline void keep_pgm_property(std::string_view text, std::map<std::string, std::string>* properties) {
+  const auto eq = text.find('=');
+  if (properties == nullptr || eq == std::string_view::npos) return;
+  const auto key = trim(text.substr(0, eq));
+  if (key.starts_with("pgm.")) (*properties)[std::string(key.substr(4))] = std::string(trim(text.substr(eq + 1)));
+}
 
 /// Normalizing the columns of one table at a time, and the one note for a whole file.
 class column_normalizer {
