@@ -137,8 +137,14 @@ struct chunk_part {
   std::size_t rows = 0;
   std::size_t dropped = 0;  // rows left out for a missing value (policy drop)
   std::size_t lines = 0;
-  std::vector<column_part> columns;
+  std::vector<column_part> columns;  // empty until the chunk keeps a row (see parse_chunk)
 };
+
+/// Column `c` of `part`, empty when the chunk kept no row.
+const column_part& column_in(const chunk_part& part, std::size_t c) {
+  static const column_part none;
+  return part.columns.empty() ? none : part.columns[c];
+}
 
 void add_missing(const column_plan& plan, column_part& part) {
   ++part.missing;
@@ -233,11 +239,16 @@ struct drop_rule {
 chunk_part parse_chunk(std::string_view text, char delimiter, std::size_t width, const std::vector<column_plan>& plans,
                        std::size_t chunk, const drop_rule& rule) {
   chunk_part part;
-  part.columns.resize(plans.size());
-  for (std::size_t c = 0; c < plans.size(); ++c) {
-    if (plans[c].mode != column_mode::known) continue;
-    for (const auto& state : plans[c].known->states()) part.columns[c].labels.add(state, {});
-  }
+  // Columns are made at the first row kept: a chunk of blank or dropped lines costs nothing per
+  // column, so memory stays linear in the text however small the chunks (a header of 700
+  // columns over 2 000 blank lines cut into one-line chunks took 700 MB before).
+  const auto make_columns = [&] {
+    part.columns.resize(plans.size());
+    for (std::size_t c = 0; c < plans.size(); ++c) {
+      if (plans[c].mode != column_mode::known) continue;
+      for (const auto& state : plans[c].known->states()) part.columns[c].labels.add(state, {});
+    }
+  };
   std::vector<detail::csv_field> fields;
   try {
     part.lines = detail::for_each_record(text, delimiter, fields, [&](const std::vector<detail::csv_field>& record) {
@@ -246,6 +257,7 @@ chunk_part parse_chunk(std::string_view text, char delimiter, std::size_t width,
         ++part.dropped;
         return;
       }
+      if (part.columns.empty()) make_columns();
       for (std::size_t c = 0; c < plans.size(); ++c) {
         add_value(plans[c], part.columns[c], record[plans[c].position], chunk, *rule.missing);
       }
@@ -280,7 +292,7 @@ void fill_codes(std::vector<Code>& out, const std::vector<chunk_part>& parts, st
   std::size_t row = 0;
   for (std::size_t k = 0; k < parts.size(); ++k) {
     const auto& map = state_of[k];
-    for (auto code : parts[k].columns[column].codes) {
+    for (auto code : column_in(parts[k], column).codes) {
       out[row++] = code == detail::missing_id ? missing_code<Code> : static_cast<Code>(map.empty() ? code : map[code]);
     }
   }
@@ -292,7 +304,7 @@ discrete_column finish_labels(const column_plan& plan, std::size_t column, const
                               const std::string& source) {
   std::vector<std::vector<std::uint32_t>> state_of(parts.size());
   std::size_t missing = 0;
-  for (const auto& part : parts) missing += part.columns[column].missing;
+  for (const auto& part : parts) missing += column_in(part, column).missing;
   const std::size_t spare = missing ? 1 : 0;  // a code width with room for missing_code
   if (plan.mode == column_mode::known) {
     auto codes = make_code_vector(plan.known->cardinality() + spare, rows);
@@ -303,7 +315,7 @@ discrete_column finish_labels(const column_plan& plan, std::size_t column, const
   detail::label_dictionary all;
   std::vector<std::vector<std::uint32_t>> global_of(parts.size());
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    for (const auto& label : parts[k].columns[column].labels.entries()) {
+    for (const auto& label : column_in(parts[k], column).labels.entries()) {
       auto id = all.find(label.text);
       if (id == detail::label_dictionary::none) {
         auto first = label.first;
@@ -335,7 +347,7 @@ continuous_column finish_numbers(const column_plan& plan, std::size_t column, co
                                  const std::vector<std::size_t>& first_lines, std::size_t rows,
                                  const std::string& source) {
   for (std::size_t k = 0; k < parts.size(); ++k) {
-    const auto& part = parts[k].columns[column];
+    const auto& part = column_in(parts[k], column);
     if (part.first_non_finite) {
       throw parse_error(source, first_lines[k] + part.first_non_finite->line, part.first_non_finite->column,
                         "column '" + plan.name + "': " + detail::non_finite_message(part.first_non_finite_text));
@@ -344,7 +356,7 @@ continuous_column finish_numbers(const column_plan& plan, std::size_t column, co
   std::vector<double> values;
   values.reserve(rows);
   for (const auto& part : parts) {
-    const auto& numbers = part.columns[column].numbers;
+    const auto& numbers = column_in(part, column).numbers;
     values.insert(values.end(), numbers.begin(), numbers.end());
   }
   return continuous_column(plan.name, std::move(values));
@@ -424,7 +436,7 @@ csv_data read_dataset(csv_reader::impl& input, const csv_options& options) {
   bool any_text = false;
   for (std::size_t c = 0; c < plans.size(); ++c) {
     bool text_seen = false;
-    for (const auto& part : parts) text_seen = text_seen || part.columns[c].text_seen;
+    for (const auto& part : parts) text_seen = text_seen || column_in(part, c).text_seen;
     text_plans[c].mode = plans[c].mode == column_mode::automatic && text_seen ? column_mode::labels : column_mode::skip;
     any_text = any_text || text_seen;
   }
@@ -435,7 +447,9 @@ csv_data read_dataset(csv_reader::impl& input, const csv_options& options) {
     for (std::size_t c = 0; c < plans.size(); ++c) {
       if (text_plans[c].mode == column_mode::skip) continue;
       plans[c].mode = column_mode::labels;
-      for (std::size_t k = 0; k < parts.size(); ++k) parts[k].columns[c] = std::move(text_parts[k].columns[c]);
+      for (std::size_t k = 0; k < parts.size(); ++k) {
+        if (!parts[k].columns.empty()) parts[k].columns[c] = std::move(text_parts[k].columns[c]);
+      }
     }
   }
 
@@ -447,7 +461,9 @@ csv_data read_dataset(csv_reader::impl& input, const csv_options& options) {
     } else {
       result.add(finish_labels(plans[c], c, parts, first_lines, rows, input.source));
     }
-    for (auto& part : parts) part.columns[c] = {};  // give the memory back column by column
+    for (auto& part : parts) {
+      if (!part.columns.empty()) part.columns[c] = {};  // give the memory back column by column
+    }
   }
   return {std::move(result), dropped};
 }

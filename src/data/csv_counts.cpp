@@ -156,9 +156,20 @@ void fit_layout(const counter_impl& plan, partial_impl& partial, family_tally& f
 /// A thread's state: its counts over its own ids, and the block of rows not counted yet.
 struct count_worker {
   explicit count_worker(const counter_impl& plan) : partial(empty_partial(plan)) {
-    for (std::size_t c = 0; c < plan.columns.size(); ++c) block.emplace_back(std::vector<std::uint32_t>(block_rows));
-    for (auto& column : block) ids.push_back(std::get<std::vector<std::uint32_t>>(column).data());
+    block.assign(plan.columns.size(), std::vector<std::uint32_t>{});
+    ids.assign(plan.columns.size(), nullptr);
     block_missing.assign(plan.columns.size(), 0);
+  }
+
+  /// Doubles the block, up to block_rows. It starts empty so that a worker over a few short
+  /// records (tiny windows, many columns) does not pay for a full block per window.
+  void grow() {
+    capacity = std::min(block_rows, std::max<std::size_t>(64, 2 * capacity));
+    for (std::size_t c = 0; c < block.size(); ++c) {
+      auto& column = std::get<std::vector<std::uint32_t>>(block[c]);
+      column.resize(capacity);
+      ids[c] = column.data();
+    }
   }
 
   partial_impl partial;
@@ -166,6 +177,7 @@ struct count_worker {
   std::vector<std::uint32_t*> ids;          // per column: where `block` holds them (a move keeps the buffers)
   std::vector<std::uint8_t> block_missing;  // per column: the block holds a missing id
   std::size_t filled = 0;
+  std::size_t capacity = 0;  // rows `block` has room for
   std::vector<detail::csv_field> fields;
 };
 
@@ -245,6 +257,13 @@ std::size_t count_piece(const counter_impl& plan, count_worker& worker, std::str
             ++worker.partial.dropped;
             return;
           }
+          if (worker.filled == worker.capacity) {
+            if (worker.capacity < block_rows) {
+              worker.grow();
+            } else {
+              count_block(plan, worker);
+            }
+          }
           for (std::size_t c = 0; c < plan.columns.size(); ++c) {
             const auto& column = plan.columns[c];
             const auto& field = fields[column.position];
@@ -256,7 +275,7 @@ std::size_t count_piece(const counter_impl& plan, count_worker& worker, std::str
             worker.ids[c][worker.filled] = id;
           }
           ++worker.partial.rows;
-          if (++worker.filled == block_rows) count_block(plan, worker);
+          ++worker.filled;
         });
   } catch (const detail::csv_failure& failure) {
     throw detail::chunk_failure{chunk, failure};
