@@ -606,7 +606,7 @@ py::tuple run_experiments(const experiment_arguments& args) {
     target.add(p.target);
     strategy.add(p.strategy);
     weight.add(p.weight);
-    metric.add(p.metric);
+    metric.add(std::string(to_string(p.metric)));
     rows.mutable_data()[i] = static_cast<std::int64_t>(p.rows);
     repetition.mutable_data()[i] = static_cast<std::int64_t>(p.repetition);
     value.mutable_data()[i] = p.value;

@@ -16,6 +16,12 @@ using pgm::test::tiny_scenario;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
+TEST(metrics_test, every_metric_reads_back_from_its_name) {
+  for (auto metric : experiment_metrics) EXPECT_EQ(parse_experiment_metric(to_string(metric)), metric);
+  EXPECT_THAT([] { static_cast<void>(parse_experiment_metric("chosen_W")); },
+              ThrowsMessage<data_error>(HasSubstr("unknown metric 'chosen_W'; did you mean 'chosen_w'?")));
+}
+
 TEST(metrics_test, max_and_mean_difference_by_hand) {
   const variable x("x", {"a", "b", "c"}), ok("ok", {"0", "1"});
   const cpt<double> estimate(ok, {x}, {0.5, 0.5, 0.1, 0.9, 0.3, 0.7});
@@ -27,12 +33,12 @@ TEST(metrics_test, max_and_mean_difference_by_hand) {
 }
 
 double value_of(const std::vector<experiment_point>& points, const std::string& strategy, const std::string& w,
-                std::size_t rows, const std::string& metric, std::size_t rep = 0) {
+                std::size_t rows, experiment_metric metric, std::size_t rep = 0) {
   for (const auto& p : points) {
     if (p.strategy == strategy && p.weight == w && p.rows == rows && p.metric == metric && p.repetition == rep)
       return p.value;
   }
-  ADD_FAILURE() << "no point " << strategy << " w=" << w << " |D|=" << rows << " " << metric;
+  ADD_FAILURE() << "no point " << strategy << " w=" << w << " |D|=" << rows << " " << to_string(metric);
   return NAN;
 }
 
@@ -41,17 +47,17 @@ TEST(experiment_test, a_prior_equal_to_the_truth_is_exact_at_zero_data) {
   const auto points = run_experiment(s, deterministic_tasks(), {.threads = 1});
   for (std::size_t rep = 0; rep < 3; ++rep) {
     // Minimal-Replacement's prior is min(P(x1 ok), P(x2 ok)) = the truth exactly.
-    EXPECT_EQ(value_of(points, "minimal", "5", 0, "max_difference", rep), 0.0);
-    EXPECT_EQ(value_of(points, "minimal", "5", 0, "failure_prevention", rep), 1.0);
+    EXPECT_EQ(value_of(points, "minimal", "5", 0, experiment_metric::max_difference, rep), 0.0);
+    EXPECT_EQ(value_of(points, "minimal", "5", 0, experiment_metric::failure_prevention, rep), 1.0);
     // MLE without data is 1/2 everywhere: off by 1/2, and prevents nothing.
-    EXPECT_EQ(value_of(points, "mle", "0", 0, "max_difference", rep), 0.5);
-    EXPECT_EQ(value_of(points, "oracle", "0", 0, "failure_prevention", rep), 1.0);
-    EXPECT_LT(value_of(points, "mle", "0", 0, "failure_prevention", rep), 0.5);
+    EXPECT_EQ(value_of(points, "mle", "0", 0, experiment_metric::max_difference, rep), 0.5);
+    EXPECT_EQ(value_of(points, "oracle", "0", 0, experiment_metric::failure_prevention, rep), 1.0);
+    EXPECT_LT(value_of(points, "mle", "0", 0, experiment_metric::failure_prevention, rep), 0.5);
     // Direct-Replacement ignores the second cube: wrong where x2 = 2, i.e. by 1 there.
-    EXPECT_EQ(value_of(points, "direct", "5", 0, "max_difference", rep), 1.0);
+    EXPECT_EQ(value_of(points, "direct", "5", 0, experiment_metric::max_difference, rep), 1.0);
     // With data, MLE is exact wherever D has rows, so its mean difference falls.
-    EXPECT_LT(value_of(points, "mle", "0", 40, "mean_difference", rep),
-              value_of(points, "mle", "0", 0, "mean_difference", rep));
+    EXPECT_LT(value_of(points, "mle", "0", 40, experiment_metric::mean_difference, rep),
+              value_of(points, "mle", "0", 0, experiment_metric::mean_difference, rep));
   }
   // |D| runs over 0, 10, 20, 30, 40.
   std::set<std::size_t> sizes;
@@ -89,10 +95,10 @@ TEST(experiment_test, prevention_uses_the_scenarios_epsilon) {
   std::size_t changed = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
     ASSERT_EQ(a[i].metric, b[i].metric);
-    if (a[i].metric == "failure_prevention") {
+    if (a[i].metric == experiment_metric::failure_prevention) {
       changed += a[i].value != b[i].value;
     } else {
-      EXPECT_EQ(a[i].value, b[i].value) << a[i].metric;
+      EXPECT_EQ(a[i].value, b[i].value) << to_string(a[i].metric);
     }
   }
   EXPECT_GT(changed, 0U);
@@ -105,7 +111,7 @@ TEST(experiment_test, prevention_uses_the_scenarios_epsilon) {
 
 TEST(experiment_test, aggregation_gives_mean_and_sample_deviation) {
   std::vector<experiment_point> points;
-  for (double v : {1.0, 2.0, 3.0}) points.push_back({"s", "t", "mle", "0", 0, 0, "m", v});
+  for (double v : {1.0, 2.0, 3.0}) points.push_back({"s", "t", "mle", "0", 0, 0, experiment_metric::max_difference, v});
   const auto summary = aggregate(points);
   ASSERT_EQ(summary.size(), 1U);
   EXPECT_DOUBLE_EQ(summary[0].mean, 2.0);

@@ -106,6 +106,7 @@ TEST(experiment_test, progress_counts_the_jobs_up_to_all) {
                              task_facts f;
                              f.parents = {"grid"};
                              f.controllable = {"grid"};
+                             f.success_state = "1";
                              return f;
                            }};
   for (unsigned threads : {1U, 2U, 3U}) {

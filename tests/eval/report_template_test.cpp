@@ -19,13 +19,13 @@ std::vector<named_summary> summaries() {
       {"mle", {0.5, 0.7, 0.79}}, {"direct", {0.8, 0.78, 0.8}}, {"cross", {0.6, 0.65, 0.7}}};
   for (const auto& [strategy, values] : lines) {
     for (std::size_t k = 0; k < values.size(); ++k) {
-      rows.push_back(
-          {"s", "t", strategy, strategy == "mle" ? "0" : "5", 10 * k, "failure_prevention", values[k], 0.01, 3});
+      rows.push_back({"s", "t", strategy, strategy == "mle" ? "0" : "5", 10 * k, experiment_metric::failure_prevention,
+                      values[k], 0.01, 3});
     }
   }
-  rows.push_back({"s", "t", "mle", "0", 20, "mean_difference", 0.0567, 0.001, 3});
-  rows.push_back({"s", "u", "mle", "0", 5000, "chosen_w", 1234.4, 0, 3});
-  std::vector<aggregated_point> other{{"s", "t", "mle", "0", 0, "failure_prevention", 0.25, 0, 2}};
+  rows.push_back({"s", "t", "mle", "0", 20, experiment_metric::mean_difference, 0.0567, 0.001, 3});
+  rows.push_back({"s", "u", "mle", "0", 5000, experiment_metric::chosen_w, 1234.4, 0, 3});
+  std::vector<aggregated_point> other{{"s", "t", "mle", "0", 0, experiment_metric::failure_prevention, 0.25, 0, 2}};
   return {{"", rows}, {"bullet", other}};
 }
 

@@ -41,8 +41,9 @@ void expect_same(const std::vector<aggregated_point>& a, const std::vector<aggre
 }
 
 TEST(result_tables_test, points_and_summary_are_tidy_csv_with_quoted_names) {
-  const std::vector<experiment_point> points{{"s,1", "t", "mle", "0", 0, 0, "max_difference", 0.1},
-                                             {"s,1", "t", "mle", "0", 0, 1, "max_difference", 1.0 / 3}};
+  const std::vector<experiment_point> points{
+      {"s,1", "t", "mle", "0", 0, 0, experiment_metric::max_difference, 0.1},
+      {"s,1", "t", "mle", "0", 0, 1, experiment_metric::max_difference, 1.0 / 3}};
   std::ostringstream out;
   write_points_csv(points, out);
   EXPECT_EQ(out.str(),
@@ -59,12 +60,16 @@ TEST(result_tables_test, a_broken_summary_is_an_error_naming_line_and_column) {
   EXPECT_THAT([] { static_cast<void>(parse_summary_csv("scenario,target,strategy,w,rows,metric,mean\n", "s.csv")); },
               ThrowsMessage<parse_error>(HasSubstr("s.csv:1:1: the header has no column 'sd'")));
   const std::string header = "scenario,target,strategy,w,rows,metric,mean,sd,repetitions\n";
-  EXPECT_THAT([&] { static_cast<void>(parse_summary_csv(header + "a,b,mle,0,10,m,x,0,3\n", "s.csv")); },
-              ThrowsMessage<parse_error>(HasSubstr("s.csv:2:16: column 'mean': expected a finite number, got 'x'")));
-  EXPECT_THAT([&] { static_cast<void>(parse_summary_csv(header + "a,b,mle,0,-1,m,1,0,3\n", "s.csv")); },
+  EXPECT_THAT([&] { static_cast<void>(parse_summary_csv(header + "a,b,mle,0,10,max_difference,x,0,3\n", "s.csv")); },
+              ThrowsMessage<parse_error>(HasSubstr("s.csv:2:29: column 'mean': expected a finite number, got 'x'")));
+  EXPECT_THAT([&] { static_cast<void>(parse_summary_csv(header + "a,b,mle,0,-1,max_difference,1,0,3\n", "s.csv")); },
               ThrowsMessage<parse_error>(HasSubstr("column 'rows': expected a whole number, got '-1'")));
-  EXPECT_THAT([&] { static_cast<void>(parse_summary_csv(header + "a,b,mle,0,1,m,1,0\n", "s.csv")); },
+  EXPECT_THAT([&] { static_cast<void>(parse_summary_csv(header + "a,b,mle,0,1,max_difference,1,0\n", "s.csv")); },
               ThrowsMessage<parse_error>(HasSubstr("expected 9 fields as in the header, found 8")));
+  EXPECT_THAT([&] { static_cast<void>(parse_summary_csv(header + "a,b,mle,0,1,max_diference,1,0,3\n", "s.csv")); },
+              ThrowsMessage<parse_error>(HasSubstr("s.csv:2:13: column 'metric': unknown metric 'max_diference'; did "
+                                                   "you mean 'max_difference'? (known: max_difference, "
+                                                   "mean_difference, failure_prevention, chosen_w)")));
   EXPECT_THAT([] { static_cast<void>(parse_summary_csv("", "s.csv")); },
               ThrowsMessage<parse_error>(HasSubstr("the file is empty")));
 }
@@ -96,13 +101,14 @@ TEST(plot_test, one_panel_per_strategy_and_metric_with_the_legend_outside) {
 
 TEST(headline_test, success_at_zero_data_once_per_strategy_in_summary_order) {
   const auto s = parse_scenario(pgm::test::tiny_scenario, "tiny.json");
-  std::vector<aggregated_point> summary{{"tiny", "two", "oracle", "0", 0, "failure_prevention", 1.0, 0, 3},
-                                        {"tiny", "two", "mle", "0", 0, "failure_prevention", 0.123456, 0, 3},
-                                        {"tiny", "two", "mle", "0", 10, "failure_prevention", 0.9, 0, 3},
-                                        {"tiny", "two", "direct", "5", 0, "max_difference", 0.5, 0, 3},
-                                        {"tiny", "two", "direct", "5", 0, "failure_prevention", 0.5, 0, 3},
-                                        {"tiny", "two", "direct", "20", 0, "failure_prevention", 0.7, 0, 3},
-                                        {"other", "two", "cross", "5", 0, "failure_prevention", 0.7, 0, 3}};
+  std::vector<aggregated_point> summary{
+      {"tiny", "two", "oracle", "0", 0, experiment_metric::failure_prevention, 1.0, 0, 3},
+      {"tiny", "two", "mle", "0", 0, experiment_metric::failure_prevention, 0.123456, 0, 3},
+      {"tiny", "two", "mle", "0", 10, experiment_metric::failure_prevention, 0.9, 0, 3},
+      {"tiny", "two", "direct", "5", 0, experiment_metric::max_difference, 0.5, 0, 3},
+      {"tiny", "two", "direct", "5", 0, experiment_metric::failure_prevention, 0.5, 0, 3},
+      {"tiny", "two", "direct", "20", 0, experiment_metric::failure_prevention, 0.7, 0, 3},
+      {"other", "two", "cross", "5", 0, experiment_metric::failure_prevention, 0.7, 0, 3}};
   const auto entries = prevention_at_zero_data(summary, "tiny", "two");
   ASSERT_EQ(entries.size(), 3U);
   EXPECT_EQ(entries[2].strategy, "direct");

@@ -38,6 +38,7 @@ inline task_source deterministic_tasks() {
             task_facts f;
             f.parents = task == "one" ? std::vector<std::string>{"x1"} : std::vector<std::string>{"x1", "x2"};
             f.controllable = {"x1", "x2"};
+            f.success_state = "1";
             return f;
           }};
 }

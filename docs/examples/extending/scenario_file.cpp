@@ -26,7 +26,7 @@ int main() {
     std::cout << "|D|\tmle\tdirect w=20\n";
     std::map<std::size_t, std::map<std::string, double>> by_rows;
     for (const auto& p : pgm::aggregate(points)) {
-      if (p.metric == "mean_difference") by_rows[p.rows][p.strategy + " w=" + p.weight] = p.mean;
+      if (p.metric == pgm::experiment_metric::mean_difference) by_rows[p.rows][p.strategy + " w=" + p.weight] = p.mean;
     }
     for (const auto& [rows, lines] : by_rows) {
       std::cout << rows << '\t' << lines.at("mle w=0") << '\t' << lines.at("direct w=20") << '\n';

@@ -17,6 +17,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/discretizer.hpp"
+#include "pgm/detail/text.hpp"
 
 namespace pgm {
 
@@ -39,6 +40,36 @@ struct binned_columns {
   /// Continuous columns the default choice left as they are, with their (few) distinct values.
   std::vector<std::pair<std::string, std::size_t>> left;
 };
+
+/// A numeric column as `pgm fit` reads it back from the file `pgm discretize` wrote with the
+/// column left as it is: one state per distinct value, named as pgm writes the value (the
+/// shortest text that reads back to it), in numeric order (pgm/data/state_order.hpp). A
+/// missing value (NaN) stays missing.
+[[nodiscard]] inline discrete_column values_as_states(const continuous_column& values) {
+  std::set<double> distinct;  // -0 and 0 are one value, as they are one state
+  for (double v : values.values()) {
+    if (!std::isnan(v)) distinct.insert(v);
+  }
+  const std::vector<double> levels(distinct.begin(), distinct.end());
+  std::vector<std::string> labels;
+  for (double level : levels) labels.push_back(detail::format_double(level));
+  variable var(values.name(), std::move(labels), values.tags());
+  const auto missing = values.missing();
+  auto codes = make_code_vector(var.cardinality() + (missing ? 1 : 0), values.size());
+  std::visit(
+      [&](auto& stored) {
+        using code = typename std::decay_t<decltype(stored)>::value_type;
+        const auto v = values.values();
+        for (std::size_t row = 0; row < v.size(); ++row) {
+          stored[row] =
+              std::isnan(v[row])
+                  ? missing_code<code>
+                  : static_cast<code>(std::lower_bound(levels.begin(), levels.end(), v[row]) - levels.begin());
+        }
+      },
+      codes);
+  return discrete_column(std::move(var), std::move(codes), std::in_place, missing);
+}
 
 /// Bins the columns `request` names (see column_binning). Throws data_error for a column that
 /// is missing, not numeric or has no saved edges, or when the default choice finds nothing to bin.

@@ -27,6 +27,7 @@
 #include <optional>
 #include <random>
 #include <set>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -38,6 +39,7 @@
 #include "pgm/eval/metrics.hpp"
 #include "pgm/eval/scenario.hpp"
 #include "pgm/learn/estimate.hpp"
+#include "pgm/sim/random.hpp"
 #include "pgm/transfer/network_transfer.hpp"
 #include "pgm/transfer/prior_weight.hpp"
 #include "pgm/transfer/propose.hpp"
@@ -49,6 +51,8 @@ struct task_facts {
   std::vector<std::string> parents;  ///< in the known structure
   std::map<std::string, semantic_tags, std::less<>> tags;
   std::set<std::string, std::less<>> controllable;
+  /// The node's state that is success (a task's outcome: "1"); empty when it has none.
+  std::string success_state;
 };
 
 /// Where data comes from: a simulator, or recorded trials.
@@ -81,14 +85,49 @@ struct experiment_point {
   std::string weight;    ///< "0" for MLE, a number, or "auto"
   std::size_t rows;      ///< |D|
   std::size_t repetition;
-  std::string metric;  ///< max_difference, mean_difference, failure_prevention, chosen_w
+  experiment_metric metric;
   double value;
 };
 
-namespace detail {
+/// A line of the plots: MLE, or a transferred prior and how it is weighed.
+struct estimator_line {
+  /// Which correspondence map the prior was transferred by.
+  enum class map_choice { scenario, proposed };
 
-/// Thrown to skip the preparation of a process that has no jobs.
-struct nothing_to_prepare {};
+  std::string strategy;  ///< "mle", or a strategy of the transfer registry
+  map_choice map = map_choice::scenario;
+  std::optional<double> weight;        ///< w; none: chosen from the counts (choose_prior_weight)
+  const cpt<double>* prior = nullptr;  ///< null for MLE
+
+  /// The `strategy` column: the strategy, "+auto-map" with the proposed map.
+  [[nodiscard]] std::string strategy_label() const {
+    return map == map_choice::proposed ? strategy + "+auto-map" : strategy;
+  }
+  /// The `weight` column: "0" for MLE, the weight, or "auto".
+  [[nodiscard]] std::string weight_label() const {
+    return !prior ? "0" : weight ? detail::format_short(*weight) : "auto";
+  }
+};
+
+/// The prior task's side, fitted once (MLE on D′) and shared by every target.
+struct prepared_prior {
+  bayesian_network network;
+  correspondence map;
+};
+
+/// Everything about one target task that stays fixed over repetitions.
+struct prepared_target {
+  std::string task;
+  family_data family;
+  std::size_t train_rows = 0;
+  std::vector<std::uint8_t> controllable;  ///< per parent of the family
+  std::size_t success_state = 0;
+  /// The transferred priors, by map: the scenario's for each strategy, and the proposed map's.
+  std::map<std::string, transferred_prior, std::less<>> priors;
+  std::vector<estimator_line> lines;
+};
+
+namespace detail {
 
 [[nodiscard]] inline std::uint64_t seed_of(std::string_view text) {
   std::uint64_t h = 1469598103934665603ULL;
@@ -96,29 +135,174 @@ struct nothing_to_prepare {};
   return h;
 }
 
-/// A line of the plots: a transferred prior (or none, for MLE) and how to weigh it.
-struct estimator_line {
-  std::string strategy;
-  std::string weight_label;
-  const cpt<double>* prior = nullptr;  ///< null: MLE
-  double weight = 0;
-  bool automatic_weight = false;
-};
+/// The seed under which `task`'s data are drawn.
+[[nodiscard]] inline std::uint64_t data_seed(std::uint64_t base_seed, std::string_view task) {
+  return mix_seed(base_seed, seed_of(task));
+}
 
-/// Everything about one target task that stays fixed over repetitions.
-struct prepared_target {
-  std::string task;
-  family_data family;
-  std::size_t train_rows;
-  std::unique_ptr<bool[]> controllable;
-  std::size_t success_state;
-  std::map<std::string, transferred_prior, std::less<>> priors;  ///< by line name
-  std::vector<estimator_line> lines;
-};
+/// Thrown to skip the preparation of a process that has no jobs.
+struct nothing_to_prepare {};
 
 }  // namespace detail
 
-/// Runs the protocol; the points come in a fixed order (target, repetition, |D|, line, metric).
+/// The prior: the family of the scenario's prior node read off D′ and fitted by MLE.
+[[nodiscard]] inline prepared_prior prepare_prior(const scenario& s, const task_source& source, std::uint64_t base_seed,
+                                                  const std::function<void(const std::string&)>& note) {
+  const auto facts = source.facts(s.prior_task, s.prior_node);
+  const auto family = read_family(source.data(s.prior_task, s.prior_rows, detail::data_seed(base_seed, s.prior_task)),
+                                  s.prior_node, facts.parents, s.bins, facts.tags);
+  for (const auto& n : family.notes) note("prior: " + n);
+  return {family.fit_all(), parse_correspondence(s.map)};
+}
+
+/// Target `index` of the scenario: its data read into the target node's family, its
+/// transferred priors and the lines to estimate with.
+[[nodiscard]] inline prepared_target prepare_target(const scenario& s, std::size_t index, const task_source& source,
+                                                    const prepared_prior& prior, std::uint64_t base_seed,
+                                                    bool automatic_lines,
+                                                    const std::function<void(const std::string&)>& note) {
+  const auto& t = s.targets.at(index);
+  const auto facts = source.facts(t.task, s.target_node);
+  prepared_target target{
+      t.task,
+      read_family(source.data(t.task, t.train_rows + t.ground_truth_rows, detail::data_seed(base_seed, t.task)),
+                  s.target_node, facts.parents, s.bins, facts.tags),
+      t.train_rows};
+  for (const auto& n : target.family.notes) note(t.task + ": " + n);
+  for (const auto& parent : target.family.parents)
+    target.controllable.push_back(facts.controllable.contains(parent.name()));
+  const auto& child = target.family.child;
+  const auto success = facts.success_state.empty() ? std::nullopt : child.find_state(facts.success_state);
+  if (!success) {
+    throw data_error("task '" + t.task + "': '" + s.target_node + "' has no success state" +
+                     (facts.success_state.empty() ? "" : " '" + facts.success_state + "'") +
+                     " (its states: " + detail::list_for_message(child.states()) + ")");
+  }
+  target.success_state = success->value();
+
+  const auto structure = target.family.structure();
+  for (const auto& strategy : s.strategies) {
+    auto priors = transfer_priors(prior.network, structure, prior.map, transfer_registry::instance().at(strategy));
+    target.priors.emplace(strategy, std::move(priors.at(s.target_node)));
+  }
+  const std::string proposed = s.strategies.back() + "+auto-map";
+  if (automatic_lines) {
+    // The proposed map, with the scenario's last strategy (its best in the paper).
+    try {
+      correspondence pinned;
+      pinned.pinned = prior.map.pinned;
+      pinned.transferred = prior.map.transferred;
+      const auto proposal =
+          propose_correspondence({&structure, nullptr}, {&prior.network.structure(), &prior.network}, pinned);
+      note(t.task + ": proposed map " + to_string(proposal) +
+           (to_string(proposal) == to_string(prior.map) ? " (the scenario's)" : " (the scenario's: " + s.map + ")"));
+      auto priors =
+          transfer_priors(prior.network, structure, proposal, transfer_registry::instance().at(s.strategies.back()));
+      target.priors.emplace(proposed, std::move(priors.at(s.target_node)));
+    } catch (const error& e) {
+      note(t.task + ": no line for the proposed map: " + e.what());
+    }
+  }
+
+  using map_choice = estimator_line::map_choice;
+  target.lines.push_back({"mle", map_choice::scenario, std::nullopt, nullptr});
+  double smallest_weight = INFINITY;
+  for (double w : s.weights) {
+    if (w > 0) smallest_weight = std::min(smallest_weight, w);
+  }
+  // In the order of the priors' names, as before the lines were typed.
+  for (const auto& [name, prior_of_line] : target.priors) {
+    const auto map = name == proposed ? map_choice::proposed : map_choice::scenario;
+    const auto strategy = map == map_choice::proposed ? s.strategies.back() : name;
+    for (double w : s.weights) {
+      // The proposed map at the smallest weight only, to keep the plots readable.
+      if (w == 0 || (map == map_choice::proposed && w != smallest_weight)) continue;
+      target.lines.push_back({strategy, map, w, &prior_of_line.table()});
+    }
+    if (automatic_lines && map == map_choice::scenario) {
+      target.lines.push_back({strategy, map, std::nullopt, &prior_of_line.table()});
+    }
+  }
+  return target;
+}
+
+/// The rows of a target's data that repetition `repetition` trains on: a uniform random subset
+/// of `train_rows` (a partial Fisher–Yates shuffle), in random order, followed by the rest.
+/// The draws come from pgm's own SplitMix64 stream, so the split is the same with any standard
+/// library.
+[[nodiscard]] inline std::vector<std::uint32_t> split_rows(std::size_t rows, std::size_t train_rows,
+                                                           std::uint64_t seed) {
+  std::mt19937_64 random(seed);
+  std::vector<std::uint32_t> order(rows);
+  std::iota(order.begin(), order.end(), 0U);
+  for (std::size_t i = 0; i < train_rows; ++i) {
+    std::uniform_int_distribution<std::size_t> pick(i, order.size() - 1);
+    std::swap(order[i], order[pick(random)]);
+  }
+  return order;
+}
+
+/// One repetition on one target: the split, θ* on D_GroundTruth, and every line's estimate on
+/// 0, 1, …, `subsets` parts of D, scored by every metric; points in the order (|D|, line, metric).
+[[nodiscard]] inline std::vector<experiment_point> run_repetition(const scenario& s, const prepared_target& target,
+                                                                  std::size_t repetition, std::uint64_t base_seed,
+                                                                  const prevention_options& prevention) {
+  std::vector<experiment_point> out;
+  const auto& family = target.family;
+  const auto order = split_rows(
+      family.rows(), target.train_rows,
+      detail::mix_seed(detail::mix_seed(base_seed, detail::seed_of(s.name + "/" + target.task)), repetition));
+  auto all = family.empty_counts();
+  family.add_counts(order, all);
+  auto truth_counts = all;
+  {
+    auto train = family.empty_counts();
+    family.add_counts(std::span(order).first(target.train_rows), train);
+    for (std::size_t c = 0; c < truth_counts.counts().size(); ++c) truth_counts.counts()[c] -= train.counts()[c];
+  }
+  const auto truth = estimate_mle(truth_counts);
+  std::vector<double> produced(truth.configurations());
+  for (std::size_t u = 0; u < produced.size(); ++u) {
+    produced[u] = static_cast<double>(truth_counts.total(config_index(static_cast<config_index::rep>(u))));
+  }
+  const auto controllable = std::make_unique<bool[]>(target.controllable.size());
+  for (std::size_t p = 0; p < target.controllable.size(); ++p) controllable[p] = target.controllable[p] != 0;
+  const std::span<const bool> controllable_parents(controllable.get(), target.controllable.size());
+  auto emit = [&](const std::string& strategy, const std::string& weight, std::size_t rows, experiment_metric metric,
+                  double value) {
+    out.push_back({s.name, target.task, strategy, weight, rows, repetition, metric, value});
+  };
+  const double oracle =
+      failure_prevention_rate(truth, truth, target.success_state, controllable_parents, produced, prevention);
+  auto counts = family.empty_counts();
+  std::size_t counted = 0;
+  for (std::size_t k = 0; k <= s.subsets; ++k) {
+    const std::size_t end = k * target.train_rows / s.subsets;
+    family.add_counts(std::span(order).subspan(counted, end - counted), counts);
+    counted = end;
+    emit("oracle", "0", end, experiment_metric::failure_prevention, oracle);
+    for (const auto& line : target.lines) {
+      const auto strategy = line.strategy_label();
+      const auto weight_label = line.weight_label();
+      double w = line.weight.value_or(0.0);
+      if (line.prior && !line.weight) {
+        w = choose_prior_weight(counts, *line.prior).weight;
+        emit(strategy, weight_label, end, experiment_metric::chosen_w, w);
+      }
+      const auto estimate_k = line.prior ? estimate(counts, weighted_prior{*line.prior, w}) : estimate_mle(counts);
+      const auto difference = success_parameter_difference(estimate_k, truth, target.success_state);
+      emit(strategy, weight_label, end, experiment_metric::max_difference, difference.max);
+      emit(strategy, weight_label, end, experiment_metric::mean_difference, difference.mean);
+      emit(
+          strategy, weight_label, end, experiment_metric::failure_prevention,
+          failure_prevention_rate(estimate_k, truth, target.success_state, controllable_parents, produced, prevention));
+    }
+  }
+  return out;
+}
+
+/// Runs the protocol, a map of run_repetition over the (target, repetition) jobs; the points
+/// come in a fixed order (target, repetition, |D|, line, metric).
 [[nodiscard]] inline std::vector<experiment_point> run_experiment(const scenario& s, const task_source& source,
                                                                   const experiment_options& options = {}) {
   auto& group = options.across_processes ? detail::processes() : detail::lone_process();
@@ -133,7 +317,7 @@ struct prepared_target {
   // on process 0 (slot 0: the prior's; t + 1: target t's).
   std::vector<std::vector<std::string>> held(s.targets.size() + 1);
   std::size_t noting = 0;
-  auto note = [&](const std::string& text) {
+  const std::function<void(const std::string&)> note = [&](const std::string& text) {
     if (group.size() > 1 && noting > 0) {
       held[noting].push_back(s.name + ": " + text);
     } else if (options.note) {
@@ -146,80 +330,19 @@ struct prepared_target {
 
   // Preparation, agreed on by all processes before any job runs: a failure is that of the first
   // job of the first target that fails (the prior's counts as job 0), as on one process.
-  std::vector<std::optional<detail::prepared_target>> targets(s.targets.size());
+  std::vector<std::optional<prepared_target>> targets(s.targets.size());
   std::exception_ptr failure;
   std::size_t failed_job = 0;
   try {
     if (share.empty() && group.rank() != 0) throw detail::nothing_to_prepare{};
-    // The prior: fitted once, by MLE, on D′.
-    const auto prior_facts = source.facts(s.prior_task, s.prior_node);
-    const auto prior_family =
-        read_family(source.data(s.prior_task, s.prior_rows, detail::mix_seed(base_seed, detail::seed_of(s.prior_task))),
-                    s.prior_node, prior_facts.parents, s.bins, prior_facts.tags);
-    for (const auto& n : prior_family.notes) note("prior: " + n);
-    const auto prior_network = prior_family.fit_all();
-    const auto map = parse_correspondence(s.map);
-
+    const auto prior = prepare_prior(s, source, base_seed, note);
     // Only the targets of this process's jobs.
     const std::size_t first_target = share.empty() ? 0 : share.begin / repetitions;
     const std::size_t end_target = share.empty() ? 0 : (share.end - 1) / repetitions + 1;
     for (std::size_t index = first_target; index < end_target; ++index) {
-      const auto& t = s.targets[index];
       failed_job = index * repetitions;
       noting = index + 1;
-      const auto facts = source.facts(t.task, s.target_node);
-      detail::prepared_target target{t.task,
-                                     read_family(source.data(t.task, t.train_rows + t.ground_truth_rows,
-                                                             detail::mix_seed(base_seed, detail::seed_of(t.task))),
-                                                 s.target_node, facts.parents, s.bins, facts.tags),
-                                     t.train_rows,
-                                     nullptr,
-                                     0,
-                                     {},
-                                     {}};
-      for (const auto& n : target.family.notes) note(t.task + ": " + n);
-      const auto& parents = target.family.parents;
-      target.controllable = std::make_unique<bool[]>(parents.size());
-      for (std::size_t p = 0; p < parents.size(); ++p)
-        target.controllable[p] = facts.controllable.contains(parents[p].name());
-      target.success_state = target.family.child.state("1").value();
-      const auto structure = target.family.structure();
-      for (const auto& strategy : s.strategies) {
-        auto priors = transfer_priors(prior_network, structure, map, transfer_registry::instance().at(strategy));
-        target.priors.emplace(strategy, std::move(priors.at(s.target_node)));
-      }
-      if (options.automatic_lines) {
-        // The proposed map, with the scenario's last strategy (its best in the paper).
-        try {
-          correspondence pinned;
-          pinned.pinned = map.pinned;
-          pinned.transferred = map.transferred;
-          const auto proposal =
-              propose_correspondence({&structure, nullptr}, {&prior_network.structure(), &prior_network}, pinned);
-          note(t.task + ": proposed map " + to_string(proposal) +
-               (to_string(proposal) == to_string(map) ? " (the scenario's)" : " (the scenario's: " + s.map + ")"));
-          auto priors = transfer_priors(prior_network, structure, proposal,
-                                        transfer_registry::instance().at(s.strategies.back()));
-          target.priors.emplace(s.strategies.back() + "+auto-map", std::move(priors.at(s.target_node)));
-        } catch (const error& e) {
-          note(t.task + ": no line for the proposed map: " + e.what());
-        }
-      }
-      target.lines.push_back({"mle", "0", nullptr, 0, false});
-      double smallest_weight = INFINITY;
-      for (double w : s.weights) {
-        if (w > 0) smallest_weight = std::min(smallest_weight, w);
-      }
-      for (const auto& [name, prior] : target.priors) {
-        const bool auto_map = name.find("+auto-map") != std::string::npos;
-        for (double w : s.weights) {
-          // The proposed map at the smallest weight only, to keep the plots readable.
-          if (w == 0 || (auto_map && w != smallest_weight)) continue;
-          target.lines.push_back({name, detail::format_short(w), &prior.table(), w, false});
-        }
-        if (options.automatic_lines && !auto_map) target.lines.push_back({name, "auto", &prior.table(), 0, true});
-      }
-      targets[index].emplace(std::move(target));
+      targets[index].emplace(prepare_target(s, index, source, prior, base_seed, options.automatic_lines, note));
     }
   } catch (const detail::nothing_to_prepare&) {
   } catch (...) {
@@ -239,60 +362,7 @@ struct prepared_target {
   }
   detail::parallel_for_on(group, total, parallel, [&](detail::item_range jobs) {
     for (std::size_t job = jobs.begin; job < jobs.end; ++job) {
-      const auto& target = *targets[job / repetitions];
-      const std::size_t rep = job % repetitions;
-      auto& out = results[job];
-      std::mt19937_64 random(
-          detail::mix_seed(detail::mix_seed(base_seed, detail::seed_of(s.name + "/" + target.task)), rep));
-      const auto& family = target.family;
-      // D: a uniform random subset of the rows (partial Fisher–Yates), in random order.
-      std::vector<std::uint32_t> order(family.rows());
-      std::iota(order.begin(), order.end(), 0U);
-      for (std::size_t i = 0; i < target.train_rows; ++i) {
-        std::uniform_int_distribution<std::size_t> pick(i, order.size() - 1);
-        std::swap(order[i], order[pick(random)]);
-      }
-      auto all = family.empty_counts();
-      family.add_counts(order, all);
-      auto truth_counts = all;
-      {
-        auto train = family.empty_counts();
-        family.add_counts(std::span(order).first(target.train_rows), train);
-        for (std::size_t c = 0; c < truth_counts.counts().size(); ++c) truth_counts.counts()[c] -= train.counts()[c];
-      }
-      const auto truth = estimate_mle(truth_counts);
-      std::vector<double> produced(truth.configurations());
-      for (std::size_t u = 0; u < produced.size(); ++u) {
-        produced[u] = static_cast<double>(truth_counts.total(config_index(static_cast<config_index::rep>(u))));
-      }
-      const std::span<const bool> controllable(target.controllable.get(), family.parents.size());
-      auto emit = [&](const std::string& strategy, const std::string& weight, std::size_t rows,
-                      const std::string& metric, double value) {
-        out.push_back({s.name, target.task, strategy, weight, rows, rep, metric, value});
-      };
-      const double oracle =
-          failure_prevention_rate(truth, truth, target.success_state, controllable, produced, prevention);
-      auto counts = family.empty_counts();
-      std::size_t counted = 0;
-      for (std::size_t k = 0; k <= s.subsets; ++k) {
-        const std::size_t end = k * target.train_rows / s.subsets;
-        family.add_counts(std::span(order).subspan(counted, end - counted), counts);
-        counted = end;
-        emit("oracle", "0", end, "failure_prevention", oracle);
-        for (const auto& line : target.lines) {
-          double w = line.weight;
-          if (line.automatic_weight) {
-            w = choose_prior_weight(counts, *line.prior).weight;
-            emit(line.strategy, line.weight_label, end, "chosen_w", w);
-          }
-          const auto estimate_k = line.prior ? estimate(counts, weighted_prior{*line.prior, w}) : estimate_mle(counts);
-          const auto difference = success_parameter_difference(estimate_k, truth, target.success_state);
-          emit(line.strategy, line.weight_label, end, "max_difference", difference.max);
-          emit(line.strategy, line.weight_label, end, "mean_difference", difference.mean);
-          emit(line.strategy, line.weight_label, end, "failure_prevention",
-               failure_prevention_rate(estimate_k, truth, target.success_state, controllable, produced, prevention));
-        }
-      }
+      results[job] = run_repetition(s, *targets[job / repetitions], job % repetitions, base_seed, prevention);
     }
   });
   // The first job of a target carries the target's notes to process 0.
@@ -309,7 +379,7 @@ struct prepared_target {
           for (const auto* text : {&p.scenario, &p.target, &p.strategy, &p.weight}) out.put(*text);
           out.put<std::uint64_t>(p.rows);
           out.put<std::uint64_t>(p.repetition);
-          out.put(p.metric);
+          out.put<std::uint8_t>(static_cast<std::uint8_t>(p.metric));
           out.put(p.value);
         }
       },
@@ -322,7 +392,7 @@ struct prepared_target {
           for (auto* text : {&p.scenario, &p.target, &p.strategy, &p.weight}) *text = in.get_string();
           p.rows = in.get<std::uint64_t>();
           p.repetition = in.get<std::uint64_t>();
-          p.metric = in.get_string();
+          p.metric = static_cast<experiment_metric>(in.get<std::uint8_t>());
           p.value = in.get<double>();
         }
       });
@@ -343,7 +413,7 @@ struct prepared_target {
 struct aggregated_point {
   std::string scenario, target, strategy, weight;
   std::size_t rows;
-  std::string metric;
+  experiment_metric metric;
   double mean, standard_deviation;
   std::size_t repetitions;
 };
@@ -354,7 +424,7 @@ struct aggregated_point {
     double sum = 0, sum_squares = 0;
     std::size_t n = 0;
   };
-  using key = std::tuple<std::string, std::string, std::string, std::string, std::size_t, std::string>;
+  using key = std::tuple<std::string, std::string, std::string, std::string, std::size_t, experiment_metric>;
   std::map<key, accumulator> groups;
   for (std::size_t i = 0; i < points.size(); ++i) {
     const auto& p = points[i];

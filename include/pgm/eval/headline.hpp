@@ -27,7 +27,9 @@ struct headline_entry {
   std::vector<headline_entry> entries;
   std::set<std::string, std::less<>> shown;
   for (const auto& p : summary) {
-    if (p.scenario != scenario_name || p.target != target || p.rows != 0 || p.metric != "failure_prevention") continue;
+    if (p.scenario != scenario_name || p.target != target || p.rows != 0 ||
+        p.metric != experiment_metric::failure_prevention)
+      continue;
     if (shown.insert(p.strategy).second) entries.push_back({p.strategy, p.mean});
   }
   return entries;

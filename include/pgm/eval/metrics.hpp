@@ -7,13 +7,54 @@
 /// child would double the mean; the text counts 625 parameters, and we follow the text).
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
+#include <string>
+#include <string_view>
 
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/detail/text.hpp"
 
 namespace pgm {
+
+/// What the experiment measures of an estimate (the `metric` column of its tables).
+enum class experiment_metric {
+  max_difference,      ///< Max-Difference against θ*
+  mean_difference,     ///< Mean-Difference against θ*
+  failure_prevention,  ///< the share of failures prevented
+  chosen_w             ///< the weight an automatic line chose
+};
+
+inline constexpr std::array experiment_metrics{experiment_metric::max_difference, experiment_metric::mean_difference,
+                                               experiment_metric::failure_prevention, experiment_metric::chosen_w};
+
+[[nodiscard]] constexpr std::string_view to_string(experiment_metric metric) noexcept {
+  switch (metric) {
+    case experiment_metric::max_difference:
+      return "max_difference";
+    case experiment_metric::mean_difference:
+      return "mean_difference";
+    case experiment_metric::failure_prevention:
+      return "failure_prevention";
+    case experiment_metric::chosen_w:
+      return "chosen_w";
+  }
+  return "?";
+}
+
+/// The metric named `text`; throws data_error naming the known ones otherwise.
+[[nodiscard]] inline experiment_metric parse_experiment_metric(std::string_view text) {
+  std::vector<std::string> names;
+  for (auto metric : experiment_metrics) {
+    if (to_string(metric) == text) return metric;
+    names.emplace_back(to_string(metric));
+  }
+  const auto near = detail::closest_name(text, names);
+  throw data_error("unknown metric '" + std::string(text) + "'" + (near ? "; did you mean '" + *near + "'?" : "") +
+                   " (known: " + detail::join(names, ", ") + ")");
+}
 
 struct parameter_difference {
   double max = 0;

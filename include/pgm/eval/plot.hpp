@@ -49,8 +49,8 @@ namespace detail {
   std::map<std::string, std::map<std::string, std::vector<const aggregated_point*>>> lines;
   const std::vector<std::string>& columns = s.strategies;
   for (const auto& p : summary) {
-    if (p.scenario != s.name || p.target != target || p.metric == "chosen_w") continue;
-    lines[p.metric][p.strategy + "|" + p.weight].push_back(&p);
+    if (p.scenario != s.name || p.target != target || p.metric == experiment_metric::chosen_w) continue;
+    lines[std::string(to_string(p.metric))][p.strategy + "|" + p.weight].push_back(&p);
   }
   std::ostringstream g;
   std::size_t block = 0;

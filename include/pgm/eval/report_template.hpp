@@ -261,7 +261,7 @@ class report_template_renderer {
   }
 
   static fields key_of(const aggregated_point& p) {
-    return {p.scenario, p.target, p.strategy, p.weight, std::to_string(p.rows), p.metric};
+    return {p.scenario, p.target, p.strategy, p.weight, std::to_string(p.rows), std::string(to_string(p.metric))};
   }
 
   values select(const std::string& selector, const context& at) const {

@@ -38,8 +38,8 @@ inline void write_points_csv(const std::vector<experiment_point>& points, std::o
   out << "scenario,target,strategy,w,rows,repetition,metric,value\n";
   for (const auto& p : points) {
     out << detail::csv_text(p.scenario) << ',' << detail::csv_text(p.target) << ',' << detail::csv_text(p.strategy)
-        << ',' << detail::csv_text(p.weight) << ',' << p.rows << ',' << p.repetition << ','
-        << detail::csv_text(p.metric) << ',' << detail::format_double(p.value) << '\n';
+        << ',' << detail::csv_text(p.weight) << ',' << p.rows << ',' << p.repetition << ',' << to_string(p.metric)
+        << ',' << detail::format_double(p.value) << '\n';
   }
 }
 
@@ -53,7 +53,7 @@ inline void write_summary_csv(const std::vector<aggregated_point>& summary, std:
   out << detail::join(detail::summary_columns, ",") << '\n';
   for (const auto& p : summary) {
     out << detail::csv_text(p.scenario) << ',' << detail::csv_text(p.target) << ',' << detail::csv_text(p.strategy)
-        << ',' << detail::csv_text(p.weight) << ',' << p.rows << ',' << detail::csv_text(p.metric) << ','
+        << ',' << detail::csv_text(p.weight) << ',' << p.rows << ',' << to_string(p.metric) << ','
         << detail::format_double(p.mean) << ',' << detail::format_double(p.standard_deviation) << ',' << p.repetitions
         << '\n';
   }
@@ -114,7 +114,15 @@ inline void write_summary_csv(const std::vector<aggregated_point>& summary, cons
       if (field(c).text.empty()) fail(c, "expected a name");
       return std::string(field(c).text);
     };
-    summary.push_back({name(0), name(1), name(2), name(3), whole(4), name(5), real(6), real(7), whole(8)});
+    auto metric = [&](std::size_t c) {
+      try {
+        return parse_experiment_metric(field(c).text);
+      } catch (const data_error& e) {
+        throw parse_error(source, field(c).line, field(c).column,
+                          "column '" + std::string(detail::summary_columns[c]) + "': " + e.what());
+      }
+    };
+    summary.push_back({name(0), name(1), name(2), name(3), whole(4), metric(5), real(6), real(7), whole(8)});
   }
   return summary;
 }

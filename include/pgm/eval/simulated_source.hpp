@@ -25,7 +25,8 @@
 namespace pgm {
 
 /// What the protocol needs of `node` in `task`: its parents in the task's known structure, the
-/// tags of every variable and which variables the robot controls.
+/// tags of every variable, which variables the robot controls, and the success state of an
+/// outcome.
 [[nodiscard]] inline task_facts facts_of(const sim::task_definition& task, const std::string& node) {
   if (!task.contains(node)) throw data_error("task '" + task.name + "' has no variable '" + node + "'");
   task_facts facts;
@@ -36,6 +37,7 @@ namespace pgm {
     facts.tags.emplace(v.name, v.tags);
     if (v.controllable) facts.controllable.insert(v.name);
   }
+  if (task.at(node).kind == sim::variable_kind::outcome) facts.success_state = sim::outcome_success_state;
   return facts;
 }
 

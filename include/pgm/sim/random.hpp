@@ -14,8 +14,9 @@
 namespace pgm::sim {
 
 /// What a stream is for: the sampled task variables and the simulator's noise are separate
-/// streams, so that two back-ends given one seed see the same inputs.
-enum class stream_purpose : std::uint64_t { inputs = 1, noise = 2 };
+/// streams, so that two back-ends given one seed see the same inputs; the experiment's split
+/// of a target's rows into D and D_GroundTruth is a third (pgm::split_rows).
+enum class stream_purpose : std::uint64_t { inputs = 1, noise = 2, split = 3 };
 
 class random_stream {
  public:

@@ -30,6 +30,9 @@ enum class variable_kind {
   outcome       ///< an experiment's result, states "0" and "1" (1 = success)
 };
 
+/// The state of an outcome that is success.
+inline constexpr const char* outcome_success_state = "1";
+
 struct task_variable {
   std::string name;
   variable_kind kind = variable_kind::continuous;
