@@ -51,7 +51,6 @@ def test_estimators_equal_the_programs_to_the_last_bit(program, tasks, kwargs, a
         ({"strategy": "minimal", "map": MAP, "w_prior": 2}, ["--strategy", "minimal", "--map", MAP, "--w-prior", "2"]),
         ({"strategy": "direct", "map": MAP}, ["--strategy", "direct", "--map", MAP]),
         ({"strategy": "cross", "map": MAP, "w_prior": 20.5}, ["--strategy", "cross", "--map", MAP, "--w-prior", "20.5"]),
-        ({"strategy": "blend", "map": MAP, "w_prior": 5}, ["--strategy", "blend", "--map", MAP, "--w-prior", "5"]),
         ({"map": "auto", "w_prior": "auto"}, ["--map", "auto", "--w-prior", "auto"]),
         (
             {"estimator": "bayes", "prior": "k2", "map": MAP, "w_prior": 3, "match": "overlap"},

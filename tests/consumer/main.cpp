@@ -1,5 +1,7 @@
-// Fits a two-node network through the installed or fetched library and checks one value.
+// Fits a two-node network through the installed or fetched library and checks one value, and
+// that the generated headers (version, where the tasks are installed) came along.
 #include <iostream>
+#include <pgm/config.hpp>
 #include <pgm/pgm.hpp>
 #include <pgm/version.hpp>
 #include <string_view>
@@ -13,5 +15,6 @@ int main() {
   const auto network = pgm::fit(pgm::network_structure({a, b}, {{"a", "b"}}), data);
   const double p = network.table("b").probability("yes", {"yes"});
   std::cout << "pgm " << pgm::version << ": P(b=yes | a=yes) = " << p << '\n';
-  return p * 3 == 2 && !std::string_view(pgm::version).empty() ? 0 : 1;
+  const std::string_view tasks(pgm::config::installed_tasks_dir);
+  return p * 3 == 2 && !std::string_view(pgm::version).empty() && tasks.ends_with("pgm/tasks") ? 0 : 1;
 }

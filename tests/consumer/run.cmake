@@ -4,9 +4,15 @@ file(REMOVE_RECURSE ${WORK})
 include(${CMAKE_CURRENT_LIST_DIR}/../support/run_checked.cmake)
 if(MODE STREQUAL "find_package")
   run(${CMAKE_COMMAND} --install ${PGM_BINARY} --prefix ${WORK}/prefix)
-  run(${CMAKE_COMMAND} -S ${PGM_SOURCE}/tests/consumer -B ${WORK}/build -DCMAKE_PREFIX_PATH=${WORK}/prefix)
+  run(${CMAKE_COMMAND} -S ${PGM_SOURCE}/tests/consumer -B ${WORK}/build -DCMAKE_PREFIX_PATH=${WORK}/prefix
+      -DPGM_EXPECT_BULLET=${EXPECT_BULLET} -DPGM_TASK_FILE=${PGM_SOURCE}/tasks/drop-glass.json)
 else()
-  run(${CMAKE_COMMAND} -S ${PGM_SOURCE}/tests/consumer -B ${WORK}/build -DPGM_FETCH_SOURCE=${PGM_SOURCE})
+  # A fetched pgm builds the Bullet back-end when asked (it is off below a top-level project).
+  run(${CMAKE_COMMAND} -S ${PGM_SOURCE}/tests/consumer -B ${WORK}/build -DPGM_FETCH_SOURCE=${PGM_SOURCE}
+      -DPGM_BUILD_BULLET=${EXPECT_BULLET} -DPGM_EXPECT_BULLET=${EXPECT_BULLET} -DPGM_TASK_FILE=${PGM_SOURCE}/tasks/drop-glass.json)
 endif()
 run(${CMAKE_COMMAND} --build ${WORK}/build)
 run(${WORK}/build/consumer)
+if(EXPECT_BULLET)
+  run(${WORK}/build/consumer_bullet)
+endif()

@@ -6,6 +6,9 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "eval/tiny_scenario.hpp"
 
 namespace {
@@ -107,6 +110,24 @@ TEST(experiment_test, prevention_uses_the_scenarios_epsilon) {
   other.prevention.epsilon = 0.3;
   const auto c = run_experiment(usual, deterministic_tasks(), other);
   for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].value, c[i].value) << i;
+}
+
+TEST(experiment_test, the_split_is_a_uniform_random_subset_fixed_by_the_seed) {
+  constexpr std::size_t rows = 20, train = 5, seeds = 4000;
+  std::vector<std::size_t> chosen(rows, 0);
+  for (std::uint64_t seed = 0; seed < seeds; ++seed) {
+    const auto order = split_rows(rows, train, seed);
+    ASSERT_EQ(order, split_rows(rows, train, seed));
+    auto sorted = order;
+    std::sort(sorted.begin(), sorted.end());
+    for (std::size_t r = 0; r < rows; ++r) ASSERT_EQ(sorted[r], r) << "a permutation of the rows";
+    for (std::size_t i = 0; i < train; ++i) ++chosen[order[i]];
+  }
+  EXPECT_NE(split_rows(rows, train, 1), split_rows(rows, train, 2));
+  // Each row is in D with probability train/rows = 1/4: within 5 standard deviations.
+  const double expected = seeds * 0.25, deviation = std::sqrt(seeds * 0.25 * 0.75);
+  for (std::size_t r = 0; r < rows; ++r) EXPECT_NEAR(static_cast<double>(chosen[r]), expected, 5 * deviation) << r;
+  EXPECT_EQ(split_rows(3, 3, 7).size(), 3U);
 }
 
 TEST(experiment_test, aggregation_gives_mean_and_sample_deviation) {

@@ -1,7 +1,8 @@
 // A user's own transfer strategy, written outside the library's headers: "blend" averages the
 // Direct- and the Cross-Replacement prior of every configuration, for a prior that neither
-// trusts only the first cube nor only the second. docs/extending.md walks through it; the pgm
-// program is built with it, so `pgm fit --strategy blend` finds it.
+// trusts only the first cube nor only the second. docs/extending.md walks through it; a program
+// built with -DPGM_PLUGIN_SOURCES=docs/examples/extending/blend.cpp finds it by
+// `pgm fit --strategy blend`.
 
 #include <pgm/transfer/registry.hpp>
 #include <pgm/transfer/replacement.hpp>

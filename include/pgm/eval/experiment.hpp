@@ -232,12 +232,11 @@ struct nothing_to_prepare {};
 /// library.
 [[nodiscard]] inline std::vector<std::uint32_t> split_rows(std::size_t rows, std::size_t train_rows,
                                                            std::uint64_t seed) {
-  std::mt19937_64 random(seed);
+  sim::random_stream random(seed, 0, sim::stream_purpose::split);
   std::vector<std::uint32_t> order(rows);
   std::iota(order.begin(), order.end(), 0U);
-  for (std::size_t i = 0; i < train_rows; ++i) {
-    std::uniform_int_distribution<std::size_t> pick(i, order.size() - 1);
-    std::swap(order[i], order[pick(random)]);
+  for (std::size_t i = 0; i < train_rows && i < rows; ++i) {
+    std::swap(order[i], order[i + random.below(rows - i)]);
   }
   return order;
 }

@@ -11,6 +11,7 @@
 #include <system_error>
 #include <vector>
 
+#include "pgm/config.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/sim/task.hpp"
@@ -18,18 +19,13 @@
 
 namespace pgm::sim {
 
-/// Where tasks are looked for, in order: $PGM_TASKS_DIR, then the source tree's tasks/ when
-/// the program was built with PGM_DEFAULT_TASKS_DIR, then the installed ones
-/// (PGM_INSTALLED_TASKS_DIR).
+/// Where tasks are looked for, in order: $PGM_TASKS_DIR, then the source tree's tasks/ (from
+/// a build tree), then the installed ones (pgm/config.hpp).
 [[nodiscard]] inline std::vector<std::filesystem::path> default_task_directories() {
   std::vector<std::filesystem::path> result;
   if (const char* env = std::getenv("PGM_TASKS_DIR"); env && *env) result.emplace_back(env);
-#ifdef PGM_DEFAULT_TASKS_DIR
-  result.emplace_back(PGM_DEFAULT_TASKS_DIR);
-#endif
-#ifdef PGM_INSTALLED_TASKS_DIR
-  result.emplace_back(PGM_INSTALLED_TASKS_DIR);
-#endif
+  if (*config::source_tasks_dir) result.emplace_back(config::source_tasks_dir);
+  result.emplace_back(config::installed_tasks_dir);
   return result;
 }
 
