@@ -17,6 +17,7 @@
 #include "pgm/core/mixed_radix.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/core/strong_index.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/data/bin_columns.hpp"
 #include "pgm/data/csv.hpp"

@@ -85,7 +85,7 @@ void add_check_command(CLI::App& app) {
   cmd->add_option("--data", args->data, std::string("Discrete data with a column per variable") + data_file_help)
       ->required();
   cmd->add_option("--test", args->test, "Independence test: chi2 (Pearson) or g2 (likelihood ratio)")
-      ->check(CLI::IsMember({"chi2", "g2"}))
+      ->check(CLI::IsMember(known_ci_tests()))
       ->capture_default_str();
   cmd->add_option("--alpha", args->alpha, "A test with p at most alpha rejects its independence, 0 < alpha < 1")
       ->check(number_between(0, 1, true, true))

@@ -67,7 +67,7 @@ void add_convert_command(CLI::App& app) {
       ->required();
   cmd->add_option("out", args->out, "The file to write, atomically")->required();
   cmd->add_option("--to", args->to, "The output format (default: from the extension of OUT)")
-      ->check(CLI::IsMember({"bif", "xmlbif", "net", "json"}));
+      ->check(CLI::IsMember(known_network_formats()));
   cmd->add_flag("--no-properties", args->no_properties,
                 "Leave out pgm's interval edges and semantic tags (properties and attributes other tools ignore)");
   cmd->callback([args] { run_convert(*args); });

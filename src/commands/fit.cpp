@@ -197,10 +197,10 @@ void add_fit_command(CLI::App& app) {
   edges->excludes(model);
   model->excludes(edges);
   cmd->add_option("--estimator", args->estimator, "mle (eq. 3) or bayes (eq. 6)")
-      ->check(CLI::IsMember({"mle", "bayes"}))
+      ->check(CLI::IsMember(known_estimators()))
       ->capture_default_str();
   cmd->add_option("--prior", args->prior, "Prior of the Bayesian estimator: dirichlet, k2 or bdeu (default)")
-      ->check(CLI::IsMember({"dirichlet", "k2", "bdeu"}));
+      ->check(CLI::IsMember(known_priors()));
   cmd->add_option("--alpha", args->alpha, "Pseudo-count per cell of the dirichlet prior (default 1)")
       ->check(non_negative_number());
   cmd->add_option("--ess", args->ess, "Equivalent sample size of the bdeu prior (default 1)")

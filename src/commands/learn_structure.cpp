@@ -276,10 +276,10 @@ void add_learn_structure_command(CLI::App& app) {
   cmd->add_option("--algorithm", args->algorithm,
                   "pc (PC-stable), hc (hill climbing), tabu (tabu search) or mmhc (PC-stable's skeleton restricts "
                   "hill climbing)")
-      ->check(CLI::IsMember({"pc", "hc", "tabu", "mmhc"}))
+      ->check(CLI::IsMember(known_structure_algorithms()))
       ->capture_default_str();
   cmd->add_option("--score", args->score, "Score of hc, tabu and mmhc: bic, aic, bdeu, k2 or loglik (bnlearn's)")
-      ->check(CLI::IsMember({"bic", "aic", "bdeu", "bde", "k2", "loglik"}))
+      ->check(CLI::IsMember(known_score_types()))
       ->capture_default_str();
   cmd->add_option("--iss", args->iss, "Imaginary sample size of bdeu, a number > 0")
       ->check(number_between(0, std::numeric_limits<double>::infinity(), true, true))
@@ -324,7 +324,7 @@ void add_learn_structure_command(CLI::App& app) {
                   "PC-stable's result on the data with 'pc' (its --test, --alpha, --max-cond), instead of the "
                   "empty graph");
   cmd->add_option("--test", args->test, "Independence test of pc and mmhc: chi2 (Pearson) or g2 (likelihood ratio)")
-      ->check(CLI::IsMember({"chi2", "g2"}))
+      ->check(CLI::IsMember(known_ci_tests()))
       ->capture_default_str();
   cmd->add_option("--alpha", args->alpha,
                   "Significance level, strictly between 0 and 1: an edge goes when a test has p > alpha")
@@ -332,7 +332,7 @@ void add_learn_structure_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--correction", args->correction,
                   "Continuity correction of 2x2 strata: none, or yates as pgmpy applies it")
-      ->check(CLI::IsMember({"none", "yates"}))
+      ->check(CLI::IsMember(known_continuity_corrections()))
       ->capture_default_str();
   cmd->add_option("--min-rows-per-cell", args->min_rows_per_cell,
                   "Declare independence, untested, when a test has fewer rows than K per cell of its table "

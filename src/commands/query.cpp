@@ -194,7 +194,7 @@ void add_query_command(CLI::App& app) {
   cmd->add_option("--burn-in", args->burn_in, "Sweeps each Gibbs chain discards first")->capture_default_str();
   cmd->add_option("--threads", args->threads, "Threads for sampling (0: every core)")->capture_default_str();
   cmd->add_option("--format", args->format, "Output format: csv or json")
-      ->check(CLI::IsMember({"csv", "json"}))
+      ->check(CLI::IsMember(known_posterior_formats()))
       ->capture_default_str();
   cmd->add_option("--digits", args->digits, "Significant digits of each probability, 1-17 (17: full precision)")
       ->check(CLI::Range(1, 17))

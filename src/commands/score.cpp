@@ -66,7 +66,7 @@ void add_score_command(CLI::App& app) {
   cmd->add_option("--score", args->score,
                   "bic (loglik - log(n)/2 per parameter), aic (loglik - 1 per parameter), bdeu, k2 or loglik, "
                   "as bnlearn's score()")
-      ->check(CLI::IsMember({"bic", "aic", "bdeu", "bde", "k2", "loglik"}))
+      ->check(CLI::IsMember(known_score_types()))
       ->capture_default_str();
   cmd->add_option("--iss", args->iss, "Imaginary sample size of bdeu (bnlearn's iss), a number > 0")
       ->check(number_between(0, std::numeric_limits<double>::infinity(), true, true))

@@ -262,7 +262,7 @@ TEST_F(cli_test, transfer_errors_name_the_problem) {
   expect_failure(base + " --map \"onTop2=onTop1,xOff3~xOff1\" --out " + path("f.json").string(),
                  "the map's related variable 'xOff3' is not a variable of the target network", path("f.json"));
   expect_failure(base + " --strategy bogus --map \"onTop2=onTop1\" --out " + path("f.json").string(),
-                 "unknown transfer strategy 'bogus'; known: cross, direct, minimal", path("f.json"));
+                 "unknown transfer strategy 'bogus' (known: cross, direct, minimal)", path("f.json"));
   expect_failure(base + " --strategy cross --map \"onTop2=onTop1\" --out " + path("f.json").string(),
                  "Cross-Replacement leaves the prior's parent 'xOff1' of 'onTop1' unassigned", path("f.json"));
   expect_failure(base + " --map \"onTop2=onTop1\" --w-prior -1 --out " + path("f.json").string(),

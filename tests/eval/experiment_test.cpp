@@ -22,7 +22,7 @@ using ::testing::ThrowsMessage;
 TEST(metrics_test, every_metric_reads_back_from_its_name) {
   for (auto metric : experiment_metrics) EXPECT_EQ(parse_experiment_metric(to_string(metric)), metric);
   EXPECT_THAT([] { static_cast<void>(parse_experiment_metric("chosen_W")); },
-              ThrowsMessage<data_error>(HasSubstr("unknown metric 'chosen_W'; did you mean 'chosen_w'?")));
+              ThrowsMessage<unknown_name>(HasSubstr("unknown metric 'chosen_W'; did you mean 'chosen_w'?")));
 }
 
 TEST(metrics_test, max_and_mean_difference_by_hand) {

@@ -67,7 +67,7 @@ TEST_F(scenario_catalog_test, an_unknown_name_lists_the_known_ones_in_run_order)
   scenario_file("a", "alpha");
   scenario_file("b", "beta", R"(, "order": 1)");
   EXPECT_THAT([&] { static_cast<void>(select_scenarios("bogus", dir_)); },
-              ThrowsMessage<error>(HasSubstr("unknown scenario 'bogus'; known: beta, alpha, all")));
+              ThrowsMessage<unknown_name>(HasSubstr("unknown scenario 'bogus' (known: beta, alpha, all)")));
 }
 
 TEST_F(scenario_catalog_test, a_scenario_in_its_own_file_is_read_alone) {

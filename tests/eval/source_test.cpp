@@ -57,10 +57,10 @@ TEST(simulated_source_test, unknown_tasks_variables_and_back_ends_are_errors) {
   EXPECT_THAT([&] { static_cast<void>(source.facts("2-stack", "nope")); },
               ThrowsMessage<data_error>(HasSubstr("task '2-stack' has no variable 'nope'")));
   EXPECT_THAT([&] { static_cast<void>(source.data("no-such-task", 5, 1)); },
-              ThrowsMessage<data_error>(HasSubstr("unknown task 'no-such-task'")));
+              ThrowsMessage<unknown_name>(HasSubstr("unknown task 'no-such-task'")));
   const auto other = simulated_source({shipped_tasks(), "no-such-backend", 1});
   EXPECT_THAT([&] { static_cast<void>(other.data("1-stack", 5, 1)); },
-              ThrowsMessage<data_error>(HasSubstr("no-such-backend")));
+              ThrowsMessage<unknown_name>(HasSubstr("no-such-backend")));
 }
 
 }  // namespace

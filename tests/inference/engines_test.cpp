@@ -389,7 +389,7 @@ TEST(engines_test, errors_name_what_is_wrong) {
     EXPECT_NEAR(marginal(engine, "coin").probability({"heads"}), 1.0, 1e-15) << name;
   }
   EXPECT_THAT([&] { static_cast<void>(make_engine("bp", net)); },
-              ::testing::ThrowsMessage<model_error>(HasSubstr("unknown inference engine 'bp'; known: auto, gibbs")));
+              ::testing::ThrowsMessage<unknown_name>(HasSubstr("unknown inference engine 'bp' (known: auto, gibbs")));
   auto lw = make_engine("lw", net);
   EXPECT_THAT([&] { static_cast<void>(lw.mpe({})); },
               ::testing::ThrowsMessage<model_error>(HasSubstr("'lw' does not find the most probable explanation")));

@@ -88,7 +88,7 @@ TEST(posterior_table_test, errors_name_what_is_wrong) {
   EXPECT_THAT([] { static_cast<void>(parse_evidence("a=s,a=t")); },
               ThrowsMessage<model_error>(HasSubstr("'a' is observed twice")));
   EXPECT_THAT([] { static_cast<void>(parse_posterior_format("xml")); },
-              ThrowsMessage<model_error>(HasSubstr("unknown output format 'xml' (known: csv, json)")));
+              ThrowsMessage<unknown_name>(HasSubstr("unknown output format 'xml' (known: csv, json)")));
   const auto net = garden();
   const auto p = query(net, {"rain"});
   std::ostringstream out;

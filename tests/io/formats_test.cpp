@@ -309,7 +309,7 @@ TEST(network_file_test, the_extension_chooses_the_format) {
                                                 ".bifxml, .net, .json (BIF, XMLBIF, Hugin NET, pgm JSON)")));
   EXPECT_EQ(network_format_named("net"), network_format::net);
   EXPECT_THAT([] { static_cast<void>(network_format_named("dsc")); },
-              ThrowsMessage<error>(HasSubstr("unknown network format 'dsc' (formats: bif, xmlbif, net, json)")));
+              ThrowsMessage<unknown_name>(HasSubstr("unknown network format 'dsc' (known: bif, xmlbif, net, json)")));
 }
 
 TEST(network_file_test, every_format_reads_back_what_it_writes_and_notes_come_through) {

@@ -311,7 +311,7 @@ TEST(learn_structure_test, one_entry_point_for_every_algorithm) {
     EXPECT_TRUE(skeleton.graph.adjacent(skeleton.graph.id(e.from), skeleton.graph.id(e.to)));
   EXPECT_EQ(parse_structure_algorithm("tabu"), structure_algorithm::tabu);
   EXPECT_THAT([] { static_cast<void>(parse_structure_algorithm("ges")); },
-              ThrowsMessage<model_error>(HasSubstr("unknown structure learning algorithm 'ges'")));
+              ThrowsMessage<unknown_name>(HasSubstr("unknown structure learning algorithm 'ges'")));
 }
 
 }  // namespace

@@ -132,7 +132,7 @@ TEST(independence_test, bad_shapes_and_names) {
   try {
     static_cast<void>(parse_ci_test("fisher"));
     FAIL();
-  } catch (const model_error& e) {
+  } catch (const unknown_name& e) {
     EXPECT_THAT(e.what(), HasSubstr("unknown independence test 'fisher' (known: chi2, g2)"));
   }
 }
@@ -173,7 +173,7 @@ TEST(independence_test, yates_corrects_only_strata_with_one_degree_of_freedom) {
   EXPECT_EQ(to_string(continuity_correction::yates), "yates");
   EXPECT_EQ(parse_continuity_correction("none"), continuity_correction::none);
   EXPECT_THAT([] { static_cast<void>(parse_continuity_correction("williams")); },
-              ::testing::ThrowsMessage<model_error>(
+              ::testing::ThrowsMessage<unknown_name>(
                   HasSubstr("unknown continuity correction 'williams' (known: none, yates)")));
 }
 

@@ -54,7 +54,7 @@ TEST(score_test, names_and_bad_options) {
     EXPECT_EQ(parse_score_type(to_string(type)), type);
   }
   EXPECT_THAT([] { static_cast<void>(parse_score_type("mdl")); },
-              ThrowsMessage<model_error>(HasSubstr("unknown score 'mdl' (expected bic")));
+              ThrowsMessage<unknown_name>(HasSubstr("unknown score 'mdl' (known: bic, aic, bdeu, k2, loglik, bde)")));
   EXPECT_THAT(
       [] {
         check_score_choice({score_type::bdeu, 0.0});

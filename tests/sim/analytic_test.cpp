@@ -150,9 +150,8 @@ TEST(analytic_test, unknown_backend_is_an_error) {
   simulate_options o;
   o.backend = "unity";
   o.rows = 1;
-  EXPECT_THAT(
-      [&] { (void)simulate(shipped("1-stack"), o); },
-      ::testing::ThrowsMessage<data_error>(HasSubstr("unknown simulator back-end 'unity' (available: analytic")));
+  EXPECT_THAT([&] { (void)simulate(shipped("1-stack"), o); },
+              ::testing::ThrowsMessage<unknown_name>(HasSubstr("unknown simulator back-end 'unity' (known: analytic")));
 }
 
 // Monte-Carlo rates per Table I box agree with the integrated probability within 4.5

@@ -84,7 +84,7 @@ TEST(registry_test, errors_name_the_backend_and_the_available_ones) {
   backend_registry registry;
   registry.add("analytic", &simulate_analytic);
   EXPECT_THAT([&] { (void)registry.at("unity"); },
-              ThrowsMessage<data_error>(HasSubstr("unknown simulator back-end 'unity' (available: analytic)")));
+              ThrowsMessage<unknown_name>(HasSubstr("unknown simulator back-end 'unity' (known: analytic)")));
   // A program without the Bullet plugin says how to get it.
   EXPECT_THAT([&] { (void)registry.at("bullet"); },
               ThrowsMessage<data_error>(HasSubstr("the bullet back-end was not built (configure with "

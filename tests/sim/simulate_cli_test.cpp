@@ -59,7 +59,8 @@ TEST_F(simulate_cli_test, clear_errors_and_no_output) {
   const auto out = path("raw.csv");
   auto r = run("simulate --task 3-stack --rows 10 --out " + out.string());
   EXPECT_EQ(r.code, 1);
-  EXPECT_THAT(r.err, HasSubstr("unknown task '3-stack' (known tasks: 1-stack, 1-stack-reality, 2-stack"));
+  EXPECT_THAT(r.err,
+              HasSubstr("unknown task '3-stack'; did you mean '1-stack'? (known: 1-stack, 1-stack-reality, 2-stack"));
   r = run("simulate --task drop-glass --variant reality --rows 10 --out " + out.string());
   EXPECT_THAT(r.err, HasSubstr("task 'drop-glass' has no reality variant"));
   r = run("simulate --task 1-stack --backend unity --rows 10 --out " + out.string());

@@ -56,7 +56,7 @@ TEST(task_test, finds_tasks_by_name_and_lists_the_known_ones) {
   try {
     (void)find_task("3-stack", dirs);
     FAIL();
-  } catch (const data_error& e) {
+  } catch (const unknown_name& e) {
     EXPECT_THAT(e.what(), HasSubstr("unknown task '3-stack'"));
     EXPECT_THAT(e.what(), HasSubstr("1-stack, 1-stack-reality, 2-stack"));
   }

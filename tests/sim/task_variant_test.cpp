@@ -26,7 +26,7 @@ TEST(task_variant_test, loads_the_variant_or_says_there_is_none) {
   EXPECT_THAT([&] { (void)load_task_variant("drop-glass", "reality", dirs); },
               ThrowsMessage<data_error>(HasSubstr("task 'drop-glass' has no reality variant")));
   EXPECT_THAT([&] { (void)load_task_variant("3-stack", "reality", dirs); },
-              ThrowsMessage<data_error>(HasSubstr("unknown task '3-stack'")));
+              ThrowsMessage<unknown_name>(HasSubstr("unknown task '3-stack'")));
 }
 
 }  // namespace

@@ -43,9 +43,9 @@ TEST(extension_test, the_blend_example_is_registered_and_averages_direct_and_cro
 }
 
 TEST(extension_test, registry_errors) {
-  EXPECT_THAT(
-      [] { static_cast<void>(transfer_registry::instance().at("bogus")); },
-      ThrowsMessage<model_error>(HasSubstr("unknown transfer strategy 'bogus'; known: blend, cross, direct, minimal")));
+  EXPECT_THAT([] { static_cast<void>(transfer_registry::instance().at("bogus")); },
+              ThrowsMessage<unknown_name>(
+                  HasSubstr("unknown transfer strategy 'bogus' (known: blend, cross, direct, minimal)")));
   EXPECT_THAT([] { transfer_registry::instance().add(direct_replacement{}); },
               ThrowsMessage<model_error>(HasSubstr("named 'direct' is registered already")));
 }

@@ -15,7 +15,7 @@
 
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/unknown_name.hpp"
 
 namespace pgm {
 
@@ -44,16 +44,14 @@ inline constexpr std::array experiment_metrics{experiment_metric::max_difference
   return "?";
 }
 
-/// The metric named `text`; throws data_error naming the known ones otherwise.
+/// The metric named `text`; throws unknown_name otherwise.
 [[nodiscard]] inline experiment_metric parse_experiment_metric(std::string_view text) {
   std::vector<std::string> names;
   for (auto metric : experiment_metrics) {
     if (to_string(metric) == text) return metric;
     names.emplace_back(to_string(metric));
   }
-  const auto near = detail::closest_name(text, names);
-  throw data_error("unknown metric '" + std::string(text) + "'" + (near ? "; did you mean '" + *near + "'?" : "") +
-                   " (known: " + detail::join(names, ", ") + ")");
+  throw unknown_name("metric", std::string(text), std::move(names));
 }
 
 struct parameter_difference {

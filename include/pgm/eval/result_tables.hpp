@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/data/csv.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/detail/text.hpp"
@@ -117,7 +118,7 @@ inline void write_summary_csv(const std::vector<aggregated_point>& summary, cons
     auto metric = [&](std::size_t c) {
       try {
         return parse_experiment_metric(field(c).text);
-      } catch (const data_error& e) {
+      } catch (const unknown_name& e) {
         throw parse_error(source, field(c).line, field(c).column,
                           "column '" + std::string(detail::summary_columns[c]) + "': " + e.what());
       }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/eval/scenario.hpp"
 
@@ -73,7 +74,9 @@ class scenario_catalog {
     for (const auto& s : scenarios_) {
       if (s.name == name) return s;
     }
-    throw error("unknown scenario '" + std::string(name) + "'; known: " + detail::join(names()) + ", all");
+    auto known = names();
+    known.emplace_back("all");
+    throw unknown_name("scenario", std::string(name), std::move(known));
   }
 
  private:

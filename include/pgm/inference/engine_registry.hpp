@@ -24,6 +24,7 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/detail/named_registry.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/inference/gibbs_sampling.hpp"
@@ -162,11 +163,11 @@ class engine_registry {
   /// Adds an engine under `name`; a second engine of the same name is an error.
   void add(std::string name, engine_factory factory) { factories_.add(std::move(name), std::move(factory)); }
 
-  /// The engine of that name for `network`, or a model_error listing the known names.
+  /// The engine of that name for `network`; unknown_name otherwise.
   [[nodiscard]] any_inference_engine make(std::string_view name, const bayesian_network& network,
                                           const inference_options& options = {}) const {
     if (auto factory = factories_.find(name)) return (*factory)(network, options);
-    throw model_error("unknown inference engine '" + std::string(name) + "'; known: " + detail::join(names()));
+    throw unknown_name("inference engine", std::string(name), names());
   }
 
   [[nodiscard]] std::vector<std::string> names() const { return factories_.names(); }

@@ -20,6 +20,7 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/data/csv.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/inference/query.hpp"
@@ -28,11 +29,14 @@ namespace pgm {
 
 enum class posterior_format { csv, json };
 
-/// Parses "csv" or "json"; throws model_error otherwise.
+/// The output formats' names, for messages and the command line's allowed values.
+[[nodiscard]] inline std::vector<std::string> known_posterior_formats() { return {"csv", "json"}; }
+
+/// Parses "csv" or "json"; throws unknown_name otherwise.
 [[nodiscard]] inline posterior_format parse_posterior_format(std::string_view text) {
   if (text == "csv") return posterior_format::csv;
   if (text == "json") return posterior_format::json;
-  throw model_error("unknown output format '" + std::string(text) + "' (known: csv, json)");
+  throw unknown_name("output format", std::string(text), known_posterior_formats());
 }
 
 /// How a posterior is written.

@@ -20,6 +20,7 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/detail/base64.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/detail/json_reader.hpp"
@@ -70,14 +71,20 @@ inline constexpr std::array<network_format_entry, 4> network_formats{{
   return {};
 }
 
-/// The format a name (bif, xmlbif, net, json) stands for; throws error for any other.
-[[nodiscard]] inline network_format network_format_named(std::string_view name) {
+/// The formats' names (bif, xmlbif, net, json), for messages and the command line's allowed
+/// values.
+[[nodiscard]] inline std::vector<std::string> known_network_formats() {
   std::vector<std::string> names;
+  for (const auto& entry : detail::network_formats) names.emplace_back(entry.name);
+  return names;
+}
+
+/// The format a name (bif, xmlbif, net, json) stands for; throws unknown_name for any other.
+[[nodiscard]] inline network_format network_format_named(std::string_view name) {
   for (const auto& entry : detail::network_formats) {
     if (entry.name == name) return entry.format;
-    names.emplace_back(entry.name);
   }
-  throw error("unknown network format '" + std::string(name) + "' (formats: " + detail::join(names) + ")");
+  throw unknown_name("network format", std::string(name), known_network_formats());
 }
 
 namespace detail {

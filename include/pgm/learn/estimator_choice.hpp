@@ -4,11 +4,13 @@
 /// Python `pgm.fit(estimator=, prior=, alpha=, ess=)` choose them: "mle" (eq. 3), or "bayes"
 /// (eq. 6) with a Dirichlet, K2 or BDeu prior (BDeu when none is named).
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <utility>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/learn/parameter_prior.hpp"
 
 namespace pgm {
@@ -24,6 +26,11 @@ struct estimator_choice {
   std::optional<double> ess;
 };
 
+/// The estimators' and the Bayesian estimator's priors' names, for messages and the command
+/// line's allowed values.
+[[nodiscard]] inline std::vector<std::string> known_estimators() { return {"mle", "bayes"}; }
+[[nodiscard]] inline std::vector<std::string> known_priors() { return {"dirichlet", "k2", "bdeu"}; }
+
 /// The prior `choice` names. Throws pgm::error for an unknown name, or a prior, alpha or ess
 /// that the chosen estimator does not use.
 [[nodiscard]] inline parameter_prior prior_of(const estimator_choice& choice) {
@@ -33,10 +40,10 @@ struct estimator_choice {
     }
     return no_prior{};
   }
-  if (choice.estimator != "bayes") throw error("unknown estimator '" + choice.estimator + "' (mle or bayes)");
+  if (choice.estimator != "bayes") throw unknown_name("estimator", choice.estimator, known_estimators());
   const auto prior = choice.prior.empty() ? std::string("bdeu") : choice.prior;
-  if (prior != "dirichlet" && prior != "k2" && prior != "bdeu") {
-    throw error("unknown prior '" + prior + "' (dirichlet, k2 or bdeu)");
+  if (const auto known = known_priors(); std::find(known.begin(), known.end(), prior) == known.end()) {
+    throw unknown_name("prior", prior, known);
   }
   if (choice.alpha && prior != "dirichlet") throw error("alpha applies to the dirichlet prior");
   if (choice.ess && prior != "bdeu") throw error("ess applies to the bdeu prior");

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
@@ -45,11 +46,17 @@ enum class ci_test {
   return test == ci_test::chi_square ? "chi2" : "g2";
 }
 
-/// Parses "chi2" or "g2"; throws model_error otherwise.
+/// The tests' names, for parsing, messages and the command line's allowed values.
+[[nodiscard]] inline std::vector<std::string> known_ci_tests() {
+  return {std::string(to_string(ci_test::chi_square)), std::string(to_string(ci_test::g_squared))};
+}
+
+/// Parses "chi2" or "g2"; throws unknown_name otherwise.
 [[nodiscard]] inline ci_test parse_ci_test(std::string_view text) {
-  if (text == "chi2") return ci_test::chi_square;
-  if (text == "g2") return ci_test::g_squared;
-  throw model_error("unknown independence test '" + std::string(text) + "' (known: chi2, g2)");
+  for (auto test : {ci_test::chi_square, ci_test::g_squared}) {
+    if (text == to_string(test)) return test;
+  }
+  throw unknown_name("independence test", std::string(text), known_ci_tests());
 }
 
 /// A continuity correction of the 2 x 2 strata (one degree of freedom).
@@ -65,11 +72,17 @@ enum class continuity_correction {
   return correction == continuity_correction::yates ? "yates" : "none";
 }
 
-/// Parses "none" or "yates"; throws model_error otherwise.
+/// The corrections' names, for parsing, messages and the command line's allowed values.
+[[nodiscard]] inline std::vector<std::string> known_continuity_corrections() {
+  return {std::string(to_string(continuity_correction::none)), std::string(to_string(continuity_correction::yates))};
+}
+
+/// Parses "none" or "yates"; throws unknown_name otherwise.
 [[nodiscard]] inline continuity_correction parse_continuity_correction(std::string_view text) {
-  if (text == "none") return continuity_correction::none;
-  if (text == "yates") return continuity_correction::yates;
-  throw model_error("unknown continuity correction '" + std::string(text) + "' (known: none, yates)");
+  for (auto correction : {continuity_correction::none, continuity_correction::yates}) {
+    if (text == to_string(correction)) return correction;
+  }
+  throw unknown_name("continuity correction", std::string(text), known_continuity_corrections());
 }
 
 /// How a test is computed and when it gives up on a sparse table.

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/learn/background_knowledge.hpp"
 #include "pgm/learn/cpdag.hpp"
@@ -37,13 +38,22 @@ enum class structure_algorithm { pc, hc, tabu, mmhc };
   return "?";
 }
 
-/// "pc", "hc", "tabu" or "mmhc"; throws model_error otherwise.
+inline constexpr std::array structure_algorithms{structure_algorithm::pc, structure_algorithm::hc,
+                                                 structure_algorithm::tabu, structure_algorithm::mmhc};
+
+/// The algorithms' names, for parsing, messages and the command line's allowed values.
+[[nodiscard]] inline std::vector<std::string> known_structure_algorithms() {
+  std::vector<std::string> known;
+  for (auto a : structure_algorithms) known.emplace_back(to_string(a));
+  return known;
+}
+
+/// "pc", "hc", "tabu" or "mmhc"; throws unknown_name otherwise.
 [[nodiscard]] inline structure_algorithm parse_structure_algorithm(std::string_view text) {
-  for (auto a :
-       {structure_algorithm::pc, structure_algorithm::hc, structure_algorithm::tabu, structure_algorithm::mmhc}) {
+  for (auto a : structure_algorithms) {
     if (text == to_string(a)) return a;
   }
-  throw model_error("unknown structure learning algorithm '" + std::string(text) + "' (expected pc, hc, tabu or mmhc)");
+  throw unknown_name("structure learning algorithm", std::string(text), known_structure_algorithms());
 }
 
 struct structure_choice {

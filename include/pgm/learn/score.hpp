@@ -21,6 +21,7 @@
 #include <string_view>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
@@ -52,13 +53,25 @@ struct score_choice {
   return "?";
 }
 
-/// "bic", "aic", "bdeu" (or bnlearn's "bde"), "k2", "loglik"; throws model_error otherwise.
+inline constexpr std::array score_types{score_type::bic, score_type::aic, score_type::bdeu, score_type::k2,
+                                        score_type::loglik};
+
+/// The scores' names, and bnlearn's "bde" for bdeu: what parse_score_type and the command
+/// line accept.
+[[nodiscard]] inline std::vector<std::string> known_score_types() {
+  std::vector<std::string> known;
+  for (auto type : score_types) known.push_back(to_string(type));
+  known.emplace_back("bde");
+  return known;
+}
+
+/// "bic", "aic", "bdeu" (or bnlearn's "bde"), "k2", "loglik"; throws unknown_name otherwise.
 [[nodiscard]] inline score_type parse_score_type(std::string_view text) {
-  for (auto type : {score_type::loglik, score_type::aic, score_type::bic, score_type::bdeu, score_type::k2}) {
+  for (auto type : score_types) {
     if (text == to_string(type)) return type;
   }
   if (text == "bde") return score_type::bdeu;
-  throw model_error("unknown score '" + std::string(text) + "' (expected bic, aic, bdeu, k2 or loglik)");
+  throw unknown_name("score", std::string(text), known_score_types());
 }
 
 /// Throws model_error for an iss or k that is not a finite positive number.

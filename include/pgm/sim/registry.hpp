@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/detail/named_registry.hpp"
 #include "pgm/detail/text.hpp"
@@ -59,8 +60,7 @@ class backend_registry {
           "the bullet back-end was not built (configure with -DPGM_BUILD_BULLET=ON and "
           "libbullet-dev installed, and link pgm_bullet)");
     }
-    throw data_error("unknown simulator back-end '" + std::string(name) +
-                     "' (available: " + pgm::detail::join(names()) + ")");
+    throw unknown_name("simulator back-end", std::string(name), names());
   }
 
   [[nodiscard]] bool contains(std::string_view name) const { return backends_.find(name).has_value(); }

@@ -13,6 +13,7 @@
 
 #include "pgm/config.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/sim/task.hpp"
 #include "pgm/sim/task_file.hpp"
@@ -57,9 +58,7 @@ namespace pgm::sim {
   }
   std::vector<std::string> where;
   for (const auto& dir : directories) where.push_back(dir.string());
-  throw data_error("unknown task '" + std::string(name) +
-                   "' (known tasks: " + pgm::detail::list_for_message(list_tasks(directories), 40) + "; looked in " +
-                   pgm::detail::join(where) + ")");
+  throw unknown_name("task", std::string(name), list_tasks(directories), "looked in " + pgm::detail::join(where));
 }
 
 /// Loads task `name` from the first directory that has it.

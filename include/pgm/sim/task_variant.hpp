@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/sim/task.hpp"
 #include "pgm/sim/task_lookup.hpp"
 
@@ -20,7 +21,7 @@ namespace pgm::sim {
 [[nodiscard]] inline std::string task_variant_name(std::string_view task, std::string_view variant) {
   constexpr std::string_view suffix = "-reality";
   if (variant != "sim" && variant != "reality") {
-    throw error("unknown variant '" + std::string(variant) + "' (sim or reality)");
+    throw unknown_name("variant", std::string(variant), {"sim", "reality"});
   }
   const bool named_reality = task.size() > suffix.size() && task.ends_with(suffix);
   if (variant == "reality" && !named_reality) return std::string(task) + std::string(suffix);
@@ -30,15 +31,15 @@ namespace pgm::sim {
   return std::string(task);
 }
 
-/// Loads `task`'s `variant` from the first directory that has it. Throws data_error for an
-/// unknown task, or a task without a reality variant.
+/// Loads `task`'s `variant` from the first directory that has it. Throws unknown_name for an
+/// unknown task, data_error for a task without a reality variant.
 [[nodiscard]] inline task_definition load_task_variant(std::string_view task, std::string_view variant,
                                                        const std::vector<std::filesystem::path>& directories) {
   const auto name = task_variant_name(task, variant);
   if (variant == "reality") {
     try {
       static_cast<void>(find_task(name, directories));
-    } catch (const data_error&) {
+    } catch (const unknown_name&) {
       static_cast<void>(find_task(task, directories));  // an unknown base task is reported as such
       throw data_error("task '" + std::string(task) + "' has no reality variant ('" + name + "' is not defined)");
     }

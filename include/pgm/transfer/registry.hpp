@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/detail/named_registry.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/transfer/prior_transfer.hpp"
@@ -61,10 +62,10 @@ class transfer_registry {
     strategies_.add(std::move(name), std::move(strategy));
   }
 
-  /// The strategy of that name, or a model_error listing the known ones.
+  /// The strategy of that name; unknown_name otherwise.
   [[nodiscard]] any_prior_transfer at(std::string_view name) const {
     if (auto strategy = strategies_.find(name)) return *std::move(strategy);
-    throw model_error("unknown transfer strategy '" + std::string(name) + "'; known: " + detail::join(names()));
+    throw unknown_name("transfer strategy", std::string(name), names());
   }
 
   [[nodiscard]] std::vector<std::string> names() const { return strategies_.names(); }

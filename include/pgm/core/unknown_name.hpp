@@ -1,0 +1,51 @@
+#pragma once
+/// \file
+/// `unknown_name`: the one error for a name that is none of the known ones — a transfer
+/// strategy, an inference engine, an independence test, a score, a file format, a task, a
+/// scenario, a metric. Its message says what was looked for, the closest known name when one
+/// is near, and every known name, the same way everywhere:
+/// "unknown independence test 'chi'; did you mean 'chi2'? (known: chi2, g2)".
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pgm/core/error.hpp"
+#include "pgm/detail/text.hpp"
+
+namespace pgm {
+
+class unknown_name : public error {
+ public:
+  /// `kind` is what the name was to name ("independence test"); `known` the names it could be,
+  /// in the order to list them; `where`, if not empty, is added to the message in parentheses
+  /// after the list (e.g. the folders a task was looked for in).
+  unknown_name(std::string kind, std::string name, std::vector<std::string> known, const std::string& where = {})
+      : error(message(kind, name, known, where)),
+        kind_(std::move(kind)),
+        name_(std::move(name)),
+        known_(std::move(known)),
+        suggestion_(detail::closest_name(name_, known_)) {}
+
+  [[nodiscard]] const std::string& kind() const noexcept { return kind_; }
+  [[nodiscard]] const std::string& name() const noexcept { return name_; }
+  [[nodiscard]] const std::vector<std::string>& known() const noexcept { return known_; }
+  /// The known name `name()` was most likely meant to be, if one is close.
+  [[nodiscard]] const std::optional<std::string>& suggestion() const noexcept { return suggestion_; }
+
+ private:
+  static std::string message(const std::string& kind, const std::string& name, const std::vector<std::string>& known,
+                             const std::string& where) {
+    const auto near = detail::closest_name(name, known);
+    return "unknown " + kind + " '" + name + "'" + (near ? "; did you mean '" + *near + "'?" : "") +
+           " (known: " + detail::list_for_message(known, 40) + (where.empty() ? "" : "; " + where) + ")";
+  }
+
+  std::string kind_;
+  std::string name_;
+  std::vector<std::string> known_;
+  std::optional<std::string> suggestion_;
+};
+
+}  // namespace pgm
