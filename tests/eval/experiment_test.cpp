@@ -130,6 +130,23 @@ TEST(experiment_test, the_split_is_a_uniform_random_subset_fixed_by_the_seed) {
   EXPECT_EQ(split_rows(3, 3, 7).size(), 3U);
 }
 
+TEST(experiment_test, a_target_node_without_its_success_state_is_an_error_naming_it) {
+  const auto s = parse_scenario(pgm::test::tiny_scenario, "tiny.json");
+  auto source = deterministic_tasks();
+  const auto facts = source.facts;
+  for (const std::string state : {"", "2"}) {
+    source.facts = [&](const std::string& task, const std::string& node) {
+      auto f = facts(task, node);
+      f.success_state = state;
+      return f;
+    };
+    EXPECT_THAT(
+        [&] { static_cast<void>(run_experiment(s, source, {.threads = 1})); },
+        ThrowsMessage<data_error>(HasSubstr("task 'two': 'ok2' has no success state" +
+                                            (state.empty() ? "" : " '" + state + "'") + " (its states: 0, 1)")));
+  }
+}
+
 TEST(experiment_test, aggregation_gives_mean_and_sample_deviation) {
   std::vector<experiment_point> points;
   for (double v : {1.0, 2.0, 3.0}) points.push_back({"s", "t", "mle", "0", 0, 0, experiment_metric::max_difference, v});

@@ -8,6 +8,10 @@
 /// correspondence map). Each estimate is scored against θ* = MLE on D_GroundTruth by Max- and
 /// Mean-Difference and by failure prevention, beside the oracle that prevents with θ* itself.
 ///
+/// In stages: prepare_prior (once), prepare_target (once per target: its family, priors and
+/// lines), run_repetition (the split by split_rows, then every |D|, line and metric), and
+/// run_experiment, a map of run_repetition over the (target, repetition) jobs.
+///
 /// Counts are additive, so a repetition counts each row once: the parts of D by histogram, and
 /// D_GroundTruth as all rows minus D. Every repetition is seeded by its coordinates and
 /// writes its own slot of the results (pgm/detail/parallel_for.hpp spreads them over
@@ -25,7 +29,6 @@
 #include <map>
 #include <numeric>
 #include <optional>
-#include <random>
 #include <set>
 #include <span>
 #include <string>
