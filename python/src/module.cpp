@@ -337,11 +337,9 @@ py::dict prevent_plan(const network_handle& handle, const py::object& planned,
   const auto movable = controllable ? *controllable : default_controllable(network, event);
   if (!(epsilon >= 0.0 && epsilon <= 1.0))
     throw error("epsilon must lie in [0, 1], got " + detail::format_double(epsilon));
-  if (distance != "steps" && distance != "units")
-    throw error("distance must be steps or units, got '" + distance + "'");
   prevention_options options;
   options.epsilon = epsilon;
-  options.metric = distance == "units" ? prevention_options::distance::units : prevention_options::distance::steps;
+  options.metric = parse_distance(distance);
   const auto plan =
       plan_prevention(network, event, plan_values, movable, options, {.marginalize_missing = marginalize});
   const auto& why = plan.why;
@@ -573,9 +571,6 @@ py::tuple run_experiments(const experiment_arguments& args) {
   std::vector<std::string> notes;
   {
     const py::gil_scoped_release release;
-    if (args.distance != "steps" && args.distance != "units") {
-      throw error("distance must be steps or units, got '" + args.distance + "'");
-    }
     const auto folders = task_folders(args.tasks_dir);
     const auto scenarios = select_scenarios(args.scenario, find_scenario_folder(folders));
     experiment_options options;
@@ -583,8 +578,7 @@ py::tuple run_experiments(const experiment_arguments& args) {
     options.repetitions = args.repetitions;
     options.threads = args.threads;
     options.automatic_lines = args.automatic_lines;
-    options.prevention.metric =
-        args.distance == "units" ? prevention_options::distance::units : prevention_options::distance::steps;
+    options.prevention.metric = parse_distance(args.distance);
     std::mutex mutex;
     options.note = [&](const std::string& text) {
       const std::lock_guard lock(mutex);

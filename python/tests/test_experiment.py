@@ -38,5 +38,5 @@ def test_unknown_scenario_names_the_known_ones():
 
 
 def test_bad_distance():
-    with pytest.raises(pgm.Error, match="distance must be steps or units"):
+    with pytest.raises(pgm.Error, match=r"unknown distance 'miles' \(known: steps, units\)"):
         pgm.experiment("2-stack-sim", reps=1, distance="miles")

@@ -43,8 +43,7 @@ void run_experiment_command(const experiment_arguments& args) {
   options.experiment.threads = args.threads;
   options.experiment.automatic_lines = !args.no_automatic;
   options.experiment.across_processes = true;  // under mpirun, the jobs are split over the processes
-  options.experiment.prevention.metric =
-      args.distance == "units" ? prevention_options::distance::units : prevention_options::distance::steps;
+  options.experiment.prevention.metric = parse_distance(args.distance);
   // One bar per scenario, ended when its last repetition is done so that the next notes start a line.
   std::optional<progress_bar> bar;
   options.progress = [&bar](const scenario& s, std::size_t done, std::size_t total) {
@@ -87,7 +86,7 @@ void add_experiment_command(CLI::App& app) {
       ->check(whole_number(0, 1024))
       ->capture_default_str();
   cmd->add_option("--distance", args->distance, "Failure prevention's distance: steps (bins) or units")
-      ->check(CLI::IsMember({"steps", "units"}))
+      ->check(CLI::IsMember(known_distances()))
       ->capture_default_str();
   cmd->add_flag("--no-auto", args->no_automatic, "Leave out the lines of w = auto and of the proposed map");
   cmd->add_option("--tasks-dir", args->tasks_dir,

@@ -37,7 +37,7 @@ void run_prevent(const prevent_arguments& args) {
   }
   prevention_options options;
   options.epsilon = args.epsilon;
-  options.metric = args.distance == "units" ? prevention_options::distance::units : prevention_options::distance::steps;
+  options.metric = parse_distance(args.distance);
   const auto plan = plan_prevention(network, model.success, planned, controllable, options,
                                     {.marginalize_missing = args.decision.marginalize});
   const auto& why = plan.why;
@@ -103,7 +103,7 @@ void add_prevent_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--distance", args->distance,
                   "Nearness: steps (bins moved) or units (Euclidean distance between interval midpoints)")
-      ->check(CLI::IsMember({"steps", "units"}))
+      ->check(CLI::IsMember(known_distances()))
       ->capture_default_str();
   cmd->callback([args] { run_prevent(*args); });
 }

@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "pgm/decide/prevent.hpp"
 #include "pgm/eval/metrics.hpp"
 #include "pgm/inference/posterior_table.hpp"
 #include "pgm/io/network_file.hpp"
@@ -53,6 +54,9 @@ TEST(unknown_name_test, every_parser_of_a_choice_throws_it) {
               ThrowsMessage<unknown_name>(HasSubstr("did you mean 'xmlbif'?")));
   EXPECT_THAT([] { static_cast<void>(parse_experiment_metric("max_diff")); },
               ThrowsMessage<unknown_name>(HasSubstr("unknown metric 'max_diff' (known:")));
+  EXPECT_THAT([] { static_cast<void>(parse_distance("unit")); },
+              ThrowsMessage<unknown_name>(HasSubstr("unknown distance 'unit'; did you mean 'units'?")));
+  EXPECT_EQ(parse_distance(to_string(prevention_options::distance::units)), prevention_options::distance::units);
   EXPECT_THAT([] { static_cast<void>(transfer_registry::instance().at("minimall")); },
               ThrowsMessage<unknown_name>(HasSubstr("did you mean 'minimal'?")));
 }

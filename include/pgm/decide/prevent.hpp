@@ -21,10 +21,12 @@
 #include <limits>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 
 namespace pgm {
 
@@ -36,6 +38,25 @@ struct prevention_options {
     units   ///< Euclidean distance between interval midpoints, in the variables' units
   } metric = distance::steps;
 };
+
+/// "steps" or "units", as the command line and Python spell a distance.
+[[nodiscard]] constexpr std::string_view to_string(prevention_options::distance distance) noexcept {
+  return distance == prevention_options::distance::units ? "units" : "steps";
+}
+
+/// The distances' names, for parsing, messages and the command line's allowed values.
+[[nodiscard]] inline std::vector<std::string> known_distances() {
+  return {std::string(to_string(prevention_options::distance::steps)),
+          std::string(to_string(prevention_options::distance::units))};
+}
+
+/// Parses "steps" or "units"; throws unknown_name otherwise.
+[[nodiscard]] inline prevention_options::distance parse_distance(std::string_view text) {
+  for (auto distance : {prevention_options::distance::steps, prevention_options::distance::units}) {
+    if (text == to_string(distance)) return distance;
+  }
+  throw unknown_name("distance", std::string(text), known_distances());
+}
 
 namespace detail {
 
