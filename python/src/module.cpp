@@ -204,10 +204,7 @@ network_handle fit_frame(const py::list& columns, const std::vector<std::string>
   request.latent = args.latent;
   request.keep_statistics = args.keep_counts;
   request.options.prior = prior_of(args.estimator);
-  if (args.empty != "uniform" && args.empty != "fail") {
-    throw error("empty must be uniform or fail, got '" + args.empty + "'");
-  }
-  request.options.estimation.empty = args.empty == "fail" ? empty_configuration::fail : empty_configuration::uniform;
+  request.options.estimation.empty = parse_empty_configuration(args.empty);
   request.options.counting.threads = args.threads;
   // A missing value (NaN, None) leaves out only the families it is in.
   request.missing.policy = missing_policy::available;
@@ -491,11 +488,7 @@ py::tuple discretize_frame(const py::list& columns, const std::vector<std::strin
     column_binning request;
     request.columns = wanted;
     request.bins = bins;
-    if (method == "quantile" || method == "width") {
-      request.method = method == "quantile" ? binning::quantile : binning::equal_width;
-    } else {
-      throw error("method must be quantile or width, got '" + method + "'");
-    }
+    request.method = parse_binning(method);
     if (bins == 0) throw error("bins must be positive");
     if (saved || saved_file) {
       request.saved = intervals_of(saved, saved_file);
@@ -690,9 +683,7 @@ PYBIND11_MODULE(_core, m) {
         args.transfer.map = map;
         args.transfer.weight = w_prior;
         args.transfer.success = success;
-        if (match != "midpoint" && match != "overlap")
-          throw pgm::error("match must be midpoint or overlap, got '" + match + "'");
-        args.transfer.matching = match == "overlap" ? pgm::state_matching::overlap : pgm::state_matching::midpoint;
+        args.transfer.matching = pgm::parse_state_matching(match);
         if (em) args.em = em_options_of(*em, threads);
         for (const auto& [name, states] : latent) args.latent.push_back({name, states});
         return fit_frame(columns, available, edges, args);

@@ -86,7 +86,7 @@ def test_discretize_errors(raw):
         pgm.discretize(raw, columns=["colour"])
     with pytest.raises(pgm.Error, match="'edges' has no edges for 'n'"):
         pgm.discretize(raw, columns=["n"], edges={"x": [0.0, 1.0]})
-    with pytest.raises(pgm.Error, match="method must be quantile or width"):
+    with pytest.raises(pgm.Error, match="unknown binning method"):
         pgm.discretize(raw, method="kmeans")
     with pytest.raises(pgm.Error, match=r"DataFrame: there is no column 'y' \(columns: x, n, ok, colour\)"):
         pgm.discretize(raw, columns=["y"])

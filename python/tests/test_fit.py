@@ -131,7 +131,7 @@ def test_intervals_from_an_edges_file_as_the_program_takes_them(program, tasks):
         ({"estimator": "bayes", "prior": "k2", "ess": 2}, "ess applies to the bdeu prior"),
         ({"estimator": "bayes", "prior": "dirichlet", "alpha": -1}, "alpha must be a finite number ≥ 0, got -1"),
         ({"map": MAP}, "strategy, map, w_prior, success and match apply with prior_model"),
-        ({"empty": "sometimes"}, "empty must be uniform or fail"),
+        ({"empty": "sometimes"}, "unknown empty-configuration rule 'sometimes' (known: uniform, fail)"),
     ],
 )
 def test_bad_arguments_raise_pgm_error(tasks, kwargs, message):

@@ -26,7 +26,7 @@ void add_transfer_options(CLI::App& command, transfer_arguments& args, bool with
   command.add_option("--success", args.success, "The success state of the transferred node (Minimal-Replacement)")
       ->capture_default_str();
   command.add_option("--match", args.matching, "Differently discretized states: midpoint or overlap")
-      ->check(CLI::IsMember({"midpoint", "overlap"}))
+      ->check(CLI::IsMember(known_state_matchings()))
       ->capture_default_str();
 }
 
@@ -35,7 +35,7 @@ transfer_settings settings_of(const transfer_arguments& args) {
   settings.strategy = args.strategy;
   settings.map = args.map;
   settings.success = args.success;
-  settings.matching = args.matching == "overlap" ? state_matching::overlap : state_matching::midpoint;
+  settings.matching = parse_state_matching(args.matching);
   if (args.w_prior == "auto") {
     settings.weight.reset();
   } else {

@@ -62,7 +62,7 @@ void run_discretize(const discretize_arguments& args) {
   note_dropped(dropped, data.rows());
   column_binning request;
   request.columns = wanted;
-  request.method = args.method == "quantile" ? binning::quantile : binning::equal_width;
+  if (args.method != "edges") request.method = parse_binning(args.method);
   request.bins = args.bins;
   if (args.method == "edges") {
     request.saved = read_discretization_json(args.edges_in);
@@ -101,7 +101,11 @@ void add_discretize_command(CLI::App& app) {
   cmd->add_option("--in", args->in, std::string("CSV file with raw (continuous) columns") + data_file_help)->required();
   cmd->add_option("--method", args->method,
                   "quantile (equal frequency, as in the paper), width (equal width) or edges (saved edges)")
-      ->check(CLI::IsMember({"quantile", "width", "edges"}))
+      ->check(CLI::IsMember([] {
+        auto methods = known_binnings();
+        methods.emplace_back("edges");  // saved edges, the program's own choice
+        return methods;
+      }()))
       ->capture_default_str();
   cmd->add_option("--bins", args->bins, "Number of bins")->check(whole_number(1, 10000))->capture_default_str();
   cmd->add_option("--columns", args->columns,

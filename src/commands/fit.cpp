@@ -109,7 +109,7 @@ void run_fit(const fit_arguments& args) {
   }
   fit_request request;
   request.options.prior = prior_of({args.estimator, args.prior, args.alpha, args.ess});
-  request.options.estimation.empty = args.empty == "fail" ? empty_configuration::fail : empty_configuration::uniform;
+  request.options.estimation.empty = parse_empty_configuration(args.empty);
   request.options.counting.threads = args.threads;
   request.missing = missing_of(args.missing);
   const bool em = args.missing.policy == "em";
@@ -206,7 +206,7 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--ess", args->ess, "Equivalent sample size of the bdeu prior (default 1)")
       ->check(non_negative_number());
   cmd->add_option("--empty", args->empty, "A parent configuration with no data: uniform (1/J) or fail")
-      ->check(CLI::IsMember({"uniform", "fail"}))
+      ->check(CLI::IsMember(known_empty_configurations()))
       ->capture_default_str();
   auto* raw = cmd->add_option("--discretization", args->discretization_file,
                               "Edges file (from pgm discretize): bin these raw numeric columns with it");

@@ -6,14 +6,17 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "pgm/data/discretizer.hpp"
 #include "pgm/decide/prevent.hpp"
 #include "pgm/eval/metrics.hpp"
 #include "pgm/inference/posterior_table.hpp"
 #include "pgm/io/network_file.hpp"
+#include "pgm/learn/estimate.hpp"
 #include "pgm/learn/independence_test.hpp"
 #include "pgm/learn/learn_structure.hpp"
 #include "pgm/learn/score.hpp"
 #include "pgm/transfer/registry.hpp"
+#include "pgm/transfer/state_map.hpp"
 
 namespace pgm {
 namespace {
@@ -57,6 +60,13 @@ TEST(unknown_name_test, every_parser_of_a_choice_throws_it) {
   EXPECT_THAT([] { static_cast<void>(parse_distance("unit")); },
               ThrowsMessage<unknown_name>(HasSubstr("unknown distance 'unit'; did you mean 'units'?")));
   EXPECT_EQ(parse_distance(to_string(prevention_options::distance::units)), prevention_options::distance::units);
+  EXPECT_THAT([] { static_cast<void>(parse_empty_configuration("fails")); },
+              ThrowsMessage<unknown_name>(HasSubstr("did you mean 'fail'?")));
+  EXPECT_THAT([] { static_cast<void>(parse_state_matching("overlaps")); },
+              ThrowsMessage<unknown_name>(HasSubstr("did you mean 'overlap'?")));
+  EXPECT_THAT([] { static_cast<void>(parse_binning("widht")); },
+              ThrowsMessage<unknown_name>(HasSubstr("did you mean 'width'?")));
+  for (auto method : {binning::quantile, binning::equal_width}) EXPECT_EQ(parse_binning(to_string(method)), method);
   EXPECT_THAT([] { static_cast<void>(transfer_registry::instance().at("minimall")); },
               ThrowsMessage<unknown_name>(HasSubstr("did you mean 'minimal'?")));
 }

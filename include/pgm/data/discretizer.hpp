@@ -12,10 +12,12 @@
 #include <map>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/data/dataset.hpp"
 
@@ -98,6 +100,24 @@ inline std::vector<double> distinct_edges(std::vector<double> edges, const std::
 using discretization = std::map<std::string, variable, std::less<>>;
 
 enum class binning { quantile, equal_width };
+
+/// "quantile" or "width", as the command line and Python spell a binning method.
+[[nodiscard]] constexpr std::string_view to_string(binning method) noexcept {
+  return method == binning::equal_width ? "width" : "quantile";
+}
+
+/// The methods' names, for parsing, messages and the command line's allowed values.
+[[nodiscard]] inline std::vector<std::string> known_binnings() {
+  return {std::string(to_string(binning::quantile)), std::string(to_string(binning::equal_width))};
+}
+
+/// Parses "quantile" or "width"; throws unknown_name otherwise.
+[[nodiscard]] inline binning parse_binning(std::string_view text) {
+  for (auto method : {binning::quantile, binning::equal_width}) {
+    if (text == to_string(method)) return method;
+  }
+  throw unknown_name("binning method", std::string(text), known_binnings());
+}
 
 /// Fits interval variables for the named continuous columns of `data`.
 [[nodiscard]] inline discretization fit_discretization(const dataset& data, std::span<const std::string> columns,

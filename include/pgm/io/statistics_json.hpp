@@ -137,7 +137,7 @@ namespace detail {
                         {"prior", detail::prior_to_json(statistics.priors[i], width)}});
   }
   return {{"rows", statistics.rows},
-          {"empty", statistics.estimation.empty == empty_configuration::fail ? "fail" : "uniform"},
+          {"empty", std::string(to_string(statistics.estimation.empty))},
           {"families", families}};
 }
 
@@ -151,8 +151,11 @@ namespace detail {
   result.rows = reader.number(reader.member(value, path, "rows"), path + "/rows");
   if (!std::isfinite(result.rows) || result.rows < 0.0) reader.fail(path + "/rows", "expected a finite number >= 0");
   const auto empty = reader.string(reader.member(value, path, "empty"), path + "/empty");
-  if (empty != "uniform" && empty != "fail") reader.fail(path + "/empty", "expected uniform or fail");
-  result.estimation.empty = empty == "fail" ? empty_configuration::fail : empty_configuration::uniform;
+  try {
+    result.estimation.empty = parse_empty_configuration(empty);
+  } catch (const unknown_name& e) {
+    reader.fail(path + "/empty", e.what());
+  }
   const auto& families = reader.array(reader.member(value, path, "families"), path + "/families");
   if (families.size() != structure.size()) {
     reader.fail(path + "/families", "expected " + std::to_string(structure.size()) + " families, one per variable");

@@ -7,12 +7,14 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <string_view>
 #include <type_traits>
 #include <variant>
 #include <vector>
 
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/learn/parameter_prior.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
@@ -23,6 +25,24 @@ enum class empty_configuration {
   uniform,  ///< 1/J for each state (the paper's 0.5 for a binary child)
   fail,     ///< throw data_error naming the configuration
 };
+
+/// "uniform" or "fail", as the command line, Python and a model's statistics spell the rule.
+[[nodiscard]] constexpr std::string_view to_string(empty_configuration rule) noexcept {
+  return rule == empty_configuration::fail ? "fail" : "uniform";
+}
+
+/// The rules' names, for parsing, messages and the command line's allowed values.
+[[nodiscard]] inline std::vector<std::string> known_empty_configurations() {
+  return {std::string(to_string(empty_configuration::uniform)), std::string(to_string(empty_configuration::fail))};
+}
+
+/// Parses "uniform" or "fail"; throws unknown_name otherwise.
+[[nodiscard]] inline empty_configuration parse_empty_configuration(std::string_view text) {
+  for (auto rule : {empty_configuration::uniform, empty_configuration::fail}) {
+    if (text == to_string(rule)) return rule;
+  }
+  throw unknown_name("empty-configuration rule", std::string(text), known_empty_configurations());
+}
 
 struct estimate_options {
   empty_configuration empty = empty_configuration::uniform;

@@ -10,9 +10,11 @@
 #include <cmath>
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/detail/text.hpp"
 
@@ -22,6 +24,24 @@ enum class state_matching {
   midpoint,  ///< the prior interval holding the target state's midpoint (or numeric label)
   overlap,   ///< every prior interval the target interval overlaps, weighted by overlap length
 };
+
+/// "midpoint" or "overlap", as the command line and Python spell a matching.
+[[nodiscard]] constexpr std::string_view to_string(state_matching matching) noexcept {
+  return matching == state_matching::overlap ? "overlap" : "midpoint";
+}
+
+/// The matchings' names, for parsing, messages and the command line's allowed values.
+[[nodiscard]] inline std::vector<std::string> known_state_matchings() {
+  return {std::string(to_string(state_matching::midpoint)), std::string(to_string(state_matching::overlap))};
+}
+
+/// Parses "midpoint" or "overlap"; throws unknown_name otherwise.
+[[nodiscard]] inline state_matching parse_state_matching(std::string_view text) {
+  for (auto matching : {state_matching::midpoint, state_matching::overlap}) {
+    if (text == to_string(matching)) return matching;
+  }
+  throw unknown_name("state matching", std::string(text), known_state_matchings());
+}
 
 /// One prior state with its share of a target state.
 struct weighted_state {
