@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "pgm/data/csv.hpp"
-#include "pgm/data/csv_counts.hpp"
+#include "pgm/io/csv.hpp"
+#include "pgm/io/csv_counts.hpp"
 
 namespace {
 

@@ -1,9 +1,9 @@
-// The in-memory CSV reader (pgm/data/csv.hpp). The first byte picks the delimiter, the column
+// The in-memory CSV reader (pgm/io/csv.hpp). The first byte picks the delimiter, the column
 // kind and a chunk size; the rest is the file. The reader promises the same result for any
 // number of threads and any chunk size, errors included, so the input is read twice: whole on
 // one thread, and in small chunks on two.
 
-#include "pgm/data/csv.hpp"
+#include "pgm/io/csv.hpp"
 
 #include "harness.hpp"
 

@@ -1,9 +1,9 @@
-// The streaming CSV counter (pgm/data/csv_counts.hpp): the header is read, the first column
+// The streaming CSV counter (pgm/io/csv_counts.hpp): the header is read, the first column
 // counted as a child of the next two (when present), in one window on one thread, again in
 // tiny windows (one thread: a window that spawned threads would make this harness slow), and
 // in tiny chunks on two threads; the counts (or the error) must be the same every time.
 
-#include "pgm/data/csv_counts.hpp"
+#include "pgm/io/csv_counts.hpp"
 
 #include <vector>
 

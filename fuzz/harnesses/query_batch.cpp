@@ -1,8 +1,8 @@
-// Query files (`pgm query --queries`; pgm/inference/query_batch.hpp) answered on a small network
+// Query files (`pgm query --queries`; pgm/io/query_batch.hpp) answered on a small network
 // by the junction tree, as the program answers them; the same bytes are also read as --soft
 // (pgm/inference/posterior_table.hpp) and resolved against the network.
 
-#include "pgm/inference/query_batch.hpp"
+#include "pgm/io/query_batch.hpp"
 
 #include <sstream>
 

@@ -10,8 +10,8 @@
 #include <limits>
 
 #include "pgm/core/error.hpp"
-#include "pgm/data/csv.hpp"
 #include "pgm/detail/text.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/io/network_file.hpp"
 
 namespace pgm::cli {

@@ -11,10 +11,10 @@
 #include <vector>
 
 #include "pgm/core/network_structure.hpp"
-#include "pgm/data/csv_counts.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/discretizer.hpp"
 #include "pgm/data/missing.hpp"
+#include "pgm/io/csv_counts.hpp"
 #include "pgm/io/json_model.hpp"
 
 namespace pgm::cli {

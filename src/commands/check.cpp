@@ -9,9 +9,9 @@
 
 #include "cli/common.hpp"
 #include "pgm/causal/dag_check.hpp"
-#include "pgm/data/csv.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/detail/text.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/io/network_file.hpp"
 
 namespace pgm::cli {

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "cli/common.hpp"
-#include "pgm/decide/decision_model.hpp"
+#include "pgm/io/decision_model.hpp"
 #include "pgm/io/network_file.hpp"
 
 namespace pgm::cli {

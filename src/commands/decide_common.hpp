@@ -7,8 +7,8 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/decide/assignment.hpp"
-#include "pgm/decide/decision_model.hpp"
 #include "pgm/decide/predict.hpp"
+#include "pgm/io/decision_model.hpp"
 
 namespace pgm::cli {
 

@@ -8,8 +8,8 @@
 #include "cli/common.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/data/bin_columns.hpp"
-#include "pgm/data/csv.hpp"
 #include "pgm/detail/file.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/io/json_model.hpp"
 
 namespace pgm::cli {

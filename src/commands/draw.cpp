@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "cli/common.hpp"
-#include "pgm/decide/decision_model.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/eval/plot.hpp"
+#include "pgm/io/decision_model.hpp"
 #include "pgm/io/dot.hpp"
 #include "pgm/io/network_file.hpp"
 

@@ -14,8 +14,8 @@
 #include "pgm/detail/file.hpp"
 #include "pgm/inference/engine_registry.hpp"
 #include "pgm/inference/posterior_table.hpp"
-#include "pgm/inference/query_batch.hpp"
 #include "pgm/io/network_file.hpp"
+#include "pgm/io/query_batch.hpp"
 
 namespace pgm::cli {
 namespace {

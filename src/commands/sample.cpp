@@ -6,9 +6,9 @@
 #include <string>
 
 #include "cli/common.hpp"
-#include "pgm/data/csv.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/inference/sampling.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/io/network_file.hpp"
 
 namespace pgm::cli {

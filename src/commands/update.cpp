@@ -5,8 +5,8 @@
 #include <string>
 
 #include "cli/common.hpp"
-#include "pgm/data/csv_source.hpp"
 #include "pgm/detail/process_group.hpp"
+#include "pgm/io/csv_source.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/fit_pipeline.hpp"
 

@@ -1,7 +1,7 @@
 // CSV into a data set in memory (read_csv, parse_csv), the record-at-a-time scanner, the
 // reader that opens an input and reads its header, and writing CSV.
 
-#include "pgm/data/csv.hpp"
+#include "pgm/io/csv.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Counting families straight from CSV (count_csv): windows of the input, chunks of a window on
 // several threads, provisional per-column ids, tables summed and mapped to the final states.
 
-#include "pgm/data/csv_counts.hpp"
+#include "pgm/io/csv_counts.hpp"
 
 #include <algorithm>
 #include <cstring>

@@ -21,10 +21,10 @@
 
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
-#include "pgm/data/csv.hpp"
 #include "pgm/data/missing.hpp"
 #include "pgm/data/state_order.hpp"
 #include "pgm/detail/text.hpp"
+#include "pgm/io/csv.hpp"
 
 namespace pgm::detail {
 

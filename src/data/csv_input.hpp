@@ -10,7 +10,7 @@
 #include "data/byte_source.hpp"
 #include "data/csv_engine.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/data/csv_counts.hpp"
+#include "pgm/io/csv_counts.hpp"
 
 namespace pgm {
 

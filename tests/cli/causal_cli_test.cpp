@@ -11,9 +11,9 @@
 #include <string>
 
 #include "pgm/causal/dag_check.hpp"
-#include "pgm/data/csv.hpp"
 #include "pgm/inference/sampling.hpp"
 #include "pgm/io/bif.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/io/json_model.hpp"
 #include "support/program_test.hpp"
 

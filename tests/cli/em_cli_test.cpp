@@ -9,8 +9,8 @@
 #include <random>
 #include <string>
 
-#include "pgm/data/csv.hpp"
 #include "pgm/inference/sampling.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/expectation_maximization.hpp"
 #include "support/program_test.hpp"

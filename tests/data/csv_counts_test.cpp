@@ -1,4 +1,4 @@
-#include "pgm/data/csv_counts.hpp"
+#include "pgm/io/csv_counts.hpp"
 
 #include <fcntl.h>
 #include <gmock/gmock.h>
@@ -13,8 +13,8 @@
 #include <thread>
 #include <vector>
 
-#include "pgm/data/csv.hpp"
 #include "pgm/data/discretizer.hpp"
+#include "pgm/io/csv.hpp"
 #include "support/folder_test.hpp"
 #include "support/random_csv.hpp"
 #include "support/thread_processes.hpp"

@@ -14,8 +14,8 @@
 #include <thread>
 
 #include "pgm/core/limits.hpp"
-#include "pgm/data/csv.hpp"
-#include "pgm/data/csv_counts.hpp"
+#include "pgm/io/csv.hpp"
+#include "pgm/io/csv_counts.hpp"
 #include "support/folder_test.hpp"
 
 namespace pgm {

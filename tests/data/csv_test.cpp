@@ -1,4 +1,4 @@
-#include "pgm/data/csv.hpp"
+#include "pgm/io/csv.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <random>
 #include <sstream>
 
-#include "pgm/data/csv_counts.hpp"
+#include "pgm/io/csv_counts.hpp"
 #include "support/random_csv.hpp"
 
 namespace pgm {

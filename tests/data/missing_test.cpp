@@ -14,9 +14,9 @@
 
 #include "data/csv_engine.hpp"
 #include "pgm/data/bin_columns.hpp"
-#include "pgm/data/csv.hpp"
-#include "pgm/data/csv_counts.hpp"
 #include "pgm/data/discretizer.hpp"
+#include "pgm/io/csv.hpp"
+#include "pgm/io/csv_counts.hpp"
 #include "pgm/learn/independence_test.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 

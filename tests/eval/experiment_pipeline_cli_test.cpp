@@ -11,10 +11,10 @@
 #include <numeric>
 #include <string>
 
-#include "pgm/data/csv.hpp"
 #include "pgm/eval/experiment.hpp"
 #include "pgm/eval/simulated_source.hpp"
 #include "pgm/io/cpt_csv.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/sim/task_lookup.hpp"
 #include "support/program_test.hpp"

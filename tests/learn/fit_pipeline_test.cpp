@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "pgm/data/csv.hpp"
-#include "pgm/data/csv_source.hpp"
 #include "pgm/inference/sampling.hpp"
+#include "pgm/io/csv.hpp"
+#include "pgm/io/csv_source.hpp"
 #include "support/random_network.hpp"
 
 namespace pgm {

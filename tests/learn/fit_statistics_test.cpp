@@ -13,9 +13,9 @@
 #include <string>
 #include <vector>
 
-#include "pgm/data/csv.hpp"
-#include "pgm/data/csv_source.hpp"
 #include "pgm/inference/sampling.hpp"
+#include "pgm/io/csv.hpp"
+#include "pgm/io/csv_source.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/fit_pipeline.hpp"

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
-#include "pgm/data/csv.hpp"
 #include "pgm/inference/sampling.hpp"
 #include "pgm/io/bif.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/learn/hill_climbing.hpp"
 #include "pgm/learn/network_score.hpp"
 #include "pgm/learn/orientation.hpp"

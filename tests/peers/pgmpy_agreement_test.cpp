@@ -21,11 +21,11 @@
 #include <vector>
 
 #include "pgm/causal/adjustment.hpp"
-#include "pgm/data/csv.hpp"
 #include "pgm/inference/engine_registry.hpp"
 #include "pgm/inference/sampling.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 #include "pgm/io/bif.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/io/xmlbif.hpp"
 #include "pgm/learn/independence_test.hpp"

@@ -8,8 +8,8 @@
 #include <cmath>
 #include <sstream>
 
-#include "pgm/data/csv.hpp"
 #include "pgm/data/discretizer.hpp"
+#include "pgm/io/csv.hpp"
 #include "sim/sim_support.hpp"
 
 namespace pgm::sim {

@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-#include "pgm/data/csv.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task_file.hpp"
 #include "support/program_test.hpp"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "pgm/data/csv.hpp"
+#include "pgm/io/csv.hpp"
 
 namespace pgm::testing {
 

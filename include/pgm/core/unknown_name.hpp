@@ -6,8 +6,11 @@
 /// is near, and every known name, the same way everywhere:
 /// "unknown independence test 'chi'; did you mean 'chi2'? (known: chi2, g2)".
 
+#include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -47,5 +50,25 @@ class unknown_name : public error {
   std::vector<std::string> known_;
   std::optional<std::string> suggestion_;
 };
+
+/// A user-facing choice (an enum) and the list of its values, each spelled by its `to_string`,
+/// found by argument-dependent lookup beside the enum: what the parse_… and known_… functions
+/// of every choice are made of.
+template <class Choice, std::size_t N>
+[[nodiscard]] std::vector<std::string> names_of(const std::array<Choice, N>& values) {
+  std::vector<std::string> names;
+  names.reserve(N);
+  for (const auto value : values) names.emplace_back(to_string(value));
+  return names;
+}
+
+/// The value of `values` spelled `text`; throws unknown_name for `kind` listing them otherwise.
+template <class Choice, std::size_t N>
+[[nodiscard]] Choice parse_choice(const std::string& kind, std::string_view text, const std::array<Choice, N>& values) {
+  for (const auto value : values) {
+    if (text == to_string(value)) return value;
+  }
+  throw unknown_name(kind, std::string(text), names_of(values));
+}
 
 }  // namespace pgm

@@ -7,6 +7,7 @@
 /// fall into the outer bins.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <map>
@@ -106,17 +107,14 @@ enum class binning { quantile, equal_width };
   return method == binning::equal_width ? "width" : "quantile";
 }
 
+inline constexpr std::array binnings{binning::quantile, binning::equal_width};
+
 /// The methods' names, for parsing, messages and the command line's allowed values.
-[[nodiscard]] inline std::vector<std::string> known_binnings() {
-  return {std::string(to_string(binning::quantile)), std::string(to_string(binning::equal_width))};
-}
+[[nodiscard]] inline std::vector<std::string> known_binnings() { return names_of(binnings); }
 
 /// Parses "quantile" or "width"; throws unknown_name otherwise.
 [[nodiscard]] inline binning parse_binning(std::string_view text) {
-  for (auto method : {binning::quantile, binning::equal_width}) {
-    if (text == to_string(method)) return method;
-  }
-  throw unknown_name("binning method", std::string(text), known_binnings());
+  return parse_choice("binning method", text, binnings);
 }
 
 /// Fits interval variables for the named continuous columns of `data`.

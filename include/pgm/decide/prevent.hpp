@@ -15,6 +15,7 @@
 /// is linear in the slice. With units, each cell below ε scans the targets of its slice.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
@@ -44,18 +45,14 @@ struct prevention_options {
   return distance == prevention_options::distance::units ? "units" : "steps";
 }
 
+inline constexpr std::array distances{prevention_options::distance::steps, prevention_options::distance::units};
+
 /// The distances' names, for parsing, messages and the command line's allowed values.
-[[nodiscard]] inline std::vector<std::string> known_distances() {
-  return {std::string(to_string(prevention_options::distance::steps)),
-          std::string(to_string(prevention_options::distance::units))};
-}
+[[nodiscard]] inline std::vector<std::string> known_distances() { return names_of(distances); }
 
 /// Parses "steps" or "units"; throws unknown_name otherwise.
 [[nodiscard]] inline prevention_options::distance parse_distance(std::string_view text) {
-  for (auto distance : {prevention_options::distance::steps, prevention_options::distance::units}) {
-    if (text == to_string(distance)) return distance;
-  }
-  throw unknown_name("distance", std::string(text), known_distances());
+  return parse_choice("distance", text, distances);
 }
 
 namespace detail {

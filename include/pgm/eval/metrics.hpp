@@ -46,12 +46,7 @@ inline constexpr std::array experiment_metrics{experiment_metric::max_difference
 
 /// The metric named `text`; throws unknown_name otherwise.
 [[nodiscard]] inline experiment_metric parse_experiment_metric(std::string_view text) {
-  std::vector<std::string> names;
-  for (auto metric : experiment_metrics) {
-    if (to_string(metric) == text) return metric;
-    names.emplace_back(to_string(metric));
-  }
-  throw unknown_name("metric", std::string(text), std::move(names));
+  return parse_choice("metric", text, experiment_metrics);
 }
 
 struct parameter_difference {

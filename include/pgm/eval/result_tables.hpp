@@ -18,10 +18,10 @@
 
 #include "pgm/core/error.hpp"
 #include "pgm/core/unknown_name.hpp"
-#include "pgm/data/csv.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/eval/experiment.hpp"
+#include "pgm/io/csv.hpp"
 
 namespace pgm {
 

@@ -7,6 +7,7 @@
 /// command line's `--query X,Y`, `--evidence a=s,b=t` and `--soft X=0.2:0.8`, so that
 /// `pgm query` is argument parsing plus one call.
 
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <functional>
@@ -21,7 +22,7 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/unknown_name.hpp"
-#include "pgm/data/csv.hpp"
+#include "pgm/detail/csv_escape.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/inference/query.hpp"
 
@@ -29,14 +30,18 @@ namespace pgm {
 
 enum class posterior_format { csv, json };
 
+[[nodiscard]] constexpr std::string_view to_string(posterior_format format) noexcept {
+  return format == posterior_format::json ? "json" : "csv";
+}
+
+inline constexpr std::array posterior_formats{posterior_format::csv, posterior_format::json};
+
 /// The output formats' names, for messages and the command line's allowed values.
-[[nodiscard]] inline std::vector<std::string> known_posterior_formats() { return {"csv", "json"}; }
+[[nodiscard]] inline std::vector<std::string> known_posterior_formats() { return names_of(posterior_formats); }
 
 /// Parses "csv" or "json"; throws unknown_name otherwise.
 [[nodiscard]] inline posterior_format parse_posterior_format(std::string_view text) {
-  if (text == "csv") return posterior_format::csv;
-  if (text == "json") return posterior_format::json;
-  throw unknown_name("output format", std::string(text), known_posterior_formats());
+  return parse_choice("output format", text, posterior_formats);
 }
 
 /// How a posterior is written.

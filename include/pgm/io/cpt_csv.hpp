@@ -11,8 +11,8 @@
 #include <vector>
 
 #include "pgm/core/cpt.hpp"
-#include "pgm/data/csv.hpp"
 #include "pgm/detail/file.hpp"
+#include "pgm/io/csv.hpp"
 
 namespace pgm {
 

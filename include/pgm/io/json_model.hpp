@@ -106,7 +106,7 @@ inline nlohmann::json variable_to_json(const variable& v) {
   const detail::json_reader reader(source);
   const auto document = reader.parse(text);
   reader.check_format(document, "pgm-model");
-  // Free for people and tools: "metadata" (decide/decision_model.hpp reads its "success") and
+  // Free for people and tools: "metadata" (io/decision_model.hpp reads its "success") and
   // "learned" (how pgm learn-structure found the structure).
   reader.only_keys(document, "",
                    {"format", "version", "variables", "edges", "tables", "statistics", "metadata", "learned"});

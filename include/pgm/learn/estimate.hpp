@@ -4,6 +4,7 @@
 /// estimation with a Dirichlet prior (eq. 6), including the paper's weighted prior (eq. 7/8).
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -31,17 +32,14 @@ enum class empty_configuration {
   return rule == empty_configuration::fail ? "fail" : "uniform";
 }
 
+inline constexpr std::array empty_configurations{empty_configuration::uniform, empty_configuration::fail};
+
 /// The rules' names, for parsing, messages and the command line's allowed values.
-[[nodiscard]] inline std::vector<std::string> known_empty_configurations() {
-  return {std::string(to_string(empty_configuration::uniform)), std::string(to_string(empty_configuration::fail))};
-}
+[[nodiscard]] inline std::vector<std::string> known_empty_configurations() { return names_of(empty_configurations); }
 
 /// Parses "uniform" or "fail"; throws unknown_name otherwise.
 [[nodiscard]] inline empty_configuration parse_empty_configuration(std::string_view text) {
-  for (auto rule : {empty_configuration::uniform, empty_configuration::fail}) {
-    if (text == to_string(rule)) return rule;
-  }
-  throw unknown_name("empty-configuration rule", std::string(text), known_empty_configurations());
+  return parse_choice("empty-configuration rule", text, empty_configurations);
 }
 
 struct estimate_options {

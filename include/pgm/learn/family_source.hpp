@@ -5,7 +5,7 @@
 /// binned into intervals, a missing value follows the policy), and counts the requested
 /// families; the fit pipeline (pgm/learn/fit_pipeline.hpp) asks every source the same way.
 /// Three ship: a data set in memory (`dataset_source`, here), a CSV file streamed without being
-/// held (`csv_source`, pgm/data/csv_source.hpp) and NumPy columns (the Python module).
+/// held (`csv_source`, pgm/io/csv_source.hpp) and NumPy columns (the Python module).
 
 #include <algorithm>
 #include <concepts>

@@ -123,7 +123,7 @@ template <class CountsOf>
 }
 
 /// Fits every table of `structure` from the counts of each node's family: `counts[i]` is node
-/// i's, over the structure's variables (from count_node, or from pgm/data/csv_counts.hpp for
+/// i's, over the structure's variables (from count_node, or from pgm/io/csv_counts.hpp for
 /// a file too large for memory). Throws model_error for a table of another family.
 [[nodiscard]] inline bayesian_network fit(const network_structure& structure, std::span<const count_table> counts,
                                           const fit_options& options = {}) {

@@ -17,6 +17,7 @@
 /// is on by default.
 
 #include <algorithm>
+#include <array>
 #include <boost/math/distributions/chi_squared.hpp>
 #include <cmath>
 #include <cstddef>
@@ -46,17 +47,14 @@ enum class ci_test {
   return test == ci_test::chi_square ? "chi2" : "g2";
 }
 
+inline constexpr std::array ci_tests{ci_test::chi_square, ci_test::g_squared};
+
 /// The tests' names, for parsing, messages and the command line's allowed values.
-[[nodiscard]] inline std::vector<std::string> known_ci_tests() {
-  return {std::string(to_string(ci_test::chi_square)), std::string(to_string(ci_test::g_squared))};
-}
+[[nodiscard]] inline std::vector<std::string> known_ci_tests() { return names_of(ci_tests); }
 
 /// Parses "chi2" or "g2"; throws unknown_name otherwise.
 [[nodiscard]] inline ci_test parse_ci_test(std::string_view text) {
-  for (auto test : {ci_test::chi_square, ci_test::g_squared}) {
-    if (text == to_string(test)) return test;
-  }
-  throw unknown_name("independence test", std::string(text), known_ci_tests());
+  return parse_choice("independence test", text, ci_tests);
 }
 
 /// A continuity correction of the 2 x 2 strata (one degree of freedom).
@@ -72,17 +70,16 @@ enum class continuity_correction {
   return correction == continuity_correction::yates ? "yates" : "none";
 }
 
+inline constexpr std::array continuity_corrections{continuity_correction::none, continuity_correction::yates};
+
 /// The corrections' names, for parsing, messages and the command line's allowed values.
 [[nodiscard]] inline std::vector<std::string> known_continuity_corrections() {
-  return {std::string(to_string(continuity_correction::none)), std::string(to_string(continuity_correction::yates))};
+  return names_of(continuity_corrections);
 }
 
 /// Parses "none" or "yates"; throws unknown_name otherwise.
 [[nodiscard]] inline continuity_correction parse_continuity_correction(std::string_view text) {
-  for (auto correction : {continuity_correction::none, continuity_correction::yates}) {
-    if (text == to_string(correction)) return correction;
-  }
-  throw unknown_name("continuity correction", std::string(text), known_continuity_corrections());
+  return parse_choice("continuity correction", text, continuity_corrections);
 }
 
 /// How a test is computed and when it gives up on a sparse table.

@@ -42,18 +42,11 @@ inline constexpr std::array structure_algorithms{structure_algorithm::pc, struct
                                                  structure_algorithm::tabu, structure_algorithm::mmhc};
 
 /// The algorithms' names, for parsing, messages and the command line's allowed values.
-[[nodiscard]] inline std::vector<std::string> known_structure_algorithms() {
-  std::vector<std::string> known;
-  for (auto a : structure_algorithms) known.emplace_back(to_string(a));
-  return known;
-}
+[[nodiscard]] inline std::vector<std::string> known_structure_algorithms() { return names_of(structure_algorithms); }
 
 /// "pc", "hc", "tabu" or "mmhc"; throws unknown_name otherwise.
 [[nodiscard]] inline structure_algorithm parse_structure_algorithm(std::string_view text) {
-  for (auto a : structure_algorithms) {
-    if (text == to_string(a)) return a;
-  }
-  throw unknown_name("structure learning algorithm", std::string(text), known_structure_algorithms());
+  return parse_choice("structure learning algorithm", text, structure_algorithms);
 }
 
 struct structure_choice {

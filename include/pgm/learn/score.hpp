@@ -59,8 +59,7 @@ inline constexpr std::array score_types{score_type::bic, score_type::aic, score_
 /// The scores' names, and bnlearn's "bde" for bdeu: what parse_score_type and the command
 /// line accept.
 [[nodiscard]] inline std::vector<std::string> known_score_types() {
-  std::vector<std::string> known;
-  for (auto type : score_types) known.push_back(to_string(type));
+  auto known = names_of(score_types);
   known.emplace_back("bde");
   return known;
 }

@@ -7,6 +7,7 @@
 /// is an error naming both variables, never a guess.
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <string>
@@ -30,17 +31,14 @@ enum class state_matching {
   return matching == state_matching::overlap ? "overlap" : "midpoint";
 }
 
+inline constexpr std::array state_matchings{state_matching::midpoint, state_matching::overlap};
+
 /// The matchings' names, for parsing, messages and the command line's allowed values.
-[[nodiscard]] inline std::vector<std::string> known_state_matchings() {
-  return {std::string(to_string(state_matching::midpoint)), std::string(to_string(state_matching::overlap))};
-}
+[[nodiscard]] inline std::vector<std::string> known_state_matchings() { return names_of(state_matchings); }
 
 /// Parses "midpoint" or "overlap"; throws unknown_name otherwise.
 [[nodiscard]] inline state_matching parse_state_matching(std::string_view text) {
-  for (auto matching : {state_matching::midpoint, state_matching::overlap}) {
-    if (text == to_string(matching)) return matching;
-  }
-  throw unknown_name("state matching", std::string(text), known_state_matchings());
+  return parse_choice("state matching", text, state_matchings);
 }
 
 /// One prior state with its share of a target state.

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "pgm/data/csv_counts.hpp"
 #include "pgm/detail/process_group.hpp"
+#include "pgm/io/csv_counts.hpp"
 
 namespace pgm {
 

@@ -25,10 +25,10 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
-#include "pgm/data/csv.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/inference/posterior_table.hpp"
 #include "pgm/inference/query.hpp"
+#include "pgm/io/csv.hpp"
 
 namespace pgm {
 

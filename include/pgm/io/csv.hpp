@@ -9,7 +9,7 @@
 /// chunks split at line boundaries on several threads; standard input ("-") and
 /// gzip-compressed data (a .csv.gz) are read as streams. The result is the same for any
 /// number of threads and any chunk size. To count families without holding the data in
-/// memory, see pgm/data/csv_counts.hpp.
+/// memory, see pgm/io/csv_counts.hpp.
 
 #include <cstddef>
 #include <deque>
@@ -23,6 +23,7 @@
 #include "pgm/core/variable.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/missing.hpp"
+#include "pgm/detail/csv_escape.hpp"
 
 namespace pgm {
 
@@ -95,15 +96,6 @@ class csv_scanner {
   std::size_t record_line_ = 1;
   std::deque<std::string> unescaped_;  // deque: views into it survive push_back
 };
-
-[[nodiscard]] inline std::string csv_escape(std::string_view text, char delimiter) {
-  const bool needs_quotes = text.find_first_of(std::string{delimiter, '"', '\n', '\r'}) != std::string_view::npos ||
-                            (!text.empty() && (text.front() == ' ' || text.back() == ' '));
-  if (!needs_quotes) return std::string(text);
-  std::string quoted = "\"";
-  for (char c : text) quoted += (c == '"') ? std::string("\"\"") : std::string(1, c);
-  return quoted + '"';
-}
 
 }  // namespace detail
 

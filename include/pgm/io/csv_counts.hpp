@@ -22,10 +22,10 @@
 #include <vector>
 
 #include "pgm/core/variable.hpp"
-#include "pgm/data/csv.hpp"
 #include "pgm/data/family_counts.hpp"
 #include "pgm/data/missing.hpp"
 #include "pgm/detail/process_group.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {

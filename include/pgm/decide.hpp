@@ -1,0 +1,11 @@
+#pragma once
+/// \file
+/// Decisions from a network: predicting success and choosing the actions that prevent failure.
+/// Every header of pgm/decide/ in one include; target pgm::core.
+
+#include "pgm/decide/assignment.hpp"
+#include "pgm/decide/explain.hpp"
+#include "pgm/decide/predict.hpp"
+#include "pgm/decide/prevent.hpp"
+#include "pgm/decide/success_table.hpp"
+#include "pgm/decide/table_slice.hpp"
