@@ -103,6 +103,8 @@ network_handle read_network_file(const std::filesystem::path& path) {
 /// (configurations × child states).
 py::tuple table_of(const network_handle& handle, const std::string& name) {
   const auto& table = handle.network.table(detail::node_of(handle.network, name));
+  // A sparse table has a row per configuration here too, within pgm's limit of a dense table.
+  static_cast<void>(checked_table_cells(name, table.child_cardinality(), table.configurations()));
   const auto configurations = table.configurations();
   const auto parents = table.parents().size();
   const auto states = table.child_cardinality();

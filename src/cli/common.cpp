@@ -125,8 +125,7 @@ missing_values missing_of(const missing_arguments& args) {
 void note_counts(const family_counts& counts, const discretization& binned) {
   note_dropped(counts.dropped, counts.rows);
   for (const auto& table : counts.families) {
-    std::uint64_t counted = 0;
-    for (auto n : table.counts()) counted += n;
+    const std::uint64_t counted = table.total();
     if (counted < counts.rows) {
       note("'" + table.child().name() + "' is counted over the " + std::to_string(counted) + " of " +
            std::to_string(counts.rows) +

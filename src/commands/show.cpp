@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -54,7 +55,12 @@ void print_table(const cpt<double>& table, int digits, std::ostream& out) {
   for (std::size_t p = 0; p < table.parents().size(); ++p) {
     out << (p ? ", " : " | ") << table.parents()[p].name();
   }
-  out << ")\n";
+  out << ")";
+  if (table.is_sparse()) {
+    out << ", stored sparse: " << table.stored_configurations().size() << " of " << table.configurations()
+        << " parent configurations, the rest alike";
+  }
+  out << "\n";
   std::vector<std::size_t> widths;
   for (const auto& p : table.parents()) {
     std::size_t w = p.name().size();
@@ -73,18 +79,29 @@ void print_table(const cpt<double>& table, int digits, std::ostream& out) {
   }
   out << '\n';
   char buffer[64];
-  for (std::size_t u = 0; u < table.configurations(); ++u) {
-    const auto codes = table.parent_codes(config_index(u));
-    out << "  ";
-    for (std::size_t p = 0; p < codes.size(); ++p) out << pad(table.parents()[p].states()[codes[p]], widths[p]) << "  ";
-    out << (widths.empty() ? "" : "| ");
-    const auto column = table.column(config_index(u));
+  auto print_column = [&](std::span<const double> column) {
     for (std::size_t x = 0; x < column.size(); ++x) {
       std::snprintf(buffer, sizeof buffer, "%.*f", digits, column[x]);
       out << (x ? "  " : "") << pad(buffer, state_widths[x], true);
     }
     out << '\n';
+  };
+  auto print_configuration = [&](std::size_t u) {
+    const auto codes = table.parent_codes(config_index(u));
+    out << "  ";
+    for (std::size_t p = 0; p < codes.size(); ++p) out << pad(table.parents()[p].states()[codes[p]], widths[p]) << "  ";
+    out << (widths.empty() ? "" : "| ");
+    print_column(table.column(config_index(u)));
+  };
+  if (!table.is_sparse()) {
+    for (std::size_t u = 0; u < table.configurations(); ++u) print_configuration(u);
+    return;
   }
+  for (const auto u : table.stored_configurations()) print_configuration(u);
+  std::size_t width = 0;
+  for (const auto w : widths) width += w + 2;
+  out << "  " << pad("any other", width) << "| ";
+  print_column(table.rest());
 }
 
 void run_show(const show_arguments& args) {

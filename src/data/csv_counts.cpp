@@ -35,13 +35,18 @@ struct counted_column {
 };
 
 /// A family's counts over provisional ids: child first, then the parents, laid out like a
-/// count_table (child fastest, last parent next) with the cardinalities in `cards`.
+/// count_table (child fastest, last parent next) with the cardinalities in `cards`. Past pgm's
+/// limit of a table the family is kept sparse instead, as the rows it counted: each distinct
+/// row's ids (the members one after another) with its count, for a sparse count_table.
 struct family_tally {
   std::vector<std::size_t> members;  // counted column indices, child first
   std::vector<std::uint32_t> cards;
   std::vector<std::uint32_t> strides;
   std::vector<std::uint64_t> counts;
-  bool too_large = false;  // more than 2^32 cells: reported when the tables are made
+  bool sparse = false;              // counted as rows: more cells than max_cells
+  std::vector<std::uint32_t> rows;  // sparse: the ids of each row, members.size() at a time
+  std::vector<std::uint64_t> row_counts;
+  std::size_t compacted = 0;  // sparse: rows when equal rows were last summed
 };
 
 }  // namespace detail
@@ -65,15 +70,78 @@ using detail::max_cells;
   return strides;
 }
 
-/// Lays `family` out for `cards` (each at least the old one), keeping its counts.
+/// Sums the equal rows of a sparse family, so that its memory follows the distinct rows.
+void compact(family_tally& family) {
+  const std::size_t width = family.members.size();
+  const std::size_t n = family.row_counts.size();
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  const auto row = [&](std::size_t i) { return family.rows.begin() + static_cast<std::ptrdiff_t>(i * width); };
+  std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+    return std::lexicographical_compare(row(a), row(a) + static_cast<std::ptrdiff_t>(width), row(b),
+                                        row(b) + static_cast<std::ptrdiff_t>(width));
+  });
+  std::vector<std::uint32_t> rows;
+  std::vector<std::uint64_t> counts;
+  for (const auto i : order) {
+    if (!counts.empty() && std::equal(row(i), row(i) + static_cast<std::ptrdiff_t>(width), rows.end() - width)) {
+      counts.back() += family.row_counts[i];
+      continue;
+    }
+    rows.insert(rows.end(), row(i), row(i) + static_cast<std::ptrdiff_t>(width));
+    counts.push_back(family.row_counts[i]);
+  }
+  family.rows = std::move(rows);
+  family.row_counts = std::move(counts);
+  family.compacted = family.row_counts.size();
+}
+
+/// Adds a row of ids to a sparse family, summing equal rows whenever their number doubled.
+template <class Ids>
+void add_row(family_tally& family, const Ids& ids, std::uint64_t count) {
+  family.rows.insert(family.rows.end(), ids.begin(), ids.end());
+  family.row_counts.push_back(count);
+  if (family.row_counts.size() > 2 * family.compacted + 4096) compact(family);
+}
+
+/// Adds the cells of dense `from` to sparse `to` as rows, each member's id mapped by `id_of`
+/// (per column; empty or no map at all: the id stays).
+void add_cells_as_rows(const family_tally& from, const std::vector<std::vector<std::uint32_t>>* id_of,
+                       family_tally& to) {
+  std::vector<std::uint32_t> ids(from.members.size());
+  for (std::size_t cell = 0; cell < from.counts.size(); ++cell) {
+    if (from.counts[cell] == 0) continue;
+    for (std::size_t m = 0; m < from.members.size(); ++m) {
+      const auto digit = static_cast<std::uint32_t>(cell / from.strides[m] % from.cards[m]);
+      ids[m] = id_of == nullptr || (*id_of)[from.members[m]].empty() ? digit : (*id_of)[from.members[m]][digit];
+    }
+    add_row(to, ids, from.counts[cell]);
+  }
+}
+
+/// Makes a dense family sparse, its counts turned into rows.
+void make_sparse(family_tally& family) {
+  if (family.sparse) return;
+  family_tally rows;
+  rows.members = family.members;
+  rows.sparse = true;
+  add_cells_as_rows(family, nullptr, rows);
+  family.counts = {};
+  family.sparse = true;
+  family.rows = std::move(rows.rows);
+  family.row_counts = std::move(rows.row_counts);
+  family.compacted = rows.compacted;
+}
+
+/// Lays `family` out for `cards` (each at least the old one), keeping its counts; past
+/// max_cells it becomes sparse.
 void relayout(family_tally& family, const std::vector<std::uint32_t>& cards) {
-  if (family.too_large || cards == family.cards) return;
+  if (family.sparse || cards == family.cards) return;
   std::uint64_t cells = 1;
   for (auto card : cards) {
     cells *= card;
     if (cells > max_cells) {
-      family.too_large = true;
-      family.counts = {};
+      make_sparse(family);
       return;
     }
   }
@@ -186,7 +254,18 @@ void count_block(const counter_impl& plan, count_worker& worker) {
   std::vector<const code_vector*> columns;
   for (auto& family : worker.partial.families) {
     fit_layout(plan, worker.partial, family);
-    if (family.too_large) continue;
+    if (family.sparse) {
+      std::vector<std::uint32_t> ids(family.members.size());
+      for (std::size_t r = 0; r < worker.filled; ++r) {
+        bool present = true;
+        for (std::size_t m = 0; m < ids.size(); ++m) {
+          ids[m] = worker.ids[family.members[m]][r];
+          present = present && ids[m] != detail::missing_id;
+        }
+        if (present) add_row(family, ids, 1);
+      }
+      continue;
+    }
     columns.clear();
     bool missing = false;
     for (auto column : family.members) {
@@ -331,11 +410,22 @@ void merge(const counter_impl& plan, partial_impl& into, partial_impl& other,
     auto& family = into.families[f];
     const auto& theirs = other.families[f];
     fit_layout(plan, into, family);
-    if (theirs.too_large) {
-      family.too_large = true;
-      family.counts = {};
+    if (theirs.sparse) make_sparse(family);
+    if (!family.sparse) {
+      add_mapped(theirs, id_of, family.strides, family.counts.data());
+    } else if (!theirs.sparse) {
+      add_cells_as_rows(theirs, &id_of, family);
+    } else {
+      std::vector<std::uint32_t> ids(theirs.members.size());
+      for (std::size_t r = 0; r < theirs.row_counts.size(); ++r) {
+        for (std::size_t m = 0; m < ids.size(); ++m) {
+          const auto id = theirs.rows[r * ids.size() + m];
+          const auto& map = id_of[theirs.members[m]];
+          ids[m] = map.empty() ? id : map[id];
+        }
+        add_row(family, ids, theirs.row_counts[r]);
+      }
     }
-    if (!family.too_large) add_mapped(theirs, id_of, family.strides, family.counts.data());
   }
 }
 
@@ -497,9 +587,27 @@ family_counts csv_counter::finish(const csv_partial_counts& counts) const {
     const auto& members = plan.families[f];
     std::vector<variable> parents;
     for (std::size_t m = 1; m < members.size(); ++m) parents.push_back(result.variables[members[m]]);
-    count_table table(result.variables[members[0]], std::move(parents));  // throws past max_table_cells
+    count_table table(result.variables[members[0]], std::move(parents));  // sparse past max_table_cells
     const auto& family = partial.families[f];
-    PGM_ASSERT(!family.too_large, "a family too large to count has a table within the limit");
+    PGM_ASSERT(family.sparse == table.is_sparse(), "a family is counted sparse where its table is");
+    if (family.sparse) {
+      std::vector<count_table::cell> cells;
+      cells.reserve(family.row_counts.size());
+      for (std::size_t r = 0; r < family.row_counts.size(); ++r) {
+        const auto* ids = family.rows.data() + r * members.size();
+        auto state = [&](std::size_t m) -> std::size_t {
+          const auto& map = state_of[members[m]];
+          return map.empty() ? ids[m] : map[ids[m]];
+        };
+        count_table::cell cell{.configuration = 0, .state = state(0), .count = family.row_counts[r]};
+        for (std::size_t m = 1; m < members.size(); ++m)
+          cell.configuration += state(m) * table.parent_radix().stride(m - 1);
+        cells.push_back(cell);
+      }
+      table.add(std::move(cells));
+      result.families.push_back(std::move(table));
+      continue;
+    }
     // Final strides: the child's state, then each parent's state times its stride in the table.
     std::vector<std::size_t> strides{1};
     for (std::size_t m = 1; m < members.size(); ++m) {
@@ -628,15 +736,30 @@ struct summed_layout {
                                                        : plan.columns[column].var.cardinality());
       family.cards.push_back(card);
       cells *= card;
-      family.too_large = family.too_large || cells > max_cells;
-      if (family.too_large) cells = max_cells + 1;  // no overflow however many members follow
+      family.sparse = family.sparse || cells > max_cells;
+      if (family.sparse) cells = max_cells + 1;  // no overflow however many members follow
     }
     family.strides = strides_of(family.cards);
     layout.offsets.push_back(layout.size);
-    if (!family.too_large) layout.size += cells;
+    if (!family.sparse) layout.size += cells;
     layout.families.push_back(std::move(family));
   }
   return layout;
+}
+
+/// For each column of labels, the id in `labels` (process 0's) of each of this process's ids.
+[[nodiscard]] std::vector<std::vector<std::uint32_t>> ids_in(const counter_impl& plan, const partial_impl& partial,
+                                                             const std::vector<detail::label_dictionary>& labels) {
+  std::vector<std::vector<std::uint32_t>> id_of(plan.columns.size());
+  for (std::size_t c = 0; c < plan.columns.size(); ++c) {
+    if (plan.columns[c].mode != count_mode::labels) continue;
+    for (const auto& entry : partial.labels[c].entries()) {
+      const auto id = labels[c].find(entry.text);
+      if (id == detail::label_dictionary::none) throw std::logic_error("a label is missing from process 0's ids");
+      id_of[c].push_back(id);
+    }
+  }
+  return id_of;
 }
 
 /// This process's counts laid out in `layout`, its labels mapped to the ids of `labels`.
@@ -648,23 +771,66 @@ struct summed_layout {
   values[summed_layout::dropped] = partial.dropped;
   values[summed_layout::lines] = partial.lines;
   std::copy(partial.outside.begin(), partial.outside.end(), values.begin() + summed_layout::outside);
-  std::vector<std::vector<std::uint32_t>> id_of(plan.columns.size());
-  for (std::size_t c = 0; c < plan.columns.size(); ++c) {
-    if (plan.columns[c].mode != count_mode::labels) continue;
-    for (const auto& entry : partial.labels[c].entries()) {
-      const auto id = labels[c].find(entry.text);
-      if (id == detail::label_dictionary::none) throw std::logic_error("a label is missing from process 0's ids");
-      id_of[c].push_back(id);
-    }
-  }
+  const auto id_of = ids_in(plan, partial, labels);
   for (std::size_t f = 0; f < layout.families.size(); ++f) {
     const auto& family = layout.families[f];
     // A process's cards are at most those of all processes: too large here is too large there.
-    PGM_ASSERT(family.too_large || !partial.families[f].too_large, "a family too large on one process fits");
-    if (family.too_large) continue;
+    PGM_ASSERT(family.sparse || !partial.families[f].sparse, "a family too large on one process fits");
+    if (family.sparse) continue;
     add_mapped(partial.families[f], id_of, family.strides, values.data() + layout.offsets[f]);
   }
   return values;
+}
+
+/// This process's rows of the families `layout` keeps sparse, over the ids of `labels`: a
+/// sparse table is not summed but gathered on process 0.
+[[nodiscard]] std::string sparse_rows_to_bytes(const counter_impl& plan, const partial_impl& partial,
+                                               const std::vector<detail::label_dictionary>& labels,
+                                               const summed_layout& layout) {
+  const auto id_of = ids_in(plan, partial, labels);
+  detail::byte_writer out;
+  for (std::size_t f = 0; f < layout.families.size(); ++f) {
+    if (!layout.families[f].sparse) continue;
+    family_tally rows;
+    rows.members = partial.families[f].members;
+    rows.sparse = true;
+    if (partial.families[f].sparse) {
+      const auto& mine = partial.families[f];
+      std::vector<std::uint32_t> ids(mine.members.size());
+      for (std::size_t r = 0; r < mine.row_counts.size(); ++r) {
+        for (std::size_t m = 0; m < ids.size(); ++m) {
+          const auto id = mine.rows[r * ids.size() + m];
+          const auto& map = id_of[mine.members[m]];
+          ids[m] = map.empty() ? id : map[id];
+        }
+        add_row(rows, ids, mine.row_counts[r]);
+      }
+    } else {
+      add_cells_as_rows(partial.families[f], &id_of, rows);
+    }
+    out.put<std::uint64_t>(rows.row_counts.size());
+    out.put_all(std::span<const std::uint32_t>(rows.rows));
+    out.put_all(std::span<const std::uint64_t>(rows.row_counts));
+  }
+  return out.take();
+}
+
+/// Adds one process's sparse rows (sparse_rows_to_bytes) to the sparse families of `partial`.
+void add_sparse_rows(partial_impl& partial, std::string_view bytes) {
+  detail::byte_reader in(bytes);
+  for (auto& family : partial.families) {
+    if (!family.sparse) continue;
+    const auto n = in.get<std::uint64_t>();
+    std::vector<std::uint32_t> rows(n * family.members.size());
+    std::vector<std::uint64_t> counts(n);
+    in.get_all(std::span<std::uint32_t>(rows));
+    in.get_all(std::span<std::uint64_t>(counts));
+    for (std::size_t r = 0; r < n; ++r) {
+      add_row(family, std::span<const std::uint32_t>(rows).subspan(r * family.members.size(), family.members.size()),
+              counts[r]);
+    }
+  }
+  if (!in.at_end()) throw std::logic_error("sparse rows from another process do not fit their counter");
 }
 
 /// The partial counts of all processes, from their sum (on process 0).
@@ -680,7 +846,7 @@ struct summed_layout {
   }
   for (std::size_t f = 0; f < layout.families.size(); ++f) {
     auto& family = layout.families[f];
-    if (!family.too_large) {
+    if (!family.sparse) {
       std::uint64_t cells = 1;
       for (auto card : family.cards) cells *= card;
       const auto first = values.begin() + static_cast<std::ptrdiff_t>(layout.offsets[f]);
@@ -771,9 +937,20 @@ family_counts count_csv(csv_reader& input, const family_count_request& request, 
     failure = std::current_exception();
   }
   detail::sum_over_processes(group, values, failure);
+  // The families kept sparse (the same on every process, by the same layout) are gathered as
+  // rows instead.
+  std::vector<std::string> every_process_rows;
+  if (std::any_of(layout.families.begin(), layout.families.end(), [](const family_tally& f) { return f.sparse; })) {
+    std::string sparse_rows;
+    detail::run_agreed(
+        group, [&] { sparse_rows = sparse_rows_to_bytes(plan, detail::csv_access::of(partial), merged, layout); });
+    every_process_rows = group.gather(sparse_rows);
+  }
   if (rank != 0) return {};
   csv_partial_counts total;
-  detail::csv_access::of(total) = from_sum(plan, std::move(merged), std::move(layout), values);
+  auto& sum = detail::csv_access::of(total);
+  sum = from_sum(plan, std::move(merged), std::move(layout), values);
+  for (const auto& theirs : every_process_rows) add_sparse_rows(sum, theirs);
   return counter.finish(total);
 }
 

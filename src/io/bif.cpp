@@ -535,6 +535,10 @@ bayesian_network read_bif(const std::filesystem::path& path, const network_read_
 }
 
 void write_bif(const bayesian_network& network, std::ostream& out, const bif_write_options& options) {
+  if (network.has_sparse_tables()) {
+    write_bif(network.dense("writing BIF, which has no sparse form (pgm's JSON model has),"), out, options);
+    return;
+  }
   std::vector<std::string> dotted;
   auto checked = [&](const std::string& word, const std::string& what) -> const std::string& {
     if (const auto problem = detail::bif_name_problem(word)) {

@@ -352,6 +352,10 @@ std::optional<std::string> net_name_problem(std::string_view name) {
 }
 
 void write_net(const bayesian_network& network, std::ostream& out, const net_write_options& options) {
+  if (network.has_sparse_tables()) {
+    write_net(network.dense("writing NET, which has no sparse form (pgm's JSON model has),"), out, options);
+    return;
+  }
   std::ostringstream text;
   text << "net\n{\n";
   for (const auto& [key, value] : options.network_properties) {

@@ -468,6 +468,10 @@ bayesian_network read_xmlbif(const std::filesystem::path& path, const network_re
 }
 
 void write_xmlbif(const bayesian_network& network, std::ostream& out, const xmlbif_write_options& options) {
+  if (network.has_sparse_tables()) {
+    write_xmlbif(network.dense("writing XMLBIF, which has no sparse form (pgm's JSON model has),"), out, options);
+    return;
+  }
   pugi::xml_document document;
   auto declaration = document.append_child(pugi::node_declaration);
   declaration.append_attribute("version") = "1.0";

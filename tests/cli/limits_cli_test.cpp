@@ -32,6 +32,48 @@ TEST_F(limits_cli_test, fit_on_raw_continuous_columns_is_refused_with_a_hint_to_
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// y under 26 binary parents: 2^26 configurations × 2 states, past the dense limit, from 2,000
+// rows. pgm fit counts it sparse; JSON keeps it so, BIF refuses it, sampling answers queries.
+TEST_F(limits_cli_test, a_family_past_the_dense_limit_is_fitted_sparse) {
+  std::string csv = "y";
+  std::string edges;
+  for (int p = 0; p < 26; ++p) {
+    csv += ",p" + std::to_string(p);
+    edges += (p ? "," : "") + std::string("p") + std::to_string(p) + "->y";
+  }
+  csv += "\n";
+  std::uint64_t state = 7;
+  for (int r = 0; r < 2000; ++r) {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    csv += (state >> 63) ? "1" : "0";
+    for (int p = 0; p < 26; ++p) csv += ((state >> (20 + p)) & 1U) ? ",1" : ",0";
+    csv += "\n";
+  }
+  const auto data = file("wide.csv", csv);
+  const auto model = path("m.json");
+  const auto fitted = run("fit --data " + data.string() + " --edges \"" + edges + "\" --out " + model.string());
+  ASSERT_EQ(fitted.code, 0) << fitted.err;
+  const auto shown = run("show " + model.string() + " --variable y");
+  EXPECT_THAT(shown.out, HasSubstr("P(y | p0, p1,"));
+  EXPECT_THAT(shown.out, HasSubstr(", stored sparse: 2000 of 67108864 parent configurations, the rest alike"));
+  EXPECT_THAT(shown.out, HasSubstr("any other"));
+
+  const auto bif = path("m.bif");
+  const auto refused = run("fit --data " + data.string() + " --edges \"" + edges + "\" --out " + bif.string());
+  EXPECT_EQ(refused.code, 1);
+  EXPECT_THAT(refused.err, HasSubstr("writing BIF, which has no sparse form (pgm's JSON model has), needs every table "
+                                     "dense, and the table of 'y', stored sparse (2000 of 67108864 parent "
+                                     "configurations), would have 134217728 cells"));
+  EXPECT_FALSE(std::filesystem::exists(bif));
+
+  const auto exact = run("query --model " + model.string() + " --query y --engine ve");
+  EXPECT_EQ(exact.code, 1);
+  EXPECT_THAT(exact.err, HasSubstr("exact inference cannot hold it; the sampling engines (lw, gibbs) can"));
+  const auto sampled = run("query --model " + model.string() + " --query y --evidence p0=1 --engine lw");
+  ASSERT_EQ(sampled.code, 0) << sampled.err;
+  EXPECT_THAT(sampled.out, HasSubstr("y,"));
+}
+
 TEST_F(limits_cli_test, number_options_refuse_what_is_not_plainly_a_number) {
   const auto model = file("m.bif", R"(network n { }
 variable a { type discrete [ 2 ] { 0, 1 }; }

@@ -4,6 +4,7 @@
 /// table's child and parents are the node's variable and graph parents, in graph order, with
 /// the same states.
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <string_view>
@@ -12,6 +13,7 @@
 
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/core/network_structure.hpp"
 
 namespace pgm {
@@ -84,6 +86,30 @@ class bayesian_network {
     std::size_t total = 0;
     for (const auto& t : tables_) total += (t.child_cardinality() - 1) * t.configurations();
     return total;
+  }
+
+  /// Whether a table is stored sparse (cpt.hpp).
+  [[nodiscard]] bool has_sparse_tables() const noexcept {
+    return std::any_of(tables_.begin(), tables_.end(), [](const table_type& t) { return t.is_sparse(); });
+  }
+
+  /// The same network with every table dense, for `purpose` (a format without a sparse form,
+  /// say), which names it in the error: throws table_too_large when a table would exceed
+  /// max_table_cells.
+  [[nodiscard]] bayesian_network dense(std::string_view purpose) const {
+    std::vector<table_type> tables;
+    tables.reserve(tables_.size());
+    for (const auto& t : tables_) {
+      if (t.is_sparse() && t.size() > max_table_cells) {
+        throw table_too_large(std::string(purpose) + " needs every table dense, and the table of '" + t.child().name() +
+                              "', stored sparse (" + std::to_string(t.stored_configurations().size()) + " of " +
+                              std::to_string(t.configurations()) + " parent configurations), would have " +
+                              std::to_string(t.size()) + " cells, more than pgm's limit of " +
+                              std::to_string(max_table_cells) + " (docs/limits.md)");
+      }
+      tables.push_back(t.dense());
+    }
+    return bayesian_network(structure_, std::move(tables));
   }
 
   friend bool operator==(const bayesian_network&, const bayesian_network&) = default;

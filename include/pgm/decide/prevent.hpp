@@ -109,6 +109,7 @@ inline std::vector<std::vector<double>> squared_midpoint_gaps(const cpt<double>&
 /// Solves prevention slice by slice; the buffers live as long as one call.
 class prevention_solver {
  public:
+  /// `table` is dense: prevention_targets densifies a sparse one.
   prevention_solver(const cpt<double>& table, std::size_t success_state, std::span<const bool> controllable,
                     const prevention_options& options)
       : table_(table), success_(success_state), options_(options) {
@@ -286,6 +287,8 @@ class prevention_solver {
                                                                  std::size_t success_state,
                                                                  std::span<const bool> controllable,
                                                                  const prevention_options& options = {}) {
+  // A target for every configuration: a sparse table is looked at dense (within pgm's limit).
+  if (estimated.is_sparse()) return prevention_targets(estimated.dense(), success_state, controllable, options);
   detail::prevention_solver solver(estimated, success_state, controllable, options);
   std::vector<std::size_t> targets(estimated.configurations());
   for (auto base : solver.slice_bases()) solver.solve(base, targets);
@@ -299,6 +302,9 @@ class prevention_solver {
   if (configuration >= estimated.configurations()) {
     throw model_error("configuration " + std::to_string(configuration) + " is out of range for '" +
                       estimated.child().name() + "'");
+  }
+  if (estimated.is_sparse()) {
+    return prevention_target(estimated.dense(), success_state, configuration, controllable, options);
   }
   detail::prevention_solver solver(estimated, success_state, controllable, options);
   std::vector<std::size_t> targets(estimated.configurations());

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <span>
 #include <string>
 #include <utility>
@@ -31,7 +32,9 @@ inline constexpr double column_sum_slack = 1e-12;
 /// a distribution (see column_sum_slack).
 template <Semiring S>
 [[nodiscard]] factor_of<S> table_factor(const bayesian_network& network, variable_id node) {
-  const auto& table = network.table(node);
+  const auto& stored = network.table(node);
+  const auto densified = stored.is_sparse() ? std::optional(dense_for_factor(stored)) : std::nullopt;
+  const auto& table = densified ? *densified : stored;
   const auto j = table.child_cardinality();
   std::vector<double> probabilities(table.values().begin(), table.values().end());
   for (std::size_t u = 0; u * j < probabilities.size(); ++u) {

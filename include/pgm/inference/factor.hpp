@@ -21,10 +21,28 @@
 #include "pgm/core/assert.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/core/strong_index.hpp"
 #include "pgm/inference/semiring.hpp"
 
 namespace pgm {
+
+namespace detail {
+
+/// A sparse table made dense for a factor, which holds every cell; throws table_too_large,
+/// pointing to the sampling engines (which read it sparse), when it would exceed the limit.
+template <std::floating_point U>
+[[nodiscard]] cpt<U> dense_for_factor(const cpt<U>& table) {
+  if (table.size() > max_table_cells) {
+    throw table_too_large("the table of '" + table.child().name() +
+                          "' is stored sparse, and as a factor it would have " + std::to_string(table.size()) +
+                          " cells, more than pgm's limit of " + std::to_string(max_table_cells) +
+                          " (docs/limits.md): exact inference cannot hold it; the sampling engines (lw, gibbs) can");
+  }
+  return table.dense();
+}
+
+}  // namespace detail
 
 template <std::floating_point T>
 class basic_factor;
@@ -76,6 +94,7 @@ class basic_factor {
       const cpt<U>& table, variable_id child, std::span<const variable_id> parents,
       Convert convert = [](double p) { return static_cast<T>(p); }) {
     PGM_ASSERT(parents.size() == table.parents().size(), "one id per parent");
+    if (table.is_sparse()) return from_cpt(detail::dense_for_factor(table), child, parents, convert);
     std::vector<variable_id> scope(parents.begin(), parents.end());
     scope.push_back(child);
     std::vector<std::size_t> cards = table.parent_radix().radices();

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/detail/cumulative_columns.hpp"
 #include "pgm/detail/parallel_for.hpp"
 #include "pgm/detail/splitmix.hpp"
 #include "pgm/inference/factor.hpp"
@@ -48,17 +49,7 @@ class sampler_tables {
       cards_[i] = j;
       parents_[i] = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
       strides_[i] = table.parent_radix().strides();
-      auto& c = cumulative_[i];
-      c.resize(table.size());
-      for (std::size_t u = 0; u < table.configurations(); ++u) {
-        double sum = 0.0;
-        for (std::size_t x = 0; x < j; ++x) sum += table.values()[u * j + x];
-        double running = 0.0;
-        for (std::size_t x = 0; x < j; ++x) {
-          running += table.values()[u * j + x];
-          c[u * j + x] = sum > 0.0 ? running / sum : 0.0;
-        }
-      }
+      cumulative_[i] = cumulative_columns(table, true);
     }
   }
 
@@ -75,14 +66,13 @@ class sampler_tables {
   }
   /// P(node = x | configuration u), from the normalized column.
   [[nodiscard]] double probability(std::size_t node, std::size_t u, std::size_t x) const noexcept {
-    const auto j = cards_[node];
-    const auto& c = cumulative_[node];
-    return c[u * j + x] - (x == 0 ? 0.0 : c[u * j + x - 1]);
+    const double* c = cumulative_[node].column(u);
+    return c[x] - (x == 0 ? 0.0 : c[x - 1]);
   }
   /// A state drawn from column u given a uniform draw in [0, 1).
   [[nodiscard]] std::uint32_t draw(std::size_t node, std::size_t u, double uniform) const noexcept {
     const auto j = cards_[node];
-    const double* c = cumulative_[node].data() + u * j;
+    const double* c = cumulative_[node].column(u);
     std::size_t x = 0;
     while (x + 1 < j && uniform >= c[x]) ++x;
     return static_cast<std::uint32_t>(x);
@@ -92,7 +82,7 @@ class sampler_tables {
 
  private:
   std::vector<variable_id> order_;
-  std::vector<std::vector<double>> cumulative_;
+  std::vector<cumulative_columns> cumulative_;
   std::vector<std::vector<variable_id>> parents_;
   std::vector<std::vector<std::size_t>> strides_;
   std::vector<std::size_t> cards_;

@@ -12,6 +12,7 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/detail/cumulative_columns.hpp"
 
 namespace pgm {
 
@@ -31,22 +32,16 @@ namespace pgm {
     const auto parents = network.graph().parents(node);
     const auto j = table.child_cardinality();
     // Cumulative distributions per configuration, so that a draw is a short scan.
-    std::vector<double> cumulative(table.size());
-    for (std::size_t u = 0; u < table.configurations(); ++u) {
-      double sum = 0.0;
-      for (std::size_t x = 0; x < j; ++x) {
-        sum += table.values()[u * j + x];
-        cumulative[u * j + x] = sum;
-      }
-    }
+    const detail::cumulative_columns cumulative(table, false);
     const auto& strides = table.parent_radix().strides();
     auto& out = codes[node.value()];
     for (std::size_t row = 0; row < rows; ++row) {
       std::size_t u = 0;
       for (std::size_t p = 0; p < parents.size(); ++p) u += codes[parents[p].value()][row] * strides[p];
-      const double draw = uniform01(engine) * cumulative[u * j + j - 1];
+      const double* column = cumulative.column(u);
+      const double draw = uniform01(engine) * column[j - 1];
       std::size_t x = 0;
-      while (x + 1 < j && draw >= cumulative[u * j + x]) ++x;
+      while (x + 1 < j && draw >= column[x]) ++x;
       out[row] = static_cast<std::uint32_t>(x);
     }
   }

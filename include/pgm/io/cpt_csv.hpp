@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pgm/core/cpt.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/io/csv.hpp"
 
@@ -19,6 +20,8 @@ namespace pgm {
 /// Writes `table`; `value_column` names the last column.
 inline void write_cpt_csv(const cpt<double>& table, std::ostream& out,
                           const std::string& value_column = "probability") {
+  // A row per configuration and state, as many as a dense table holds: within the same limit.
+  static_cast<void>(checked_table_cells(table.child().name(), table.child_cardinality(), table.configurations()));
   std::string text;
   for (const auto& p : table.parents()) text += detail::csv_escape(p.name(), ',') + ",";
   text += detail::csv_escape(table.child().name(), ',') + "," + detail::csv_escape(value_column, ',') + "\n";

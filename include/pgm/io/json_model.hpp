@@ -16,6 +16,7 @@
 ///   "statistics": {…}   // optional: the counts and priors (pgm/io/statistics_json.hpp)
 /// }
 
+#include <algorithm>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -66,6 +67,62 @@ inline nlohmann::json variable_to_json(const variable& v) {
   return out;
 }
 
+/// A sparse table's entry: "given" (the parents' states of each stored configuration), "values"
+/// (their columns) and "rest" (the column of every other configuration).
+[[nodiscard]] inline cpt<double> read_sparse_table(const json_reader& reader, const nlohmann::json& entry,
+                                                   const std::string& path, const variable& child,
+                                                   std::vector<variable> parents) {
+  const auto& given = reader.array(reader.member(entry, path, "given"), path + "/given");
+  const auto& rows = reader.array(reader.member(entry, path, "values"), path + "/values");
+  const auto rest = reader.numbers(reader.member(entry, path, "rest"), path + "/rest");
+  if (rows.size() != given.size()) {
+    reader.fail(path + "/values", "expected one column per configuration in \"given\" (" +
+                                      std::to_string(given.size()) + "), got " + std::to_string(rows.size()));
+  }
+  static_cast<void>(checked_table_cells(child.name(), child.cardinality(), given.size()));
+  std::vector<std::size_t> cards;
+  for (const auto& p : parents) cards.push_back(p.cardinality());
+  const mixed_radix radix(cards);
+  // Each stored configuration's index and where its column is, sorted by index.
+  std::vector<std::pair<std::size_t, std::size_t>> order;
+  for (std::size_t i = 0; i < given.size(); ++i) {
+    const auto where = path + "/given/" + std::to_string(i);
+    const auto states = reader.strings(given[i], where);
+    if (states.size() != parents.size()) {
+      reader.fail(where, "expected the states of the " + std::to_string(parents.size()) + " parents");
+    }
+    std::vector<std::size_t> codes;
+    for (std::size_t k = 0; k < states.size(); ++k) {
+      const auto& known = parents[k].states();
+      const auto at = std::find(known.begin(), known.end(), states[k]);
+      if (at == known.end()) {
+        reader.fail(where + "/" + std::to_string(k),
+                    "'" + states[k] + "' is not a state of '" + parents[k].name() + "'");
+      }
+      codes.push_back(static_cast<std::size_t>(at - known.begin()));
+    }
+    order.emplace_back(radix.encode(codes), i);
+  }
+  std::sort(order.begin(), order.end());
+  sparse_columns<double> columns;
+  columns.rest = rest;
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const auto [u, i] = order[k];
+    if (k > 0 && order[k - 1].first == u) {
+      reader.fail(path + "/given/" + std::to_string(i), "this configuration is given twice");
+    }
+    const auto where = path + "/values/" + std::to_string(i);
+    const auto column = reader.numbers(rows[i], where);
+    if (column.size() != child.cardinality()) {
+      reader.fail(where, "expected " + std::to_string(child.cardinality()) + " probabilities, one per state of '" +
+                             child.name() + "'");
+    }
+    columns.configurations.push_back(u);
+    columns.values.insert(columns.values.end(), column.begin(), column.end());
+  }
+  return cpt<double>(child, std::move(parents), std::move(columns));
+}
+
 }  // namespace detail
 
 [[nodiscard]] inline nlohmann::json to_json(const network_structure& structure,
@@ -81,6 +138,24 @@ inline nlohmann::json variable_to_json(const variable& v) {
       nlohmann::json parents = nlohmann::json::array();
       for (const auto& p : table.parents()) parents.push_back(p.name());
       nlohmann::json rows = nlohmann::json::array();
+      if (table.is_sparse()) {
+        // The stored configurations by their parents' states, their columns, and the rest.
+        nlohmann::json given = nlohmann::json::array();
+        for (const auto u : table.stored_configurations()) {
+          const auto codes = table.parent_codes(config_index(u));
+          nlohmann::json states = nlohmann::json::array();
+          for (std::size_t k = 0; k < codes.size(); ++k) states.push_back(table.parents()[k].states()[codes[k]]);
+          given.push_back(std::move(states));
+          const auto column = table.column(config_index(u));
+          rows.push_back(std::vector<double>(column.begin(), column.end()));
+        }
+        document["tables"].push_back({{"variable", table.child().name()},
+                                      {"parents", parents},
+                                      {"given", given},
+                                      {"values", rows},
+                                      {"rest", std::vector<double>(table.rest().begin(), table.rest().end())}});
+        continue;
+      }
       for (std::size_t u = 0; u < table.configurations(); ++u) {
         const auto column = table.column(config_index(u));
         rows.push_back(std::vector<double>(column.begin(), column.end()));
@@ -140,7 +215,7 @@ inline nlohmann::json variable_to_json(const variable& v) {
     for (std::size_t i = 0; i < tables->size(); ++i) {
       const auto path = "/tables/" + std::to_string(i);
       const auto& entry = (*tables)[i];
-      reader.only_keys(entry, path, {"variable", "parents", "values"});
+      reader.only_keys(entry, path, {"variable", "parents", "values", "given", "rest"});
       const auto child = reader.string(reader.member(entry, path, "variable"), path + "/variable");
       const auto parent_names = reader.strings(reader.member(entry, path, "parents"), path + "/parents");
       const auto& rows = reader.array(reader.member(entry, path, "values"), path + "/values");
@@ -152,6 +227,10 @@ inline nlohmann::json variable_to_json(const variable& v) {
           cards.push_back(parents.back().cardinality());
         }
         const auto& child_variable = result.structure.at(child);
+        if (reader.optional_member(entry, "rest") || reader.optional_member(entry, "given")) {
+          read_tables.push_back(detail::read_sparse_table(reader, entry, path, child_variable, std::move(parents)));
+          continue;
+        }
         // A table beyond pgm's limit is refused before its values are copied.
         static_cast<void>(checked_table_cells(child, child_variable.cardinality(), mixed_radix(cards).size()));
         std::vector<double> values;

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <string_view>
@@ -13,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "pgm/core/assert.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/unknown_name.hpp"
@@ -44,49 +46,113 @@ inline constexpr std::array empty_configurations{empty_configuration::uniform, e
 
 struct estimate_options {
   empty_configuration empty = empty_configuration::uniform;
+  /// Store a large table fitted from fewer rows than it has configurations sparse (see
+  /// estimate_is_sparse); off, such a table is dense whenever pgm's limit allows.
+  bool sparse = true;
 };
 
 namespace detail {
 
-/// θ[x,u] = (α[x,u] + M[x,u]) / (α_u + M[u]) with α given cell by cell and α_u per column.
+/// θ[x,u] = (α[x,u] + M[x,u]) / (α_u + M[u]) for one column u, written to `out`; α is given
+/// cell by cell (`cell_alpha(u, x)`) and α_u per column.
+template <class Count, class CellAlpha, class ColumnAlpha>
+void posterior_column(const basic_count_table<Count>& counts, std::size_t u, std::span<const Count> column,
+                      CellAlpha cell_alpha, ColumnAlpha column_alpha, const estimate_options& options, double* out) {
+  const std::size_t j = counts.child_cardinality();
+  Count total = 0;
+  for (auto c : column) total += c;
+  const double denominator = column_alpha(u) + static_cast<double>(total);
+  auto where = [&] {
+    std::string text;
+    const auto codes = counts.parent_radix().decode(u);
+    for (std::size_t i = 0; i < codes.size(); ++i) {
+      text += (i ? ", " : " given ") + counts.parents()[i].name() + "=" + counts.parents()[i].states()[codes[i]];
+    }
+    return text;
+  };
+  // Each pseudo-count alone may be finite while the column's sum is not; the quotient would
+  // then be 0 everywhere, a table that does not sum to 1.
+  if (!std::isfinite(denominator)) {
+    throw model_error("the pseudo-counts and counts of '" + counts.child().name() + "'" + where() +
+                      " add up to more than the largest finite number (" +
+                      format_double(std::numeric_limits<double>::max()) +
+                      "): the pseudo-counts (alpha, the equivalent sample size) must keep that sum finite");
+  }
+  if (denominator == 0.0) {
+    if (options.empty == empty_configuration::fail) {
+      throw data_error("no data for '" + counts.child().name() + "'" + where() + ", and no prior to fall back on");
+    }
+    for (std::size_t x = 0; x < j; ++x) out[x] = 1.0 / static_cast<double>(j);
+    return;
+  }
+  for (std::size_t x = 0; x < j; ++x) out[x] = (cell_alpha(u, x) + static_cast<double>(column[x])) / denominator;
+}
+
 template <class Count, class CellAlpha, class ColumnAlpha>
 std::vector<double> dirichlet_posterior_mean(const basic_count_table<Count>& counts, CellAlpha cell_alpha,
                                              ColumnAlpha column_alpha, const estimate_options& options) {
   const std::size_t j = counts.child_cardinality();
   std::vector<double> values(counts.counts().size());
   for (std::size_t u = 0; u < counts.configurations(); ++u) {
-    const auto column = counts.column(config_index(u));
-    Count total = 0;
-    for (auto c : column) total += c;
-    const double denominator = column_alpha(u) + static_cast<double>(total);
-    auto where = [&] {
-      std::string text;
-      const auto codes = counts.parent_radix().decode(u);
-      for (std::size_t i = 0; i < codes.size(); ++i) {
-        text += (i ? ", " : " given ") + counts.parents()[i].name() + "=" + counts.parents()[i].states()[codes[i]];
-      }
-      return text;
-    };
-    // Each pseudo-count alone may be finite while the column's sum is not; the quotient would
-    // then be 0 everywhere, a table that does not sum to 1.
-    if (!std::isfinite(denominator)) {
-      throw model_error("the pseudo-counts and counts of '" + counts.child().name() + "'" + where() +
-                        " add up to more than the largest finite number (" +
-                        format_double(std::numeric_limits<double>::max()) +
-                        "): the pseudo-counts (alpha, the equivalent sample size) must keep that sum finite");
-    }
-    if (denominator == 0.0) {
-      if (options.empty == empty_configuration::fail) {
-        throw data_error("no data for '" + counts.child().name() + "'" + where() + ", and no prior to fall back on");
-      }
-      for (std::size_t x = 0; x < j; ++x) values[u * j + x] = 1.0 / static_cast<double>(j);
-      continue;
-    }
-    for (std::size_t x = 0; x < j; ++x) {
-      values[u * j + x] = (cell_alpha(u * j + x) + static_cast<double>(column[x])) / denominator;
-    }
+    posterior_column(
+        counts, u, counts.column(config_index(u)), [&](std::size_t, std::size_t x) { return cell_alpha(u * j + x); },
+        column_alpha, options, values.data() + u * j);
   }
   return values;
+}
+
+/// Tables with more cells than this, fitted from fewer rows than they have parent
+/// configurations, are stored sparse (cpt.hpp); smaller ones stay dense.
+inline constexpr std::size_t sparse_table_min_cells = std::size_t{1} << 16;
+
+/// Whether the estimate of `counts` is stored sparse: always for sparse counts, and for dense
+/// ones over sparse_table_min_cells with more configurations than rows.
+template <class Count>
+[[nodiscard]] bool estimate_is_sparse(const basic_count_table<Count>& counts) {
+  if (counts.is_sparse()) return true;
+  const auto cells = counts.child_cardinality() * counts.configurations();
+  return cells > sparse_table_min_cells &&
+         static_cast<double>(counts.total()) < static_cast<double>(counts.configurations());
+}
+
+/// Eq. 6 with the same pseudo-count α in every cell (0 for MLE), stored sparse: the columns of
+/// the configurations with rows, and for the others the column of an empty configuration,
+/// computed by the same formula as a dense table's, so that dense() equals it to the bit.
+template <class Count>
+cpt<double> sparse_dirichlet_estimate(const basic_count_table<Count>& counts, double alpha,
+                                      const estimate_options& options) {
+  const std::size_t j = counts.child_cardinality();
+  const double column_alpha = alpha * static_cast<double>(j);
+  const auto cell_alpha = [alpha](std::size_t, std::size_t) { return alpha; };
+  const auto same_alpha = [column_alpha](std::size_t) { return column_alpha; };
+  sparse_columns<double> columns;
+  auto store = [&](std::size_t u, std::span<const Count> column) {
+    columns.configurations.push_back(u);
+    columns.values.resize(columns.values.size() + j);
+    posterior_column(counts, u, column, cell_alpha, same_alpha, options,
+                     columns.values.data() + columns.values.size() - j);
+  };
+  if (counts.is_sparse()) {
+    const auto stored = counts.stored_configurations();
+    for (std::size_t i = 0; i < stored.size(); ++i) store(stored[i], counts.stored_column(i));
+  } else {
+    for (std::size_t u = 0; u < counts.configurations(); ++u) {
+      const auto column = counts.column(config_index(u));
+      if (std::any_of(column.begin(), column.end(), [](Count c) { return c != 0; })) store(u, column);
+    }
+  }
+  // The first configuration without rows names the rest in an error.
+  std::size_t empty = 0;
+  while (empty < columns.configurations.size() && columns.configurations[empty] == empty) ++empty;
+  columns.rest.resize(j);
+  if (empty < counts.configurations()) {
+    const std::vector<Count> zeros(j, 0);
+    posterior_column(counts, empty, std::span<const Count>(zeros), cell_alpha, same_alpha, options,
+                     columns.rest.data());
+  } else {
+    std::fill(columns.rest.begin(), columns.rest.end(), 1.0 / static_cast<double>(j));
+  }
+  return cpt<double>(counts.child(), counts.parents(), std::move(columns));
 }
 
 template <class Count>
@@ -115,6 +181,21 @@ cpt<double> estimate_from_pseudo_counts(const basic_count_table<Count>& counts, 
 }
 
 template <class Count>
+[[nodiscard]] bool stores_sparse(const basic_count_table<Count>& counts, const estimate_options& options) {
+  return counts.is_sparse() || (options.sparse && estimate_is_sparse(counts));
+}
+
+/// Throws table_too_large when `counts` are sparse: `what` needs a pseudo-count per cell.
+template <class Count>
+void check_dense(const basic_count_table<Count>& counts, const std::string& what) {
+  if (counts.is_sparse()) {
+    throw table_too_large(what + " gives a pseudo-count for every cell of '" + counts.child().name() +
+                          "', whose table is too large to be dense (" + std::to_string(counts.configurations()) +
+                          " parent configurations; docs/limits.md): use a Dirichlet, K2 or BDeu prior");
+  }
+}
+
+template <class Count>
 void check_shape(const basic_count_table<Count>& counts, const cpt<double>& prior) {
   if (prior.child_cardinality() != counts.child_cardinality() || prior.parent_radix() != counts.parent_radix()) {
     throw model_error("the prior table of '" + prior.child().name() + "' (" +
@@ -125,12 +206,66 @@ void check_shape(const basic_count_table<Count>& counts, const cpt<double>& prio
   }
 }
 
+/// Eq. 8 where the counts or the prior table f are sparse: θ = (w·f + M)/(w + M) for every
+/// configuration with rows or a column of f of its own, f's rest for all the others.
+template <class Count>
+cpt<double> sparse_weighted_estimate(const basic_count_table<Count>& counts, const weighted_prior& p,
+                                     const estimate_options& options) {
+  const auto& f = p.prior;
+  const double w = p.weight;
+  const std::size_t j = counts.child_cardinality();
+  // The configurations with rows or a column of f: both sorted lists, merged.
+  std::vector<std::size_t> seen;
+  if (counts.is_sparse()) {
+    const auto stored = counts.stored_configurations();
+    seen.assign(stored.begin(), stored.end());
+  } else {
+    for (std::size_t u = 0; u < counts.configurations(); ++u) {
+      if (counts.total(config_index(u)) != 0) seen.push_back(u);
+    }
+  }
+  std::vector<std::size_t> configurations;
+  std::set_union(seen.begin(), seen.end(), f.stored_configurations().begin(), f.stored_configurations().end(),
+                 std::back_inserter(configurations));
+  sparse_columns<double> columns;
+  columns.configurations = configurations;
+  columns.values.resize(configurations.size() * j);
+  for (std::size_t i = 0; i < configurations.size(); ++i) {
+    const auto u = configurations[i];
+    const auto prior = f.column(config_index(u));
+    const auto column = counts.column(config_index(u));
+    double* out = columns.values.data() + i * j;
+    if (w > 0.0 && counts.total(config_index(u)) == 0) {
+      std::copy(prior.begin(), prior.end(), out);  // as the dense estimate: f itself
+    } else {
+      posterior_column(
+          counts, u, column, [&](std::size_t, std::size_t x) { return w * prior[x]; }, [w](std::size_t) { return w; },
+          options, out);
+    }
+  }
+  if (w > 0.0) {
+    PGM_ASSERT(f.is_sparse(), "sparse counts with a dense prior table of their shape");
+    columns.rest.assign(f.rest().begin(), f.rest().end());
+  } else {
+    // w = 0 is MLE: a configuration without rows follows the empty-configuration rule.
+    std::size_t empty = 0;
+    while (empty < configurations.size() && configurations[empty] == empty) ++empty;
+    const std::vector<Count> zeros(j, 0);
+    columns.rest.resize(j);
+    posterior_column(
+        counts, empty, std::span<const Count>(zeros), [](std::size_t, std::size_t) { return 0.0; },
+        [](std::size_t) { return 0.0; }, options, columns.rest.data());
+  }
+  return cpt<double>(counts.child(), counts.parents(), std::move(columns));
+}
+
 }  // namespace detail
 
 /// Maximum likelihood, eq. 3: θ[x,u] = M[x,u] / M[u]. The counts may be rows counted or the
 /// expected counts of EM.
 template <class Count>
 [[nodiscard]] cpt<double> estimate_mle(const basic_count_table<Count>& counts, const estimate_options& options = {}) {
+  if (detail::stores_sparse(counts, options)) return detail::sparse_dirichlet_estimate(counts, 0.0, options);
   return detail::table_of(counts,
                           detail::dirichlet_posterior_mean(
                               counts, [](std::size_t) { return 0.0; }, [](std::size_t) { return 0.0; }, options));
@@ -155,18 +290,22 @@ template <class Count>
             alpha = p.equivalent_sample_size / (j * static_cast<double>(counts.configurations()));
           }
           detail::check_pseudo_count(alpha, "the Dirichlet pseudo-count alpha");
+          if (detail::stores_sparse(counts, options)) return detail::sparse_dirichlet_estimate(counts, alpha, options);
           return detail::table_of(counts, detail::dirichlet_posterior_mean(
                                               counts, [alpha](std::size_t) { return alpha; },
                                               [alpha, j](std::size_t) { return alpha * j; }, options));
         } else if constexpr (std::is_same_v<prior_type, pseudo_counts_prior>) {
+          detail::check_dense(counts, "a prior given cell by cell");
           return detail::estimate_from_pseudo_counts(counts, p.alpha, "", options);
         } else if constexpr (std::is_same_v<prior_type, any_parameter_prior>) {
+          detail::check_dense(counts, "the prior '" + std::string(p.name()) + "'");
           return detail::estimate_from_pseudo_counts(counts, p.pseudo_counts(counts.child(), counts.parents()),
                                                      "the prior '" + std::string(p.name()) + "': ", options);
         } else {
           static_assert(std::is_same_v<prior_type, weighted_prior>);
           detail::check_shape(counts, p.prior);
           detail::check_pseudo_count(p.weight, "the prior weight w");
+          if (counts.is_sparse() || p.prior.is_sparse()) return detail::sparse_weighted_estimate(counts, p, options);
           const auto f = p.prior.values();
           const double w = p.weight;
           // The denominator is w + M[u] exactly as in eq. 8, not the sum of w·f over states.

@@ -326,11 +326,18 @@ class em_runner {
     return detail::cell_of(fixed_[node], member_values);
   }
 
+  /// The estimation options with dense tables: the E-step reads every value of each table.
+  [[nodiscard]] estimate_options dense_estimation() const {
+    auto options = fitting_->estimation;
+    options.sparse = false;
+    return options;
+  }
+
   [[nodiscard]] bayesian_network maximize(const std::vector<expected_count_table>& counts) const {
     std::vector<cpt<double>> tables;
     for (std::size_t i = 0; i < counts.size(); ++i) {
       tables.push_back(
-          estimate(counts[i], prior_of(variable_id(static_cast<variable_id::rep>(i))), fitting_->estimation));
+          estimate(counts[i], prior_of(variable_id(static_cast<variable_id::rep>(i))), dense_estimation()));
     }
     return bayesian_network(*structure_, std::move(tables));
   }
@@ -343,7 +350,7 @@ class em_runner {
     for (std::size_t i = 0; i < fixed_.size(); ++i) {
       auto alpha = alpha_[i];
       for (auto& a : alpha) a += 1.0;
-      smoothed.push_back(estimate(fixed_[i], pseudo_counts_prior{std::move(alpha)}, fitting_->estimation));
+      smoothed.push_back(estimate(fixed_[i], pseudo_counts_prior{std::move(alpha)}, dense_estimation()));
     }
     bayesian_network network(*structure_, std::move(smoothed));
     if (!has_latent_) return network;

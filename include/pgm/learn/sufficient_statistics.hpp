@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
+#include <iterator>
 #include <limits>
 #include <span>
 #include <string>
@@ -33,17 +34,34 @@ namespace pgm {
 /// `Count` is std::uint64_t for rows counted (`count_table`) and double for the expected counts
 /// of EM (`expected_count_table`, pgm/learn/expectation_maximization.hpp); the estimators take
 /// either.
+///
+/// A family whose dense table would exceed max_table_cells is counted sparse instead: only the
+/// configurations rows hold are stored (ascending), each with its column of counts, so that
+/// memory follows the rows, not the configurations. `column`, `total` and `+=` work either
+/// way; `counts()` needs a dense table.
 template <class Count>
 class basic_count_table {
  public:
   using count_type = Count;
+
+  /// One cell's count, for add().
+  struct cell {
+    std::size_t configuration = 0;
+    std::size_t state = 0;
+    count_type count = 0;
+  };
 
   basic_count_table(variable child, std::vector<variable> parents)
       : child_(std::move(child)), parents_(std::move(parents)) {
     std::vector<std::size_t> cards;
     for (const auto& p : parents_) cards.push_back(p.cardinality());
     radix_ = mixed_radix(std::move(cards));
-    counts_.assign(checked_table_cells(child_.name(), child_.cardinality(), radix_.size()), 0);
+    sparse_ = detail::saturating_multiply(child_.cardinality(), radix_.size()) > max_table_cells;
+    if (sparse_) {
+      zeros_.assign(child_.cardinality(), 0);
+    } else {
+      counts_.assign(child_.cardinality() * radix_.size(), 0);
+    }
   }
 
   [[nodiscard]] const variable& child() const noexcept { return child_; }
@@ -52,10 +70,17 @@ class basic_count_table {
   [[nodiscard]] std::size_t child_cardinality() const noexcept { return child_.cardinality(); }
   [[nodiscard]] std::size_t configurations() const noexcept { return radix_.size(); }
 
-  /// M[x, u].
-  [[nodiscard]] count_type operator()(state_index x, config_index u) const {
-    return counts_[u.value() * child_cardinality() + x.value()];
+  /// Whether only the configurations seen are stored.
+  [[nodiscard]] bool is_sparse() const noexcept { return sparse_; }
+  /// A sparse table's stored configurations, ascending (none for a dense table).
+  [[nodiscard]] std::span<const std::size_t> stored_configurations() const noexcept { return stored_; }
+  /// The counts of the i-th stored configuration of a sparse table.
+  [[nodiscard]] std::span<const count_type> stored_column(std::size_t i) const {
+    return {counts_.data() + i * child_cardinality(), child_cardinality()};
   }
+
+  /// M[x, u].
+  [[nodiscard]] count_type operator()(state_index x, config_index u) const { return column(u)[x.value()]; }
   /// M[u] = sum over x of M[x, u].
   [[nodiscard]] count_type total(config_index u) const {
     const auto column = this->column(u);
@@ -70,10 +95,56 @@ class basic_count_table {
     return sum;
   }
   [[nodiscard]] std::span<const count_type> column(config_index u) const {
-    return {counts_.data() + u.value() * child_cardinality(), child_cardinality()};
+    if (!sparse_) return {counts_.data() + u.value() * child_cardinality(), child_cardinality()};
+    const auto at = std::lower_bound(stored_.begin(), stored_.end(), u.value());
+    if (at == stored_.end() || *at != u.value()) return zeros_;
+    return stored_column(static_cast<std::size_t>(at - stored_.begin()));
   }
-  [[nodiscard]] std::span<const count_type> counts() const noexcept { return counts_; }
-  [[nodiscard]] std::span<count_type> counts() noexcept { return counts_; }
+  /// Every count, configuration major; throws table_too_large for a sparse table.
+  [[nodiscard]] std::span<const count_type> counts() const {
+    if (sparse_) throw_sparse();
+    return counts_;
+  }
+  [[nodiscard]] std::span<count_type> counts() {
+    if (sparse_) throw_sparse();
+    return counts_;
+  }
+
+  /// Adds counts cell by cell, in any order; the way a sparse table is filled.
+  void add(std::vector<cell> cells) {
+    const std::size_t j = child_cardinality();
+    for (const auto& c : cells) {
+      if (c.configuration >= configurations() || c.state >= j) {
+        throw model_error("a count of '" + child_.name() + "' is out of its table (configuration " +
+                          std::to_string(c.configuration) + ", state " + std::to_string(c.state) + ")");
+      }
+    }
+    if (!sparse_) {
+      for (const auto& c : cells) counts_[c.configuration * j + c.state] += c.count;
+      return;
+    }
+    std::sort(cells.begin(), cells.end(), [](const cell& a, const cell& b) {
+      return a.configuration < b.configuration || (a.configuration == b.configuration && a.state < b.state);
+    });
+    // The configurations of `cells` as a sparse table of their own, then merged into this one.
+    std::size_t distinct = 0;
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      distinct += i == 0 || cells[i].configuration != cells[i - 1].configuration;
+    }
+    check_stored(distinct);
+    std::vector<std::size_t> stored;
+    std::vector<count_type> counts;
+    stored.reserve(distinct);
+    counts.reserve(distinct * j);
+    for (const auto& c : cells) {
+      if (stored.empty() || stored.back() != c.configuration) {
+        stored.push_back(c.configuration);
+        counts.resize(counts.size() + j, 0);
+      }
+      counts[counts.size() - j + c.state] += c.count;
+    }
+    merge(stored, counts);
+  }
 
   /// The same counts under other variables with the same numbers of states (the structure's
   /// own, say, which may carry intervals and tags). Throws model_error otherwise.
@@ -88,6 +159,7 @@ class basic_count_table {
     }
     basic_count_table result(std::move(child), std::move(parents));
     result.counts_ = counts_;
+    result.stored_ = stored_;
     return result;
   }
 
@@ -97,17 +169,62 @@ class basic_count_table {
       throw model_error("cannot add the counts of '" + other.child_.name() + "' to those of '" + child_.name() +
                         "': the families differ");
     }
-    for (std::size_t i = 0; i < counts_.size(); ++i) counts_[i] += other.counts_[i];
+    if (sparse_) {
+      merge(other.stored_, other.counts_);
+    } else {
+      for (std::size_t i = 0; i < counts_.size(); ++i) counts_[i] += other.counts_[i];
+    }
     return *this;
   }
 
   friend bool operator==(const basic_count_table&, const basic_count_table&) = default;
 
  private:
+  [[noreturn]] void throw_sparse() const {
+    throw table_too_large("the counts of '" + child_.name() + "' are kept sparse (" + std::to_string(stored_.size()) +
+                          " of " + std::to_string(configurations()) +
+                          " parent configurations seen), since a dense table would have more than pgm's limit of " +
+                          std::to_string(max_table_cells) +
+                          " cells (docs/limits.md), and this step needs every count of it");
+  }
+
+  /// Throws table_too_large when `configurations` stored columns would exceed max_table_cells:
+  /// a sparse table bounds what it holds as a dense one does (a child with thousands of states
+  /// is a continuous column read as labels, whose every row is a configuration of its own).
+  void check_stored(std::size_t configurations) const {
+    static_cast<void>(checked_table_cells(child_.name(), child_cardinality(), configurations));
+  }
+
+  /// Adds a sparse table's stored configurations and counts (ascending) into this sparse one.
+  void merge(const std::vector<std::size_t>& stored, const std::vector<count_type>& counts) {
+    const std::size_t j = child_cardinality();
+    std::vector<std::size_t> merged;
+    std::set_union(stored_.begin(), stored_.end(), stored.begin(), stored.end(), std::back_inserter(merged));
+    check_stored(merged.size());
+    std::vector<count_type> merged_counts(merged.size() * j, 0);
+    std::size_t a = 0, b = 0;
+    for (std::size_t i = 0; i < merged.size(); ++i) {
+      auto* into = merged_counts.data() + i * j;
+      if (a < stored_.size() && stored_[a] == merged[i]) {
+        for (std::size_t x = 0; x < j; ++x) into[x] += counts_[a * j + x];
+        ++a;
+      }
+      if (b < stored.size() && stored[b] == merged[i]) {
+        for (std::size_t x = 0; x < j; ++x) into[x] += counts[b * j + x];
+        ++b;
+      }
+    }
+    stored_ = std::move(merged);
+    counts_ = std::move(merged_counts);
+  }
+
   variable child_;
   std::vector<variable> parents_;
   mixed_radix radix_;
-  std::vector<count_type> counts_;
+  std::vector<count_type> counts_;   // dense: every cell; sparse: the stored columns
+  std::vector<std::size_t> stored_;  // sparse: the stored configurations, ascending
+  std::vector<count_type> zeros_;    // sparse: the column of a configuration not stored
+  bool sparse_ = false;
 };
 
 /// Rows counted.
@@ -252,19 +369,63 @@ struct family_columns {
   return family;
 }
 
+/// Adds the counts of rows [begin, end) into a sparse `table`, leaving out rows where a column
+/// is missing: each row's configuration in 64 bits, then the cells sorted and merged.
+inline void count_rows_sparse(const discrete_column& child, std::span<const discrete_column* const> parents,
+                              std::size_t begin, std::size_t end, count_table& table) {
+  const std::size_t n = end > begin ? end - begin : 0;
+  std::vector<count_table::cell> cells(n, count_table::cell{.count = 1});
+  std::vector<std::uint8_t> present(n, 1);
+  auto visit_codes = [&](const discrete_column& column, auto&& each) {
+    std::visit(
+        [&](const auto& codes) {
+          using code_type = typename std::decay_t<decltype(codes)>::value_type;
+          for (std::size_t i = 0; i < n; ++i) {
+            const auto code = codes[begin + i];
+            if (code == missing_code<code_type> && column.missing() != 0) {
+              present[i] = 0;
+            } else {
+              each(i, static_cast<std::size_t>(code));
+            }
+          }
+        },
+        column.codes());
+  };
+  visit_codes(child, [&](std::size_t i, std::size_t code) { cells[i].state = code; });
+  for (std::size_t k = 0; k < parents.size(); ++k) {
+    if (parents[k]->size() != child.size()) {
+      throw data_error("column '" + parents[k]->name() + "' has " + std::to_string(parents[k]->size()) + " rows, '" +
+                       child.name() + "' " + std::to_string(child.size()));
+    }
+    const std::size_t stride = table.parent_radix().stride(k);
+    visit_codes(*parents[k], [&](std::size_t i, std::size_t code) { cells[i].configuration += code * stride; });
+  }
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (present[i]) cells[kept++] = cells[i];
+  }
+  cells.resize(kept);
+  table.add(std::move(cells));
+}
+
 }  // namespace detail
 
 /// Counts the family (child | parents) over rows `rows` of the given columns; a row where the
-/// child or a parent is missing is left out (available-case counting).
+/// child or a parent is missing is left out (available-case counting). A family too large for
+/// a dense table is counted sparse (count_table).
 [[nodiscard]] inline count_table count_family(const discrete_column& child,
                                               std::span<const discrete_column* const> parents,
                                               const count_options& options = {}, row_range rows = {}) {
   std::vector<variable> parent_variables;
   for (const auto* p : parents) parent_variables.push_back(p->var());
   count_table table(child.var(), std::move(parent_variables));
-  const auto family = detail::columns_of(table, child, parents);
   const std::size_t end = std::min(rows.end, child.size());
   const std::size_t begin = std::min(rows.begin, end);
+  if (table.is_sparse()) {
+    detail::count_rows_sparse(child, parents, begin, end, table);
+    return table;
+  }
+  const auto family = detail::columns_of(table, child, parents);
   bool skip_missing = child.missing() != 0;
   for (const auto* p : parents) skip_missing = skip_missing || p->missing() != 0;
   detail::count_rows_parallel(family.columns, family.strides, begin, end, table.counts(), options.threads,

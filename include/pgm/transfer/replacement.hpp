@@ -39,10 +39,12 @@ struct minimal_replacement {
     const std::size_t j = prior.child_cardinality();
     const std::size_t success = direct.child_state[target_success];
     // The prior success probability of a run of terms.
+    const double* dense = prior.is_sparse() ? nullptr : prior.values().data();
     auto success_of = [&](const plan_terms& terms, std::size_t first, std::uint32_t count) {
       double p = 0;
       for (std::size_t i = first; i < first + count; ++i) {
-        p += terms.terms[i].weight * prior.values()[std::size_t{terms.terms[i].configuration} * j + success];
+        const auto u = std::size_t{terms.terms[i].configuration};
+        p += terms.terms[i].weight * (dense ? dense[u * j + success] : prior.column(config_index(u))[success]);
       }
       return p;
     };

@@ -225,11 +225,14 @@ struct plan_terms {
                                                            const cpt<double>& prior) {
   const std::size_t j = plan.child_state.size();
   std::vector<double> values(expanded.counts.size() * j, 0.0);
+  // A sparse prior table (fitted from few rows) is read column by column, as it is stored.
+  const double* dense = prior.is_sparse() ? nullptr : prior.values().data();
   std::size_t next = 0;
   for (std::size_t u = 0; u < expanded.counts.size(); ++u) {
     for (std::uint32_t n = 0; n < expanded.counts[u]; ++n, ++next) {
       const auto& term = expanded.terms[next];
-      const double* column = prior.values().data() + std::size_t{term.configuration} * j;
+      const double* column =
+          dense ? dense + std::size_t{term.configuration} * j : prior.column(config_index(term.configuration)).data();
       for (std::size_t x = 0; x < j; ++x) values[u * j + x] += term.weight * column[plan.child_state[x]];
     }
   }
