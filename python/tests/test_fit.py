@@ -360,3 +360,48 @@ def test_states_named_are_states_also_before_any_row_has_them():
         pgm.fit(frame, "x->onTop", states={"onTop": [0, 0]})
     with pytest.raises(TypeError, match="must be a list of states"):
         pgm.fit(frame, "x->onTop", states={"onTop": "01"})
+
+
+def _wide_frame(parents, rows, seed):
+    """y (3 states) under `parents` binary columns p0, p1, ..., drawn at random."""
+    random = np.random.default_rng(seed)
+    frame = pd.DataFrame({f"p{p}": random.integers(0, 2, rows) for p in range(parents)})
+    frame.insert(0, "y", random.integers(0, 3, rows))
+    return frame
+
+
+def test_a_family_past_the_dense_limit_is_fitted_sparse_as_by_the_program(program, tmp_path):
+    """y under 26 binary parents: 2^26 configurations, past the limit of a dense table. The fit
+    keeps the configurations seen, as `pgm fit` does; a table this large is no DataFrame, but
+    sampling engines answer queries on it."""
+    frame = _wide_frame(26, 2000, 3)
+    edges = ",".join(f"p{p}->y" for p in range(26))
+    net = pgm.fit(frame, edges)
+    frame.to_csv(tmp_path / "wide.csv", index=False)
+    program.run("fit", "--data", tmp_path / "wide.csv", "--edges", edges, "--out", tmp_path / "wide.json")
+    net.write(tmp_path / "python.json")
+    assert (tmp_path / "python.json").read_text() == (tmp_path / "wide.json").read_text()
+    with pytest.raises(pgm.Error, match="more than pgm's limit"):
+        net.cpt("y")
+    p = pgm.query(net, "y", {"p0": 1}, engine="lw")
+    assert abs(p.sum() - 1) < 1e-12
+    with pytest.raises(pgm.Error, match="the sampling engines"):
+        pgm.query(net, "y", {"p0": 1}, engine="ve")
+
+
+def test_a_large_table_from_few_rows_is_sparse_with_the_dense_values():
+    """20 binary parents (3·2^20 cells, within the limit) from 3,000 rows, a table kept sparse:
+    its DataFrame has every configuration, a seen one's column the counts' MLE, the others
+    uniform."""
+    frame = _wide_frame(20, 3000, 5)
+    net = pgm.fit(frame, ",".join(f"p{p}->y" for p in range(20)))
+    table = net.cpt("y")
+    assert len(table) == 2**20
+    parents = [f"p{p}" for p in range(20)]
+    counts = frame.groupby(parents)["y"].value_counts().unstack(fill_value=0)
+    row = counts.index[0]
+    index = sum(int(row[p]) << (19 - p) for p in range(20))
+    mle = counts.loc[row].to_numpy() / counts.loc[row].sum()
+    assert list(table.loc[index, ["0", "1", "2"]].to_numpy()) == list(mle)
+    unseen = table[["0", "1", "2"]].to_numpy().max(axis=1) == 1 / 3
+    assert unseen.sum() >= 2**20 - 3000
