@@ -34,25 +34,25 @@ int report(const std::exception_ptr& failure) {
   try {
     std::rethrow_exception(failure);
   } catch (const pgm::table_too_large& e) {
-    std::cerr << "pgm: error: " << pgm::detail::printable(e.what()) << '\n'
+    std::cerr << "pgm: error: " << pgm::text::printable(e.what()) << '\n'
               << "pgm: hint: a variable with that many states is usually a continuous column read as labels; bin it "
                  "with --discretization (or pgm discretize) first\n";
     return 1;
   } catch (const pgm::missing_value_error& e) {
-    std::cerr << "pgm: error: " << pgm::detail::printable(e.what()) << '\n'
+    std::cerr << "pgm: error: " << pgm::text::printable(e.what()) << '\n'
               << "pgm: hint: --missing drop leaves out the rows that have a missing value, --missing available counts "
                  "each table over the rows where its variables are present; --na names the texts read as missing "
                  "(default NA,,?: NA, the empty field and ?)\n";
     return 1;
   } catch (const pgm::error& e) {
     // A message may quote a bad file's bytes: shown escaped, never obeyed by the terminal.
-    std::cerr << "pgm: error: " << pgm::detail::printable(e.what()) << '\n';
+    std::cerr << "pgm: error: " << pgm::text::printable(e.what()) << '\n';
     return 1;
   } catch (const std::bad_alloc&) {
     std::cerr << "pgm: error: out of memory\n";
     return 1;
   } catch (const std::exception& e) {
-    std::cerr << "pgm: internal error: " << pgm::detail::printable(e.what()) << '\n';
+    std::cerr << "pgm: internal error: " << pgm::text::printable(e.what()) << '\n';
     return 3;
   }
 }

@@ -484,8 +484,8 @@ def fit(
 def _em_arguments(missing, latent, restarts, seed, max_iterations, tolerance, hard, keep_counts):
     """missing="em"'s options for _core.fit, None for any other rule (whose EM options are
     refused when set)."""
-    if missing not in ("error", "drop", "available", "em"):
-        raise Error(f"missing must be one of error, drop, available, em, got {missing!r}")
+    if missing not in (*_frame._MISSING, "em"):
+        raise Error(f"missing must be one of {', '.join(_frame._MISSING)}, em, got {missing!r}")
     if missing != "em":
         if latent is not None:
             raise Error('latent applies with missing="em"')

@@ -15,6 +15,8 @@ import warnings
 import numpy as np
 import pandas as pd
 
+from . import _core
+
 
 def _label(value):
     return str(value)
@@ -94,7 +96,7 @@ def numeric_column(name, series):
     return discrete_column(name, series)
 
 
-_MISSING = ("error", "drop", "available")
+_MISSING = tuple(_core.missing_policies)  # the library's: error, drop, available
 
 
 def with_missing(data, names, missing):

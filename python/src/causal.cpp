@@ -51,7 +51,7 @@ py::dict check_frame(const network_handle& handle, const py::list& columns, cons
     const auto& t = result.tests[k];
     x.push_back(t.x);
     y.push_back(t.y);
-    given.push_back(detail::join(t.given, ","));
+    given.push_back(text::join(t.given, ","));
     statistic.mutable_data()[k] = t.result.statistic;
     df.mutable_data()[k] = t.result.df;
     p.mutable_data()[k] = t.result.p_value;

@@ -359,7 +359,7 @@ void require_columns(const std::vector<std::string>& wanted, const std::vector<s
                      const std::string& source) {
   for (const auto& name : wanted) {
     if (std::find(available.begin(), available.end(), name) == available.end()) {
-      throw data_error(source + ": there is no column '" + name + "' (columns: " + detail::list_for_message(available) +
+      throw data_error(source + ": there is no column '" + name + "' (columns: " + text::list_for_message(available) +
                        ")");
     }
   }

@@ -236,7 +236,7 @@ network_handle fit_frame(const py::list& columns, const std::vector<std::string>
     }
     for (const auto& [node, entry] : report.nodes) {
       notes.push_back("'" + node + "' gets the " + args.transfer.strategy + " prior from '" + entry.prior_node +
-                      "' with w = " + detail::format_short(entry.weight));
+                      "' with w = " + text::format_short(entry.weight));
     }
   }
   return {std::move(fitted.network), std::nullopt, std::move(notes), std::move(fitted.statistics)};
@@ -335,7 +335,7 @@ py::dict prevent_plan(const network_handle& handle, const py::object& planned,
   const auto plan_values = assignment_of(network, planned);
   const auto movable = controllable ? *controllable : default_controllable(network, event);
   if (!(epsilon >= 0.0 && epsilon <= 1.0))
-    throw error("epsilon must lie in [0, 1], got " + detail::format_double(epsilon));
+    throw error("epsilon must lie in [0, 1], got " + text::format_double(epsilon));
   prevention_options options;
   options.epsilon = epsilon;
   options.metric = parse_distance(distance);
@@ -394,7 +394,7 @@ edge_pairs learn_frame(const py::list& columns, const learn_arguments& args) {
   auto& options = choice.pc;
   options.test = parse_ci_test(args.test);
   if (!(args.alpha > 0.0 && args.alpha < 1.0)) {
-    throw error("alpha must lie strictly between 0 and 1, got " + detail::format_double(args.alpha));
+    throw error("alpha must lie strictly between 0 and 1, got " + text::format_double(args.alpha));
   }
   options.alpha = args.alpha;
   options.max_conditioning = args.max_conditioning;
@@ -440,9 +440,9 @@ discrete_column with_model_states(const discrete_column& column, const variable&
     const auto& states = model.states();
     const auto it = std::find(states.begin(), states.end(), label);
     if (it == states.end()) {
-      throw data_error(
-          "column '" + column.name() + "' holds the value '" + label +
-          "', which is not a state of the network's variable (states: " + detail::list_for_message(states) + ")");
+      throw data_error("column '" + column.name() + "' holds the value '" + label +
+                       "', which is not a state of the network's variable (states: " + text::list_for_message(states) +
+                       ")");
     }
     map[s] = static_cast<std::uint32_t>(it - states.begin());
   }
@@ -622,6 +622,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__version__") = pgm::version;
   // The library's defaults, which the package's own default None stands for (as the program's).
   m.attr("default_ci_test") = std::string(to_string(pgm::pc_options{}.test));
+  m.attr("missing_policies") = pgm::known_missing_policies();
 
   py::class_<network_handle>(m, "Network")
       .def_property_readonly("variables", [](const network_handle& h) { return names_of(h.network.variables()); })

@@ -17,7 +17,7 @@
 namespace pgm::cli {
 
 std::vector<std::string> split_list(std::string_view text, const std::string& what) {
-  auto pieces = detail::split(text, ',');
+  auto pieces = text::split(text, ',');
   for (const auto& piece : pieces) {
     if (piece.empty()) throw error(what + " has an empty entry in '" + std::string(text) + "'");
   }
@@ -29,7 +29,7 @@ void require_extension(const std::filesystem::path& path, const std::vector<std:
   for (const auto& allowed : extensions) {
     if (extension == allowed) return;
   }
-  throw io_error("'" + path.string() + "': expected a file ending in " + detail::join(extensions, " or "));
+  throw io_error("'" + path.string() + "': expected a file ending in " + text::join(extensions, " or "));
 }
 
 void require_network_extension(const std::filesystem::path& path) { static_cast<void>(format_of(path)); }
@@ -56,8 +56,8 @@ void note_outside(const std::string& name, std::size_t outside, std::size_t rows
   if (outside == 0) return;
   const auto& edges = intervals.edges();
   note(std::to_string(outside) + " of " + std::to_string(rows) + " values of '" + name +
-       "' lie outside the edges' range [" + detail::format_short(edges.front()) + ", " +
-       detail::format_short(edges.back()) + "] and count in the outer bins");
+       "' lie outside the edges' range [" + text::format_short(edges.front()) + ", " +
+       text::format_short(edges.back()) + "] and count in the outer bins");
 }
 
 // A column with nearly as many states as rows is almost surely a raw quantity.
@@ -82,7 +82,7 @@ void note_states_spelled_as_missing(const std::vector<std::string>& columns, con
     }
     if (variables.empty()) continue;
     note("'" + token + "' is a state of the model's variable" + (variables.size() == 1 ? " " : "s ") +
-         detail::list_for_message(variables, 5) + ": read as that state in " +
+         text::list_for_message(variables, 5) + ": read as that state in " +
          (variables.size() == 1 ? "its column" : "their columns") +
          ", not as a missing value (--na names the texts read as missing)");
   }
@@ -101,7 +101,7 @@ void add_missing_options(CLI::App& cmd, missing_arguments& args, bool em) {
                  "The texts read as missing values, comma-separated; an empty entry (as in the default) is the "
                  "empty field")
       ->capture_default_str();
-  std::vector<std::string> policies{"error", "drop", "available"};
+  auto policies = known_missing_policies();
   if (em) policies.emplace_back("em");
   cmd.add_option("--missing", args.policy,
                  std::string("What a missing value does: error (naming its line and column), drop (leave out the rows "
@@ -116,9 +116,9 @@ void add_missing_options(CLI::App& cmd, missing_arguments& args, bool em) {
 
 missing_values missing_of(const missing_arguments& args) {
   missing_values missing;
-  missing.tokens = args.na.empty() ? std::vector<std::string>{""} : detail::split(args.na, ',');
+  missing.tokens = args.na.empty() ? std::vector<std::string>{""} : text::split(args.na, ',');
   // em keeps every missing value for EM to estimate.
-  missing.policy = missing_policy_named(args.policy == "em" ? "available" : args.policy);
+  missing.policy = parse_missing_policy(args.policy == "em" ? "available" : args.policy);
   return missing;
 }
 
@@ -186,7 +186,7 @@ std::ostream& summary_stream(const std::filesystem::path& output) {
   return same ? std::cerr : std::cout;
 }
 
-void note(const std::string& text) { std::cerr << "pgm: note: " << detail::printable(text) << '\n'; }
+void note(const std::string& text) { std::cerr << "pgm: note: " << text::printable(text) << '\n'; }
 
 bool stderr_is_terminal() { return ::isatty(STDERR_FILENO) != 0; }
 
@@ -198,7 +198,7 @@ CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi) {
         const auto [end, failure] = std::from_chars(text.data(), text.data() + text.size(), value);
         if (text.empty() || failure != std::errc() || end != text.data() + text.size()) {
           // Digits only: "-0", "+5", "1e3", "0x10" and "1,000" are refused rather than read otherwise.
-          return "expected a whole number from " + range + " (digits only), got " + detail::quoted_number(text);
+          return "expected a whole number from " + range + " (digits only), got " + text::quoted_number(text);
         }
         if (value < lo || value > hi) return "expected a whole number from " + range + ", got " + text;
         return {};
@@ -210,14 +210,14 @@ CLI::Validator non_negative_number() { return number_between(0, std::numeric_lim
 
 CLI::Validator number_between(double lo, double hi, bool lo_open, bool hi_open) {
   const bool unbounded = std::isinf(hi);
-  const std::string range = unbounded ? std::string(lo_open ? "> " : "≥ ") + detail::format_short(lo)
-                                      : std::string(lo_open ? "(" : "[") + detail::format_short(lo) + ", " +
-                                            detail::format_short(hi) + (hi_open ? ")" : "]");
+  const std::string range = unbounded ? std::string(lo_open ? "> " : "≥ ") + text::format_short(lo)
+                                      : std::string(lo_open ? "(" : "[") + text::format_short(lo) + ", " +
+                                            text::format_short(hi) + (hi_open ? ")" : "]");
   const std::string expected = unbounded ? "expected a finite number " + range : "expected a number in " + range;
   return CLI::Validator(
       [=](std::string& text) -> std::string {
-        const auto read = detail::parse_double(text);
-        if (!read || !std::isfinite(*read)) return expected + ", got " + detail::quoted_number(text);
+        const auto read = text::parse_double(text);
+        if (!read || !std::isfinite(*read)) return expected + ", got " + text::quoted_number(text);
         const double value = *read;
         const bool above_lo = lo_open ? value > lo : value >= lo;
         const bool below_hi = hi_open ? value < hi : value <= hi;

@@ -39,9 +39,9 @@ transfer_settings settings_of(const transfer_arguments& args) {
   if (args.w_prior == "auto") {
     settings.weight.reset();
   } else {
-    settings.weight = detail::parse_double(args.w_prior);
+    settings.weight = text::parse_double(args.w_prior);
     if (!settings.weight || !std::isfinite(*settings.weight) || *settings.weight < 0) {
-      throw error("--w-prior must be a number ≥ 0 or auto, got " + detail::quoted_number(args.w_prior));
+      throw error("--w-prior must be a number ≥ 0 or auto, got " + text::quoted_number(args.w_prior));
     }
   }
   return settings;

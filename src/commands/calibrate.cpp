@@ -42,7 +42,7 @@ std::string fixed(double value, int decimals) {
 }
 
 std::string interval(const sim::agreement_axis& axis, std::size_t third) {
-  return "[" + detail::format_short(axis.edge(third), 3) + ", " + detail::format_short(axis.edge(third + 1), 3) +
+  return "[" + text::format_short(axis.edge(third), 3) + ", " + text::format_short(axis.edge(third + 1), 3) +
          (third == 2 ? "]" : ")");
 }
 
@@ -121,7 +121,7 @@ void run_fit(const calibrate_arguments& args) {
   if (args.tasks.size() != 1) throw error("give one --task to calibrate (several only with --check)");
   if (!args.out.empty()) {
     require_extension(args.out, {".json"});
-    detail::check_output_path(args.out);
+    pgm::check_output_path(args.out);
   }
   const auto task = sim::load_task(args.tasks.front(), task_directories(args));
   sim::calibration_options options;
@@ -133,7 +133,7 @@ void run_fit(const calibrate_arguments& args) {
   options.progress = [&bar, rows = args.rows](std::size_t done) { bar.update(done, rows); };
   const auto result = sim::calibrate(task, options);
   bar.finish();
-  const auto text = sim::calibrated_task_text(detail::read_file(task.source), result);
+  const auto text = sim::calibrated_task_text(pgm::read_file(task.source), result);
   // The summary goes to stdout with --out, else to stderr so that stdout is the task file.
   std::ostringstream summary;
   summary << "calibrated " << task.name << " on " << result.rows << " " << result.reference << " experiments (seed "
@@ -146,13 +146,13 @@ void run_fit(const calibrate_arguments& args) {
   for (const auto& c : result.constants) {
     auto name = "physics/analytic/" + c.name;
     name.resize(std::max<std::size_t>(name.size(), 40), ' ');
-    summary << "  " << name << detail::format_short(c.before, 4) << " -> " << detail::format_short(c.after, 4) << '\n';
+    summary << "  " << name << text::format_short(c.before, 4) << " -> " << text::format_short(c.after, 4) << '\n';
   }
   if (args.out.empty()) {
     std::cerr << summary.str();
     std::cout << text;
   } else {
-    detail::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
+    pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
     std::cout << summary.str() << "wrote " << args.out << '\n';
   }
 }

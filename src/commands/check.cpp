@@ -30,11 +30,11 @@ struct check_arguments {
 };
 
 std::string independence_text(const implied_independence& t) {
-  return t.x + " _||_ " + t.y + (t.given.empty() ? "" : " | " + detail::join(t.given));
+  return t.x + " _||_ " + t.y + (t.given.empty() ? "" : " | " + text::join(t.given));
 }
 
 void run_check(const check_arguments& args) {
-  if (!args.out.empty()) detail::check_output_path(args.out);
+  if (!args.out.empty()) pgm::check_output_path(args.out);
   const auto structure = read_model_file(args.model).structure;
   std::vector<std::string> columns;
   for (const auto& v : structure.variables()) columns.push_back(v.name());
@@ -50,25 +50,25 @@ void run_check(const check_arguments& args) {
     for (const auto& t : result.tests) {
       if (!args.all && t.result.independent(result.alpha)) continue;
       out << detail::csv_escape(t.x, ',') << ',' << detail::csv_escape(t.y, ',') << ','
-          << detail::csv_escape(detail::join(t.given, ";"), ',') << ',' << detail::format_double(t.result.statistic)
-          << ',' << detail::format_double(t.result.df) << ',' << detail::format_double(t.result.p_value) << ','
+          << detail::csv_escape(text::join(t.given, ";"), ',') << ',' << text::format_double(t.result.statistic) << ','
+          << text::format_double(t.result.df) << ',' << text::format_double(t.result.p_value) << ','
           << (t.result.independent(result.alpha) ? "no" : "yes") << '\n';
     }
   } else {
     out << "Tested the " << result.tests.size() << " independences the DAG implies on " << data.rows() << " rows ("
-        << args.test << ", alpha " << detail::format_short(result.alpha) << "): " << result.rejected() << " rejected\n";
+        << args.test << ", alpha " << text::format_short(result.alpha) << "): " << result.rejected() << " rejected\n";
     for (const auto& t : result.tests) {
       const bool rejected = !t.result.independent(result.alpha);
       if (!args.all && !rejected) continue;
       out << (rejected ? "  rejected  " : "  kept      ") << independence_text(t) << ": statistic "
-          << detail::format_short(t.result.statistic) << ", df " << detail::format_short(t.result.df) << ", p "
-          << detail::format_short(t.result.p_value) << '\n';
+          << text::format_short(t.result.statistic) << ", df " << text::format_short(t.result.df) << ", p "
+          << text::format_short(t.result.p_value) << '\n';
     }
   }
   if (args.out.empty()) {
     std::cout << out.str();
   } else {
-    detail::write_file_atomically(args.out, [&](std::ostream& file) { file << out.str(); });
+    pgm::write_file_atomically(args.out, [&](std::ostream& file) { file << out.str(); });
   }
 }
 

@@ -31,7 +31,7 @@ void run_convert(const convert_arguments& args) {
   } else {
     to = format_of(args.out);  // fails, listing the extensions, before anything is read
   }
-  detail::check_output_path(args.out);
+  pgm::check_output_path(args.out);
   const auto model = read_model_file(args.in);
   const auto network = model.network();
   // The counts a network is updated from (pgm fit --keep-counts) go along: in JSON under

@@ -16,14 +16,14 @@ decision_model read_decision_model(const std::string& path, const std::string& s
 std::string describe_state(const variable& v, std::size_t state) {
   std::string text = v.states()[state];
   if (v.has_intervals()) {
-    text += " [" + detail::format_short(v.edges()[state]) + ", " + detail::format_short(v.edges()[state + 1]) + ")";
+    text += " [" + text::format_short(v.edges()[state]) + ", " + text::format_short(v.edges()[state + 1]) + ")";
     if (!v.tags().unit.empty()) text += " " + v.tags().unit;
   }
   return text;
 }
 
 std::string with_unit(const variable& v, double value) {
-  auto text = detail::format_short(value);
+  auto text = text::format_short(value);
   if (!v.tags().unit.empty()) text += " " + v.tags().unit;
   return text;
 }

@@ -29,8 +29,8 @@ struct discretize_arguments {
 std::string describe(const variable& v) {
   std::string text;
   for (std::size_t i = 0; i + 1 < v.edges().size(); ++i) {
-    text += (i ? ", " : "") + std::string("[") + detail::format_short(v.edges()[i]) + ", " +
-            detail::format_short(v.edges()[i + 1]) + (i + 2 == v.edges().size() ? "]" : ")");
+    text += (i ? ", " : "") + std::string("[") + text::format_short(v.edges()[i]) + ", " +
+            text::format_short(v.edges()[i + 1]) + (i + 2 == v.edges().size() ? "]" : ")");
   }
   return text;
 }
@@ -41,8 +41,8 @@ void run_discretize(const discretize_arguments& args) {
   if (args.method == "edges" && args.edges_in.empty()) throw error("--method edges needs --edges-in FILE");
   if (args.method != "edges" && !args.edges_in.empty()) throw error("--edges-in applies to --method edges");
   // Both outputs are checked before either is written, and neither may overwrite the input.
-  detail::check_output_path(args.out);
-  if (!args.edges_out.empty()) detail::check_output_path(args.edges_out);
+  pgm::check_output_path(args.out);
+  if (!args.edges_out.empty()) pgm::check_output_path(args.edges_out);
   for (const auto* output : {&args.out, &args.edges_out}) {
     std::error_code ec;
     if (!output->empty() && std::filesystem::equivalent(*output, args.in, ec)) {
@@ -78,9 +78,9 @@ void run_discretize(const discretize_arguments& args) {
   std::ostringstream csv_text;
   write_csv(binned, csv_text, ',', options.missing.tokens.front());  // missing stays missing
   const auto edges_text = to_json(fitted).dump(2) + "\n";
-  detail::write_file_atomically(args.out, [&](std::ostream& out) { out << csv_text.str(); });
+  pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << csv_text.str(); });
   if (!args.edges_out.empty()) {
-    detail::write_file_atomically(args.edges_out, [&](std::ostream& out) { out << edges_text; });
+    pgm::write_file_atomically(args.edges_out, [&](std::ostream& out) { out << edges_text; });
   }
   for (const auto& [name, v] : fitted) {
     summary_stream(args.out) << name << ": " << v.cardinality() << " bins " << describe(v) << '\n';

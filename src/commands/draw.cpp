@@ -69,8 +69,8 @@ std::string render_with_dot(const std::string& text, const std::string& format) 
                        " 2> " + detail::shell_quoted(messages);
   const int status = std::system(command.c_str());
   std::string bytes, problem;
-  if (status == 0) bytes = detail::read_file(output);
-  if (std::filesystem::exists(messages)) problem = detail::read_file(messages);
+  if (status == 0) bytes = pgm::read_file(output);
+  if (std::filesystem::exists(messages)) problem = pgm::read_file(messages);
   for (const auto& file : {input, output, messages}) std::filesystem::remove(file);
   if (status != 0 || bytes.empty()) throw io_error("Graphviz's dot could not draw the network: " + problem);
   return bytes;
@@ -82,7 +82,7 @@ void run_draw(const draw_arguments& args) {
   if (extension != ".svg" && extension != ".png" && extension != ".pdf" && extension != ".dot") {
     throw error("--out '" + args.out + "': expected a .svg, .png, .pdf or .dot file");
   }
-  detail::check_output_path(out);
+  pgm::check_output_path(out);
   const auto model = read_model_file(args.model);
   dot_options options;
   if (!args.success.empty()) {
@@ -90,11 +90,11 @@ void run_draw(const draw_arguments& args) {
   } else if (const auto event = read_success_metadata(args.model)) {
     options.success.push_back(event->substr(0, event->find('=')));
   }
-  if (!args.controllable.empty()) options.controllable = detail::split(args.controllable, ',');
+  if (!args.controllable.empty()) options.controllable = text::split(args.controllable, ',');
   add_learned(args.model, options);
   const auto text = to_dot(model.structure, options);
   const auto bytes = extension == ".dot" ? text : render_with_dot(text, extension.substr(1));
-  detail::write_file_atomically(out, [&](std::ostream& stream) { stream << bytes; });
+  pgm::write_file_atomically(out, [&](std::ostream& stream) { stream << bytes; });
   summary_stream(out) << "drew " << model.structure.size() << " variables and " << model.structure.edges().size()
                       << " edges -> " << args.out << '\n';
 }

@@ -26,8 +26,8 @@ void run_dsep(const dsep_arguments& args) {
   const auto z = args.given.empty() ? std::vector<std::string>{} : split_list(args.given, "--given");
   const auto structure = read_model_file(args.model).structure;
   const bool separated = d_separated(structure, x, y, z);
-  std::cout << "{" << detail::join(x) << "} and {" << detail::join(y) << "} are "
-            << (separated ? "d-separated" : "d-connected") << " given {" << detail::join(z) << "}\n";
+  std::cout << "{" << text::join(x) << "} and {" << text::join(y) << "} are "
+            << (separated ? "d-separated" : "d-connected") << " given {" << text::join(z) << "}\n";
 }
 
 }  // namespace

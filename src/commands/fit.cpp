@@ -54,7 +54,7 @@ latent_variable latent_of(const std::string& text) {
     return error("--latent '" + text + "': expected NAME:COUNT (e.g. H:3), NAME=STATE,STATE,... or NAME");
   };
   if (const auto eq = text.find('='); eq != std::string::npos) {
-    auto states = detail::split(text.substr(eq + 1), ',');
+    auto states = text::split(text.substr(eq + 1), ',');
     if (eq == 0 || states.empty()) throw bad();
     return {text.substr(0, eq), std::move(states)};
   }
@@ -83,8 +83,8 @@ em_options em_options_of(const fit_arguments& args) {
   if (args.verbose) {
     options.on_step = [](const em_step& step) {
       note("EM start " + std::to_string(step.restart + 1) + ", iteration " + std::to_string(step.iteration) +
-           ": log-likelihood " + detail::format_double(step.log_likelihood) +
-           (step.objective != step.log_likelihood ? ", objective " + detail::format_double(step.objective) : ""));
+           ": log-likelihood " + text::format_double(step.log_likelihood) +
+           (step.objective != step.log_likelihood ? ", objective " + text::format_double(step.objective) : ""));
     };
   }
   return options;
@@ -98,7 +98,7 @@ void note_transfer(const transfer_report& report, const std::string& strategy) {
   }
   for (const auto& [node, entry] : report.nodes) {
     note("'" + node + "' gets the " + strategy + " prior from '" + entry.prior_node +
-         "' with w = " + detail::format_short(entry.weight));
+         "' with w = " + text::format_short(entry.weight));
   }
 }
 

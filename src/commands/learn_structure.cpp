@@ -60,7 +60,7 @@ struct learn_structure_arguments {
 std::string format_set(const cpdag& graph, const std::vector<variable_id>& given) {
   std::vector<std::string> names;
   for (auto v : given) names.push_back(graph.name(v));
-  return "{" + detail::join(names) + "}";
+  return "{" + text::join(names) + "}";
 }
 
 void write_searched(const learn_structure_arguments& args, const structure_choice& choice, const dataset& data,
@@ -72,11 +72,11 @@ void write_searched(const learn_structure_arguments& args, const structure_choic
           : choice.algorithm == structure_algorithm::mmhc ? "hybrid (PC-stable skeleton, then hill climbing)"
                                                           : "hill climbing")
       << " on " << data.rows() << " rows, " << data.size() << " variables: " << to_string(search.score.type);
-  if (search.score.type == score_type::bdeu) out << " (iss " << detail::format_short(search.score.iss) << ")";
-  out << " = " << detail::format_double(result.score - result.prior_bonus);
+  if (search.score.type == score_type::bdeu) out << " (iss " << text::format_short(search.score.iss) << ")";
+  out << " = " << text::format_double(result.score - result.prior_bonus);
   if (!search.favoured.empty()) {
-    out << " + structure prior " << detail::format_double(result.prior_bonus) << " = "
-        << detail::format_double(result.score);
+    out << " + structure prior " << text::format_double(result.prior_bonus) << " = "
+        << text::format_double(result.score);
   }
   out << " after " << result.moves << " moves";
   if (result.restarts > 0) out << " over " << result.restarts << " restarts";
@@ -110,11 +110,11 @@ void write_bootstrap(const learn_structure_arguments& args, const structure_choi
   out << "arc strengths (adjacent in a fraction of the resamples; direction: the fraction of those with the arc):\n";
   for (const auto& a : result.arcs) {
     if (a.strength > 0 && a.direction > 0) {
-      out << "  " << a.from << " -> " << a.to << "  strength " << detail::format_short(a.strength, 4) << "  direction "
-          << detail::format_short(a.direction, 4) << '\n';
+      out << "  " << a.from << " -> " << a.to << "  strength " << text::format_short(a.strength, 4) << "  direction "
+          << text::format_short(a.direction, 4) << '\n';
     }
   }
-  out << "averaged network at threshold " << detail::format_short(result.threshold, 4)
+  out << "averaged network at threshold " << text::format_short(result.threshold, 4)
       << (args.threshold ? "" : " (bnlearn's L1 rule)") << " (" << result.averaged.size() << " edges):\n";
   for (const auto& e : result.averaged) out << "  " << e.from << " -> " << e.to << '\n';
 
@@ -179,7 +179,7 @@ void run_learn_structure(const learn_structure_arguments& args) {
     std::vector<std::string> shown;
     for (const auto& e : search.favoured) shown.push_back(e.from + "->" + e.to);
     note("the structure prior favours " + std::to_string(shown.size()) + " edge(s) by " +
-         detail::format_short(args.prior_weight) + " each" + (shown.empty() ? "" : ": " + detail::join(shown)));
+         text::format_short(args.prior_weight) + " each" + (shown.empty() ? "" : ": " + text::join(shown)));
   } else if (!args.map.empty()) {
     throw error("--map applies with --prior-model");
   }
@@ -198,11 +198,11 @@ void run_learn_structure(const learn_structure_arguments& args) {
 
   std::ostringstream out;
   out << "PC-stable on " << data.rows() << " rows, " << data.size() << " variables: " << result.tests << " tests ("
-      << to_string(options.test) << ", alpha " << detail::format_short(options.alpha) << ", conditioning sets up to "
+      << to_string(options.test) << ", alpha " << text::format_short(options.alpha) << ", conditioning sets up to "
       << options.max_conditioning;
   if (options.correction != continuity_correction::none) out << ", " << to_string(options.correction) << " correction";
   if (options.min_rows_per_cell > 0) {
-    out << ", independent below " << detail::format_short(options.min_rows_per_cell) << " rows per cell";
+    out << ", independent below " << text::format_short(options.min_rows_per_cell) << " rows per cell";
   }
   out << ")\n";
   const auto directed = graph.directed_edges();
@@ -221,12 +221,12 @@ void run_learn_structure(const learn_structure_arguments& args) {
       }
       if (s.test.too_few_rows) {
         out << "independent given " << format_set(graph, s.given) << " (too few rows: " << s.test.rows << " < "
-            << detail::format_short(options.min_rows_per_cell) << " per cell)\n";
+            << text::format_short(options.min_rows_per_cell) << " per cell)\n";
         continue;
       }
       out << "independent given " << format_set(graph, s.given) << " (" << to_string(options.test) << " = "
-          << detail::format_short(s.test.statistic, 5) << ", df = " << detail::format_short(s.test.df)
-          << ", p = " << detail::format_short(s.test.p_value, 4) << ")\n";
+          << text::format_short(s.test.statistic, 5) << ", df = " << text::format_short(s.test.df)
+          << ", p = " << text::format_short(s.test.p_value, 4) << ")\n";
     }
   }
   for (const auto& conflict : result.conflicts) note("orientation conflict: " + conflict);

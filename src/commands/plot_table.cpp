@@ -44,8 +44,8 @@ axis axis_of(const variable& v) {
   if (v.has_intervals()) {
     result.edges = v.edges();
     for (std::size_t e = 0; e < result.edges.size(); ++e) {
-      tics << (e ? ", " : "") << detail::gnuplot_quoted(detail::format_short(result.edges[e])) << ' '
-           << detail::format_double(result.edges[e]);
+      tics << (e ? ", " : "") << detail::gnuplot_quoted(text::format_short(result.edges[e])) << ' '
+           << text::format_double(result.edges[e]);
     }
   } else {
     for (std::size_t s = 0; s <= v.cardinality(); ++s) result.edges.push_back(static_cast<double>(s));
@@ -63,7 +63,7 @@ std::string title_of(const table_slice& slice, const table_slice_request& reques
                       ", " + slice.y->name();
   for (const auto& [name, value] : request.given) {
     title += ", " + name + " = " +
-             (std::holds_alternative<double>(value) ? detail::format_short(std::get<double>(value))
+             (std::holds_alternative<double>(value) ? text::format_short(std::get<double>(value))
                                                     : std::get<std::string>(value));
   }
   return title + ")" + (request.average ? ", other parents averaged" : "");
@@ -79,8 +79,8 @@ std::string heat_map_script(const table_slice& slice, const table_slice_request&
   g << "set title " << detail::gnuplot_quoted(title_of(slice, request)) << " noenhanced\n";
   g << "set xlabel " << detail::gnuplot_quoted(slice.x->name()) << " noenhanced\nset ylabel "
     << detail::gnuplot_quoted(slice.y->name()) << " noenhanced\n";
-  g << "set xrange [" << detail::format_double(ax.edges.front()) << ':' << detail::format_double(ax.edges.back())
-    << "]\nset yrange [" << detail::format_double(ay.edges.front()) << ':' << detail::format_double(ay.edges.back())
+  g << "set xrange [" << text::format_double(ax.edges.front()) << ':' << text::format_double(ax.edges.back())
+    << "]\nset yrange [" << text::format_double(ay.edges.front()) << ':' << text::format_double(ay.edges.back())
     << "]\n";
   g << "set xtics " << ax.tics << " out nomirror\nset ytics " << ay.tics << " out nomirror\n";
   g << "set cbrange [0:1]\nset cblabel "
@@ -94,10 +94,10 @@ std::string heat_map_script(const table_slice& slice, const table_slice_request&
     for (std::size_t i = 0; i < slice.x->cardinality(); ++i) {
       const double x0 = ax.edges[i], x1 = ax.edges[i + 1], y0 = ay.edges[j], y1 = ay.edges[j + 1];
       const double p = slice.at(i, j);
-      g << detail::format_double(0.5 * (x0 + x1)) << ' ' << detail::format_double(0.5 * (y0 + y1)) << ' '
-        << detail::format_double(x0) << ' ' << detail::format_double(x1) << ' ' << detail::format_double(y0) << ' '
-        << detail::format_double(y1) << ' ' << detail::format_double(p) << ' '
-        << (slice.rows ? detail::format_short((*slice.rows)[j * slice.x->cardinality() + i]) : "0") << '\n';
+      g << text::format_double(0.5 * (x0 + x1)) << ' ' << text::format_double(0.5 * (y0 + y1)) << ' '
+        << text::format_double(x0) << ' ' << text::format_double(x1) << ' ' << text::format_double(y0) << ' '
+        << text::format_double(y1) << ' ' << text::format_double(p) << ' '
+        << (slice.rows ? text::format_short((*slice.rows)[j * slice.x->cardinality() + i]) : "0") << '\n';
     }
   }
   g << "EOD\n";
@@ -117,7 +117,7 @@ void run_plot_table(const plot_table_arguments& args) {
   if (extension != ".png" && extension != ".svg" && extension != ".gp") {
     throw error("--out '" + args.out + "': expected a .png or .svg picture, or .gp for the gnuplot script");
   }
-  detail::check_output_path(out);
+  pgm::check_output_path(out);
   const auto model = read_model_file(args.model);
   const auto network = model.network();
   table_slice_request request{args.node, args.x, args.y, {}, args.average, std::nullopt};
@@ -133,7 +133,7 @@ void run_plot_table(const plot_table_arguments& args) {
   const auto slice = slice_table(network, request, args.counts ? &*model.statistics : nullptr);
   if (extension == ".gp") {
     const auto picture = std::filesystem::path(out).replace_extension(".png");
-    detail::write_file_atomically(
+    pgm::write_file_atomically(
         out, [&](std::ostream& stream) { stream << heat_map_script(slice, request, "pngcairo", picture); });
   } else {
     if (!gnuplot_available()) {
@@ -146,7 +146,7 @@ void run_plot_table(const plot_table_arguments& args) {
     const auto stem = out.parent_path() / (".pgm-plot-" + std::to_string(std::random_device{}()));
     const auto picture = stem.string() + extension, script = stem.string() + ".gp";
     const auto terminal = extension == ".png" ? "pngcairo" : "svg";
-    detail::write_file_atomically(
+    pgm::write_file_atomically(
         script, [&](std::ostream& stream) { stream << heat_map_script(slice, request, terminal, picture); });
     const bool drawn = render_gnuplot(script);
     std::filesystem::remove(script);

@@ -34,7 +34,7 @@ void run_predict(const predict_arguments& args) {
   for (const auto& name : unassigned_parents(model.network, model.success, planned)) {
     std::cout << "  " << name << " summed out (not assigned)\n";
   }
-  std::cout << "predicted success probability: " << detail::format_short(p) << '\n';
+  std::cout << "predicted success probability: " << text::format_short(p) << '\n';
 }
 
 }  // namespace

@@ -31,7 +31,7 @@ void run_prevent(const prevent_arguments& args) {
   if (!args.controllable) {
     controllable = default_controllable(network, model.success);
     note("no --controllable given: every parent of '" + model.success.variable + "' may move (" +
-         detail::join(controllable) + ")");
+         text::join(controllable) + ")");
   } else {
     if (!args.controllable->empty()) controllable = split_list(*args.controllable, "--controllable");
   }
@@ -42,16 +42,15 @@ void run_prevent(const prevent_arguments& args) {
                                     {.marginalize_missing = args.decision.marginalize});
   const auto& why = plan.why;
   std::cout << "success: " << why.success_variable << "=" << why.success_state << '\n';
-  std::cout << "predicted success probability: " << detail::format_short(why.predicted) << '\n';
+  std::cout << "predicted success probability: " << text::format_short(why.predicted) << '\n';
   if (!why.failure_predicted()) {
-    std::cout << "no failure predicted (not below epsilon " << detail::format_short(why.epsilon)
-              << "); keep the plan\n";
+    std::cout << "no failure predicted (not below epsilon " << text::format_short(why.epsilon) << "); keep the plan\n";
     return;
   }
-  std::cout << "failure predicted (below epsilon " << detail::format_short(why.epsilon) << ")\n";
+  std::cout << "failure predicted (below epsilon " << text::format_short(why.epsilon) << ")\n";
   const auto responsible = why.responsible();
   if (responsible.empty()) {
-    std::cout << "explanation: no change of the controllable variables (" << detail::join(controllable)
+    std::cout << "explanation: no change of the controllable variables (" << text::join(controllable)
               << ") predicts a higher success\n";
     return;
   }
@@ -59,7 +58,7 @@ void run_prevent(const prevent_arguments& args) {
             << (why.target_succeeds() ? "the smallest change predicted to succeed"
                                       : "no change reaches epsilon; the best one")
             << " (" << why.steps << " bin step" << (why.steps == 1 ? "" : "s");
-  if (why.distance_units) std::cout << ", distance " << detail::format_short(*why.distance_units);
+  if (why.distance_units) std::cout << ", distance " << text::format_short(*why.distance_units);
   std::cout << ")\n";
   for (const auto& c : responsible) {
     const auto& v = network.at(c.variable);
@@ -81,7 +80,7 @@ void run_prevent(const prevent_arguments& args) {
     }
     std::cout << (c.moves() ? "" : " (unchanged)") << '\n';
   }
-  std::cout << "predicted success after prevention: " << detail::format_short(why.target_predicted) << '\n';
+  std::cout << "predicted success after prevention: " << text::format_short(why.target_predicted) << '\n';
 }
 
 }  // namespace

@@ -72,7 +72,7 @@ class engines {
 /// Answers the --queries file into `out`, all of it or (on the first failure) nothing.
 void answer_batch(const query_arguments& args, const bayesian_network& network, std::ostream& out,
                   const posterior_table_options& table) {
-  const auto text = detail::read_file(args.queries);
+  const auto text = pgm::read_file(args.queries);
   const auto requests = parse_query_batch(text, args.queries);
   engines made(network, options_of(args));
   std::ostringstream buffer;
@@ -120,7 +120,7 @@ void run_query(const query_arguments& args) {
   const auto soft = parse_soft_evidence(args.soft);
   const auto set = parse_intervention(args.intervene);
   const auto variables = args.query ? parse_query_variables(*args.query) : std::vector<std::string>{};
-  if (!args.out.empty()) detail::check_output_path(args.out);
+  if (!args.out.empty()) pgm::check_output_path(args.out);
   const auto network = read_network_file(args.model);
 
   const auto write = [&](std::ostream& out) {
@@ -146,7 +146,7 @@ void run_query(const query_arguments& args) {
   if (args.out.empty()) {
     std::cout << buffer.str();
   } else {
-    detail::write_file_atomically(args.out, [&](std::ostream& out) { out << buffer.str(); });
+    pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << buffer.str(); });
   }
 }
 

@@ -57,21 +57,21 @@ std::string first_difference(const std::string& committed, const std::string& ge
 }
 
 void run_report(const report_arguments& args) {
-  if (!args.out.empty() && !args.check) detail::check_output_path(args.out);
+  if (!args.out.empty() && !args.check) pgm::check_output_path(args.out);
   std::vector<named_summary> summaries;
   for (const auto& s : args.summaries) summaries.push_back(read_named_summary(s));
-  const auto text = render_report_template(detail::read_file(args.template_file), args.template_file, summaries);
+  const auto text = render_report_template(pgm::read_file(args.template_file), args.template_file, summaries);
   if (args.out.empty()) {
     std::cout << text;
   } else if (args.check) {
-    const auto committed = detail::read_file(args.out);
+    const auto committed = pgm::read_file(args.out);
     if (committed != text) {
       throw error("'" + args.out + "' is out of date with its summaries: " + first_difference(committed, text) +
                   "; run the same command without --check to regenerate it");
     }
     std::cout << args.out << " matches " << args.template_file << " and its summaries\n";
   } else {
-    detail::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
+    pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
     summary_stream(args.out) << args.template_file << " -> " << args.out << '\n';
   }
 }

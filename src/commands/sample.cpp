@@ -24,7 +24,7 @@ struct sample_arguments {
 void run_sample(const sample_arguments& args) {
   const auto network = read_network_file(args.model);
   const auto data = sample(network, args.rows, args.seed);
-  detail::write_file_atomically(args.out, [&](std::ostream& file) { write_csv(data, file); });
+  pgm::write_file_atomically(args.out, [&](std::ostream& file) { write_csv(data, file); });
 }
 
 }  // namespace

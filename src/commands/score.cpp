@@ -40,13 +40,13 @@ void run_score(const score_arguments& args) {
   for (const auto& v : structure.variables()) width = std::max(width, v.name().size());
   std::ostringstream out;
   out << to_string(choice.type)
-      << (choice.type == score_type::bdeu ? " (iss " + detail::format_short(args.iss) + ")" : "") << " of "
-      << args.model << " on " << data.rows() << " rows: " << detail::format_double(result.total) << '\n';
+      << (choice.type == score_type::bdeu ? " (iss " + text::format_short(args.iss) + ")" : "") << " of " << args.model
+      << " on " << data.rows() << " rows: " << text::format_double(result.total) << '\n';
   out << "  " << std::left << std::setw(static_cast<int>(width)) << "node"
       << "  term\n";
   for (std::size_t i = 0; i < structure.size(); ++i) {
     out << "  " << std::left << std::setw(static_cast<int>(width)) << structure.variables()[i].name() << "  "
-        << detail::format_double(result.nodes[i]) << '\n';
+        << text::format_double(result.nodes[i]) << '\n';
   }
   std::cout << out.str();
 }

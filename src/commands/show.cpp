@@ -24,7 +24,7 @@ struct show_arguments {
 std::string state_text(const variable& v, std::size_t s) {
   std::string text = v.states()[s];
   if (v.has_intervals()) {
-    text += " [" + detail::format_short(v.edges()[s]) + ", " + detail::format_short(v.edges()[s + 1]) +
+    text += " [" + text::format_short(v.edges()[s]) + ", " + text::format_short(v.edges()[s + 1]) +
             (s + 1 == v.cardinality() ? "]" : ")");
   }
   return text;
@@ -39,7 +39,7 @@ void print_variable(const variable& v, std::ostream& out) {
     if (!tags.quantity.empty()) parts.push_back("quantity " + tags.quantity);
     if (!tags.unit.empty()) parts.push_back("unit " + tags.unit);
     if (!tags.role.empty()) parts.push_back("role " + tags.role);
-    out << "  (" << detail::join(parts) << ")";
+    out << "  (" << text::join(parts) << ")";
   }
   out << '\n';
 }

@@ -75,11 +75,11 @@ void run_simulate(const simulate_arguments& args) {
     run_blocks(nullptr);
     return;
   }
-  detail::write_file_atomically(args.out, [&](std::ostream& out) { run_blocks(&out); });
+  pgm::write_file_atomically(args.out, [&](std::ostream& out) { run_blocks(&out); });
   bar.finish();
   summary_stream(args.out) << "simulated " << args.rows << " experiments of " << task.name << " (" << args.backend
                            << ", seed " << args.seed << "): " << task.success << " = 1 in "
-                           << detail::format_short(static_cast<double>(successes) / static_cast<double>(args.rows), 4)
+                           << text::format_short(static_cast<double>(successes) / static_cast<double>(args.rows), 4)
                            << " -> " << args.out << '\n';
   if (task.variant == "reality") note("'" + task.name + "' is a stand-in for the real robot, not real data");
 }
@@ -94,11 +94,11 @@ void add_simulate_command(CLI::App& app) {
   // The back-ends this build has registered (analytic always; bullet and users' when linked).
   cmd->add_option(
          "--backend", args->backend,
-         "Simulator back-end: " + detail::join(sim::backends()) + " (analytic: closed-form; bullet: rigid bodies)")
+         "Simulator back-end: " + text::join(sim::backends()) + " (analytic: closed-form; bullet: rigid bodies)")
       ->capture_default_str();
   cmd->add_option("--variant", args->variant,
                   "sim, or reality: the stacking tasks' stand-in for the real robot (not real data)")
-      ->check(CLI::IsMember({"sim", "reality"}))
+      ->check(CLI::IsMember(sim::known_task_variants()))
       ->capture_default_str();
   cmd->add_option("--rows", args->rows,
                   "Number of experiments (written as they are made: memory does not grow with them)")

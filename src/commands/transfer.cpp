@@ -127,7 +127,7 @@ void run_correspond(const correspond_arguments& args) {
     std::ostringstream score;
     score.precision(2);
     score << std::fixed << c.score;
-    std::cout << "  " << score.str() << "  " << c.target << " ~ " << c.prior << "  (" << detail::join(c.reasons, "; ")
+    std::cout << "  " << score.str() << "  " << c.target << " ~ " << c.prior << "  (" << text::join(c.reasons, "; ")
               << ")\n";
   }
   std::cout << "proposal: --map \"" << to_string(proposal) << "\"\n";

@@ -42,7 +42,7 @@ void run_update(const update_arguments& args) {
   note_counts(updated_model.counts, {});
   write_network(updated_model.network, args.out, {.statistics = &*updated_model.statistics});
   summary_stream(args.out) << "updated " << updated_model.network.size() << " tables with " << updated_model.counts.rows
-                           << " new rows (" << detail::format_double(updated_model.statistics->rows) << " rows in all"
+                           << " new rows (" << text::format_double(updated_model.statistics->rows) << " rows in all"
                            << (args.decay < 1.0 ? ", old rows weighted by the decay" : "") << ") -> " << args.out
                            << '\n';
 }

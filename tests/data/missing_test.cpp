@@ -58,9 +58,10 @@ TEST(missing_test, the_tokens_match_exactly) {
   EXPECT_TRUE(dash("-"));
   EXPECT_FALSE(dash("NA"));
   EXPECT_FALSE(dash.empty_is_missing());
-  EXPECT_EQ(missing_policy_named("available"), missing_policy::available);
-  EXPECT_THAT([] { static_cast<void>(missing_policy_named("pairwise")); },
-              ThrowsMessage<std::invalid_argument>(HasSubstr("expected error, drop or available")));
+  for (const auto policy : missing_policies) EXPECT_EQ(parse_missing_policy(to_string(policy)), policy);
+  EXPECT_THAT([] { static_cast<void>(parse_missing_policy("pairwise")); },
+              ThrowsMessage<unknown_name>(
+                  HasSubstr("unknown missing-value policy 'pairwise' (known: error, drop, available)")));
 }
 
 TEST(missing_test, by_default_the_first_missing_value_is_an_error_naming_its_place) {

@@ -101,6 +101,8 @@ TEST(task_test, errors_name_the_file_and_the_key) {
               HasSubstr("bad.json: /variables/0/distribution/sd: expected a positive number"));
   EXPECT_THAT(error_of(with(good, "\"type\": \"normal\"", "\"type\": \"gamma\"")),
               HasSubstr("/variables/0/distribution/type: expected \"normal\""));
+  EXPECT_THAT(error_of(with(good, "\"variant\": \"sim\"", "\"variant\": \"robot\"")),
+              HasSubstr("bad.json: /variant: expected one of sim, reality"));
   EXPECT_THAT(error_of(with(good, "\"format\": \"pgm-task\",", "")),
               HasSubstr("bad.json: /: the key 'format' is missing"));
   EXPECT_THAT(error_of(with(good, "\"xOff1 -> onTop1\"", "\"xOff1 -> nothing\"")),

@@ -10,12 +10,14 @@
 /// independence test) when any of its variables is missing there: available-case analysis, as
 /// pgmpy counts.
 
+#include <array>
 #include <cstdint>
 #include <limits>
-#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "pgm/core/unknown_name.hpp"
 
 namespace pgm {
 
@@ -33,13 +35,27 @@ struct missing_values {
   missing_policy policy = missing_policy::error;
 };
 
-/// The policy named `name` ("error", "drop", "available"); throws std::invalid_argument otherwise.
-[[nodiscard]] inline missing_policy missing_policy_named(std::string_view name) {
-  if (name == "error") return missing_policy::error;
-  if (name == "drop") return missing_policy::drop;
-  if (name == "available") return missing_policy::available;
-  throw std::invalid_argument("unknown missing-value policy '" + std::string(name) +
-                              "' (expected error, drop or available)");
+/// "error", "drop" or "available", as the command line, Python and messages spell the policy.
+[[nodiscard]] constexpr std::string_view to_string(missing_policy policy) noexcept {
+  switch (policy) {
+    case missing_policy::drop:
+      return "drop";
+    case missing_policy::available:
+      return "available";
+    case missing_policy::error:
+      break;
+  }
+  return "error";
+}
+
+inline constexpr std::array missing_policies{missing_policy::error, missing_policy::drop, missing_policy::available};
+
+/// The policies' names, for parsing, messages and the command line's allowed values.
+[[nodiscard]] inline std::vector<std::string> known_missing_policies() { return names_of(missing_policies); }
+
+/// Parses "error", "drop" or "available"; throws unknown_name otherwise.
+[[nodiscard]] inline missing_policy parse_missing_policy(std::string_view text) {
+  return parse_choice("missing-value policy", text, missing_policies);
 }
 
 /// The code that marks a missing value in a discrete column stored as `Code`.

@@ -102,6 +102,10 @@ struct dropping_physics {
 
 using physics_parameters = std::variant<stacking_physics, dropping_physics>;
 
+/// The variants of a task: "sim", and "reality", the stacking tasks' stand-in for the real
+/// robot (not real data). Task files, `pgm simulate --variant` and Python check against them.
+[[nodiscard]] inline std::vector<std::string> known_task_variants() { return {"sim", "reality"}; }
+
 struct task_definition {
   std::string name;
   std::string variant;  ///< "sim" or "reality" (a stand-in for the real robot, not real data)

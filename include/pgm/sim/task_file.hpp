@@ -5,6 +5,7 @@
 /// JSON path of the offending value ("tasks/2-stack.json: /variables/3/distribution/sd:
 /// expected a positive number").
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <filesystem>
@@ -45,7 +46,9 @@ class task_reader : public pgm::detail::json_reader {
                "structure", "physics"});
     task.name = string(member(doc, "", "name"), "/name");
     task.variant = optional_string(doc, "variant", "/variant", "sim");
-    if (task.variant != "sim" && task.variant != "reality") fail("/variant", "expected \"sim\" or \"reality\"");
+    if (const auto known = known_task_variants(); std::find(known.begin(), known.end(), task.variant) == known.end()) {
+      fail("/variant", "expected one of " + pgm::detail::join(known));
+    }
     task.description = optional_string(doc, "description", "/description", "");
     task.note = optional_string(doc, "note", "/note", "");
 

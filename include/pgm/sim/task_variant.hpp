@@ -4,6 +4,7 @@
 /// `pgm.simulate(task, variant=)` name it: "2-stack" with variant "reality" is the task file
 /// "2-stack-reality" (the stand-in for the real robot, not real data).
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <string_view>
@@ -20,8 +21,8 @@ namespace pgm::sim {
 /// or a reality task ("2-stack-reality") asked for as "sim".
 [[nodiscard]] inline std::string task_variant_name(std::string_view task, std::string_view variant) {
   constexpr std::string_view suffix = "-reality";
-  if (variant != "sim" && variant != "reality") {
-    throw unknown_name("variant", std::string(variant), {"sim", "reality"});
+  if (const auto known = known_task_variants(); std::find(known.begin(), known.end(), variant) == known.end()) {
+    throw unknown_name("variant", std::string(variant), known);
   }
   const bool named_reality = task.size() > suffix.size() && task.ends_with(suffix);
   if (variant == "reality" && !named_reality) return std::string(task) + std::string(suffix);
