@@ -119,6 +119,23 @@ void add_cells_as_rows(const family_tally& from, const std::vector<std::vector<s
   }
 }
 
+/// Adds the counts of `from`, dense or sparse, to sparse `to` as rows, ids mapped as by
+/// add_cells_as_rows.
+void add_as_rows(const family_tally& from, const std::vector<std::vector<std::uint32_t>>* id_of, family_tally& to) {
+  if (!from.sparse) {
+    add_cells_as_rows(from, id_of, to);
+    return;
+  }
+  std::vector<std::uint32_t> ids(from.members.size());
+  for (std::size_t r = 0; r < from.row_counts.size(); ++r) {
+    for (std::size_t m = 0; m < ids.size(); ++m) {
+      const auto id = from.rows[r * ids.size() + m];
+      ids[m] = id_of == nullptr || (*id_of)[from.members[m]].empty() ? id : (*id_of)[from.members[m]][id];
+    }
+    add_row(to, ids, from.row_counts[r]);
+  }
+}
+
 /// Makes a dense family sparse, its counts turned into rows.
 void make_sparse(family_tally& family) {
   if (family.sparse) return;
@@ -413,18 +430,8 @@ void merge(const counter_impl& plan, partial_impl& into, partial_impl& other,
     if (theirs.sparse) make_sparse(family);
     if (!family.sparse) {
       add_mapped(theirs, id_of, family.strides, family.counts.data());
-    } else if (!theirs.sparse) {
-      add_cells_as_rows(theirs, &id_of, family);
     } else {
-      std::vector<std::uint32_t> ids(theirs.members.size());
-      for (std::size_t r = 0; r < theirs.row_counts.size(); ++r) {
-        for (std::size_t m = 0; m < ids.size(); ++m) {
-          const auto id = theirs.rows[r * ids.size() + m];
-          const auto& map = id_of[theirs.members[m]];
-          ids[m] = map.empty() ? id : map[id];
-        }
-        add_row(family, ids, theirs.row_counts[r]);
-      }
+      add_as_rows(theirs, &id_of, family);
     }
   }
 }
@@ -794,20 +801,7 @@ struct summed_layout {
     family_tally rows;
     rows.members = partial.families[f].members;
     rows.sparse = true;
-    if (partial.families[f].sparse) {
-      const auto& mine = partial.families[f];
-      std::vector<std::uint32_t> ids(mine.members.size());
-      for (std::size_t r = 0; r < mine.row_counts.size(); ++r) {
-        for (std::size_t m = 0; m < ids.size(); ++m) {
-          const auto id = mine.rows[r * ids.size() + m];
-          const auto& map = id_of[mine.members[m]];
-          ids[m] = map.empty() ? id : map[id];
-        }
-        add_row(rows, ids, mine.row_counts[r]);
-      }
-    } else {
-      add_cells_as_rows(partial.families[f], &id_of, rows);
-    }
+    add_as_rows(partial.families[f], &id_of, rows);
     out.put<std::uint64_t>(rows.row_counts.size());
     out.put_all(std::span<const std::uint32_t>(rows.rows));
     out.put_all(std::span<const std::uint64_t>(rows.row_counts));
