@@ -1,10 +1,7 @@
-// BIF networks (pgm/io/bif.hpp).
+// BIF networks (pgm/io/bif.hpp), read through the format registry.
 
-#include "pgm/io/bif.hpp"
-
-#include "harness.hpp"
+#include "network_format_harness.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return pgm::fuzz::expect_value_or_error(
-      [&] { static_cast<void>(pgm::parse_bif(pgm::fuzz::text_of(data, size), "fuzz.bif")); });
+  return pgm::fuzz::read_as_network_format("bif", data, size);
 }

@@ -1,10 +1,7 @@
-// Hugin NET networks (pgm/io/net.hpp).
+// Hugin NET networks (pgm/io/net.hpp), read through the format registry.
 
-#include "pgm/io/net.hpp"
-
-#include "harness.hpp"
+#include "network_format_harness.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return pgm::fuzz::expect_value_or_error(
-      [&] { static_cast<void>(pgm::parse_net(pgm::fuzz::text_of(data, size), "fuzz.net")); });
+  return pgm::fuzz::read_as_network_format("net", data, size);
 }

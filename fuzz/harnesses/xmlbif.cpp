@@ -1,10 +1,8 @@
-// XMLBIF networks (pgm/io/xmlbif.hpp): the XML parser underneath and the reader above it.
+// XMLBIF networks (pgm/io/xmlbif.hpp): the XML parser underneath and the reader above it, read
+// through the format registry.
 
-#include "pgm/io/xmlbif.hpp"
-
-#include "harness.hpp"
+#include "network_format_harness.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return pgm::fuzz::expect_value_or_error(
-      [&] { static_cast<void>(pgm::parse_xmlbif(pgm::fuzz::text_of(data, size), "fuzz.xml")); });
+  return pgm::fuzz::read_as_network_format("xmlbif", data, size);
 }

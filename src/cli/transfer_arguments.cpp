@@ -10,7 +10,7 @@ namespace pgm::cli {
 
 void add_transfer_options(CLI::App& command, transfer_arguments& args, bool with_weight) {
   command.add_option("--prior-model", args.prior_model,
-                     "The prior task's fitted network T′ (.bif, .xml, .net or .json)");
+                     "The prior task's fitted network T′ (" + network_file_kinds() + ")");
   command
       .add_option("--strategy", args.strategy,
                   "How to read the prior: direct, cross, minimal (eq. 9) or a registered strategy's name")

@@ -81,7 +81,8 @@ void add_check_command(CLI::App& app) {
       "Test every independence the model's DAG implies (each variable independent of its non-descendants given its "
       "parents, one test per pair of variables without an edge) against data, and list those the data reject, "
       "smallest p-value first.\nExample: pgm check --model alarm.bif --data alarm-10000.csv --alpha 0.01");
-  cmd->add_option("--model", args->model, "The model: .bif, .xml, .net or .json (a structure is enough)")->required();
+  cmd->add_option("--model", args->model, "The model: " + network_file_kinds() + " (a structure is enough)")
+      ->required();
   cmd->add_option("--data", args->data, std::string("Discrete data with a column per variable") + data_file_help)
       ->required();
   cmd->add_option("--test", args->test, "Independence test: chi2 (Pearson) or g2 (likelihood ratio)")

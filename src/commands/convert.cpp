@@ -1,4 +1,4 @@
-// pgm convert: a network from one file format to another (BIF, XMLBIF, Hugin NET, JSON).
+// pgm convert: a network from one file format to another (any of pgm/io/network_format.hpp's).
 
 #include <iostream>
 #include <memory>
@@ -22,21 +22,17 @@ struct convert_arguments {
 void run_convert(const convert_arguments& args) {
   const auto from = format_to_read(args.in);
   const auto named = find_format_of(args.out);
-  network_format to{};
-  if (!args.to.empty()) {
-    to = network_format_named(args.to);
-    if (named && *named != to) {
-      throw error("'" + args.out + "' names the " + std::string(name_of(*named)) + " format but --to says " + args.to);
-    }
-  } else {
-    to = format_of(args.out);  // fails, listing the extensions, before anything is read
+  // format_of fails, listing the extensions, before anything is read.
+  const auto to = args.to.empty() ? format_of(args.out) : network_format_named(args.to);
+  if (!args.to.empty() && named && *named != to) {
+    throw error("'" + args.out + "' names the " + std::string(name_of(*named)) + " format but --to says " + args.to);
   }
   pgm::check_output_path(args.out);
   const auto model = read_model_file(args.in);
   const auto network = model.network();
   // The counts a network is updated from (pgm fit --keep-counts) go along: in JSON under
   // "statistics", elsewhere in a property peers ignore, which --no-properties leaves out.
-  const bool keeps_counts = model.statistics && (to == network_format::json || !args.no_properties);
+  const bool keeps_counts = model.statistics && (to == network_format("json") || !args.no_properties);
   std::vector<std::string> notes;
   write_network(
       network, args.out, to,
@@ -45,7 +41,7 @@ void run_convert(const convert_arguments& args) {
   if (model.statistics && !keeps_counts) {
     note("the counts kept in '" + args.in + "' (for pgm update) are left out with --no-properties");
   }
-  if (from == network_format::json && to != network_format::json && read_success_metadata(args.in)) {
+  if (from == network_format("json") && to != network_format("json") && read_success_metadata(args.in)) {
     note("the success event in the metadata of '" + args.in + "' is not carried by " + std::string(name_of(to)) +
          "; give it to predict and prevent with --success");
   }
@@ -58,10 +54,8 @@ void run_convert(const convert_arguments& args) {
 
 void add_convert_command(CLI::App& app) {
   auto args = std::make_shared<convert_arguments>();
-  auto* cmd = app.add_subcommand(
-      "convert",
-      "Convert a network between BIF (.bif), XMLBIF (.xml, .xmlbif, .bifxml), Hugin NET (.net) and pgm JSON (.json).\n"
-      "Example: pgm convert sachs.bif sachs.net");
+  auto* cmd = app.add_subcommand("convert", "Convert a network between " + network_format_descriptions() +
+                                                ".\nExample: pgm convert sachs.bif sachs.net");
   cmd->add_option("in", args->in,
                   "The network to read; its extension names its format (.bif.gz and the like are read compressed)")
       ->required();

@@ -44,7 +44,7 @@ assignment read_assignment(const std::string& text, const bayesian_network& netw
 }
 
 void add_decision_options(CLI::App& command, decision_arguments& args) {
-  command.add_option("--model", args.model, "The fitted network: .bif, .xml, .net or .json")->required();
+  command.add_option("--model", args.model, "The fitted network: " + network_file_kinds())->required();
   command
       .add_option("--assign", args.assign,
                   "Planned values, e.g. \"xOff1=0.3,yOff1=-1.2,colour=Red\": numbers are binned with an interval "

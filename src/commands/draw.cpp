@@ -31,8 +31,8 @@ struct draw_arguments {
 /// What pgm learn-structure kept in a JSON structure file: the CPDAG's undirected edges and
 /// the bootstrap strength of each edge.
 void add_learned(const std::filesystem::path& path, dot_options& options) {
-  if (format_to_read(path) != network_format::json) return;
-  const auto document = nlohmann::json::parse(detail::read_model_text(path), nullptr, false);
+  if (format_to_read(path) != network_format("json")) return;
+  const auto document = nlohmann::json::parse(read_model_text(path), nullptr, false);
   const auto learned = document.is_object() ? document.find("learned") : document.end();
   if (learned == document.end() || !learned->is_object()) return;
   if (const auto undirected = learned->find("undirected_in_cpdag");
@@ -78,7 +78,7 @@ std::string render_with_dot(const std::string& text, const std::string& format) 
 
 void run_draw(const draw_arguments& args) {
   const std::filesystem::path out(args.out);
-  const auto extension = detail::lowercase_extension(out);
+  const auto extension = pgm::lowercase_extension(out);
   if (extension != ".svg" && extension != ".png" && extension != ".pdf" && extension != ".dot") {
     throw error("--out '" + args.out + "': expected a .svg, .png, .pdf or .dot file");
   }
@@ -108,8 +108,9 @@ void add_draw_command(CLI::App& app) {
                          "Draw a network's structure: SVG, PNG or PDF through Graphviz's dot, or the DOT text.\n"
                          "Example: pgm draw --model 2-stack.json --controllable xOff2,yOff2 --out 2-stack.svg");
   cmd->add_option("--model", args->model,
-                  "The network or structure: .bif, .xml, .net or .json (a structure from pgm learn-structure draws "
-                  "its undirected edges without arrowheads and its bootstrap strengths as widths)")
+                  "The network or structure: " + network_file_kinds() +
+                      " (a structure from pgm learn-structure draws "
+                      "its undirected edges without arrowheads and its bootstrap strengths as widths)")
       ->required();
   cmd->add_option("--out", args->out, "The picture: .svg, .png, .pdf, or .dot for the text")->required();
   cmd->add_option("--success", args->success,

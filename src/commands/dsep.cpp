@@ -38,7 +38,8 @@ void add_dsep_command(CLI::App& app) {
                                  "Tell whether the variables X and Y are d-separated given Z in the model's DAG (every "
                                  "path between them blocked), which the DAG then says are independent given Z.\n"
                                  "Example: pgm dsep --model alarm.bif HR CVP --given LVEDVOLUME");
-  cmd->add_option("--model", args->model, "The model: .bif, .xml, .net or .json (a structure is enough)")->required();
+  cmd->add_option("--model", args->model, "The model: " + network_file_kinds() + " (a structure is enough)")
+      ->required();
   cmd->add_option("X", args->x, "Variables, e.g. \"A\" or \"A,B\"")->required();
   cmd->add_option("Y", args->y, "Variables, e.g. \"C\" or \"C,D\"")->required();
   cmd->add_option("--given", args->given, "The conditioning variables Z, e.g. \"E,F\" (default: none)");

@@ -193,7 +193,7 @@ void add_fit_command(CLI::App& app) {
                                 "The structure as edges, e.g. \"xOff1->onTop1,yOff1->onTop1\"; "
                                 "states are the values found in the data, sorted (numbers numerically)");
   auto* model = cmd->add_option("--model", args->model,
-                                "The structure (and states) from a model file instead: .bif, .xml, .net or .json");
+                                "The structure (and states) from a model file instead: " + network_file_kinds());
   edges->excludes(model);
   model->excludes(edges);
   cmd->add_option("--estimator", args->estimator, "mle (eq. 3) or bayes (eq. 6)")
@@ -217,7 +217,7 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Counting threads (0: all cores)")
       ->check(whole_number(0, 1024))
       ->capture_default_str();
-  cmd->add_option("--out", args->out, "The fitted network: .bif, .xml (XMLBIF), .net (Hugin) or .json")->required();
+  cmd->add_option("--out", args->out, "The fitted network: " + network_file_kinds())->required();
   add_missing_options(*cmd, args->missing, true);
   cmd->add_option("--latent", args->latent,
                   "With --missing em: a variable in no column of the data, as NAME:COUNT (states 0..COUNT-1), "

@@ -311,8 +311,9 @@ void add_learn_structure_command(CLI::App& app) {
                   "Strength above which the averaged network keeps an arc (default: bnlearn's L1 rule)")
       ->check(number_between(0, 1, false, false));
   cmd->add_option("--prior-model", args->prior_model,
-                  "A related task's network (.bif, .xml, .net or .json): favour the edges that --map carries over "
-                  "to this data's variables (hc, tabu, mmhc)");
+                  "A related task's network (" + network_file_kinds() +
+                      "): favour the edges that --map carries over "
+                      "to this data's variables (hc, tabu, mmhc)");
   cmd->add_option("--map", args->map,
                   "Correspondence of this data's variables (left) to the prior's (right), as pgm fit's: "
                   "\"onTop2=onTop1,xOff2~xOff1\"; variables with equal names correspond without an entry");
@@ -320,9 +321,10 @@ void add_learn_structure_command(CLI::App& app) {
       ->check(non_negative_number())
       ->capture_default_str();
   cmd->add_option("--start", args->start,
-                  "Start hc, tabu or mmhc from this network's structure (.bif, .xml, .net or .json), or from "
-                  "PC-stable's result on the data with 'pc' (its --test, --alpha, --max-cond), instead of the "
-                  "empty graph");
+                  "Start hc, tabu or mmhc from this network's structure (" + network_file_kinds() +
+                      "), or from "
+                      "PC-stable's result on the data with 'pc' (its --test, --alpha, --max-cond), instead of the "
+                      "empty graph");
   cmd->add_option("--test", args->test, "Independence test of pc and mmhc: chi2 (Pearson) or g2 (likelihood ratio)")
       ->check(CLI::IsMember(known_ci_tests()))
       ->capture_default_str();

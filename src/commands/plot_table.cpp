@@ -113,7 +113,7 @@ std::string heat_map_script(const table_slice& slice, const table_slice_request&
 
 void run_plot_table(const plot_table_arguments& args) {
   const std::filesystem::path out(args.out);
-  const auto extension = detail::lowercase_extension(out);
+  const auto extension = pgm::lowercase_extension(out);
   if (extension != ".png" && extension != ".svg" && extension != ".gp") {
     throw error("--out '" + args.out + "': expected a .png or .svg picture, or .gp for the gnuplot script");
   }
@@ -171,7 +171,7 @@ void add_plot_table_command(CLI::App& app) {
       "through gnuplot, or the script).\n"
       "Example: pgm plot-table --model 2-stack.json --node onTop2 --x xOff2 --y yOff2 --given xOff1=@2,yOff1=@2 "
       "--out t.png");
-  cmd->add_option("--model", args->model, "The fitted network: .bif, .xml, .net or .json (.gz too)")->required();
+  cmd->add_option("--model", args->model, "The fitted network: " + network_file_kinds() + " (.gz too)")->required();
   cmd->add_option("--node", args->node, "The variable whose table is drawn")->required();
   cmd->add_option("--x", args->x, "The parent across (its interval edges, in its units, as ticks)")->required();
   cmd->add_option("--y", args->y, "The parent up")->required();

@@ -162,7 +162,7 @@ void add_query_command(CLI::App& app) {
       "--format json\n  pgm query --model alarm.bif --all --evidence HR=HIGH --soft BP=0.2:0.3:0.5\n  pgm query "
       "--model alarm.bif --mpe --evidence HR=HIGH\n  pgm query --model alarm.bif --query HR --do CVP=LOW\n  pgm query "
       "--model pathfinder.bif --queries queries.csv");
-  cmd->add_option("--model", args->model, "The network: .bif, .xml, .net or .json")->required();
+  cmd->add_option("--model", args->model, "The network: " + network_file_kinds())->required();
   cmd->add_option("--query", args->query,
                   "Query variables, e.g. \"X\" or \"X,Y\" (joint distribution; with --mpe, the variables whose most "
                   "probable states are wanted, the others summed out)");

@@ -35,7 +35,7 @@ void add_sample_command(CLI::App& app) {
                                  "Draw rows from a network by forward sampling and write them as CSV, a column per "
                                  "variable in the network's order (bnlearn's rbn, pgmpy's simulate).\n"
                                  "Example: pgm sample --model alarm.bif --rows 10000 --seed 1 --out alarm.csv");
-  cmd->add_option("--model", args->model, "The network: .bif, .xml, .net or .json")->required();
+  cmd->add_option("--model", args->model, "The network: " + network_file_kinds())->required();
   // Every row is held until the file is written: 10^7 rows of 37 variables take 1.5 GB.
   cmd->add_option("--rows", args->rows, "Number of rows (held in memory until written, 4 bytes a cell)")
       ->check(whole_number(1, 10'000'000))

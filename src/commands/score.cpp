@@ -57,8 +57,7 @@ void add_score_command(CLI::App& app) {
   auto args = std::make_shared<score_arguments>();
   auto* cmd = app.add_subcommand(
       "score", "Score a network's structure on discrete data (log-likelihood, AIC, BIC, BDeu or K2; larger is better)");
-  cmd->add_option("--model", args->model, "The network whose structure is scored: .bif, .xml, .net or .json")
-      ->required();
+  cmd->add_option("--model", args->model, "The network whose structure is scored: " + network_file_kinds())->required();
   cmd->add_option(
          "--data", args->data,
          std::string("CSV file with a column per variable of the model, read with the model's states") + data_file_help)

@@ -139,7 +139,7 @@ void run_show(const show_arguments& args) {
 void add_show_command(CLI::App& app) {
   auto args = std::make_shared<show_arguments>();
   auto* cmd = app.add_subcommand("show", "Print a network's variables and tables");
-  cmd->add_option("model", args->model, "Network or structure file (.bif, .xml, .net or .json)")->required();
+  cmd->add_option("model", args->model, "Network or structure file (" + network_file_kinds() + ")")->required();
   cmd->add_option("--variable", args->variable, "Show only this variable and its table");
   cmd->add_option("--digits", args->digits, "Decimals of the probabilities")
       ->check(CLI::Range(0, 17))

@@ -142,7 +142,7 @@ void add_transfer_command(CLI::App& app) {
   auto* edges =
       cmd->add_option("--edges", args->edges, "The target structure as edges, e.g. \"xOff1->onTop2,xOff2->onTop2\"");
   auto* model = cmd->add_option("--model", args->model,
-                                "The target structure from a model file instead (.bif, .xml, .net or .json)");
+                                "The target structure from a model file instead (" + network_file_kinds() + ")");
   edges->excludes(model);
   model->excludes(edges);
   cmd->add_option("--intervals", args->intervals_file, "Edges file (from pgm discretize) with the target's intervals");
@@ -155,10 +155,10 @@ void add_transfer_command(CLI::App& app) {
 void add_correspond_command(CLI::App& app) {
   auto args = std::make_shared<correspond_arguments>();
   auto* cmd = app.add_subcommand("correspond", "Rank candidate correspondences between a prior and a target network");
-  cmd->add_option("--prior-model", args->prior_model, "The prior task's network (.bif, .xml, .net or .json)")
+  cmd->add_option("--prior-model", args->prior_model, "The prior task's network (" + network_file_kinds() + ")")
       ->required();
   cmd->add_option("--target-model", args->target_model,
-                  "The target task's network or structure (.bif, .xml, .net or .json)")
+                  "The target task's network or structure (" + network_file_kinds() + ")")
       ->required();
   cmd->add_option("--top", args->top, "How many candidates to list")
       ->check(whole_number(1, 1000000))

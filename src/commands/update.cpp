@@ -55,7 +55,8 @@ void add_update_command(CLI::App& app) {
       "update",
       "Add new rows to a network fitted with --keep-counts and estimate its tables again with the same priors.\n"
       "Example: pgm update --model robot.json --data today.csv --out robot.json");
-  cmd->add_option("--model", args->model, "The network, fitted with pgm fit --keep-counts (.json, .bif, .xml or .net)")
+  cmd->add_option("--model", args->model,
+                  "The network, fitted with pgm fit --keep-counts (" + network_file_kinds() + ")")
       ->required();
   cmd->add_option("--data", args->data,
                   std::string("CSV file of the new rows, one column per variable of the model") + data_file_help)
@@ -69,7 +70,7 @@ void add_update_command(CLI::App& app) {
       ->check(whole_number(0, 1024))
       ->capture_default_str();
   cmd->add_option("--out", args->out,
-                  "The updated network with its counts (.json, .bif, .xml or .net; may be --model itself)")
+                  "The updated network with its counts (" + network_file_kinds() + "; may be --model itself)")
       ->required();
   add_missing_options(*cmd, args->missing, false);
   cmd->callback([args] { run_update(*args); });

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "io/builtin_formats.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
 #include "pgm/detail/file.hpp"
@@ -630,6 +631,22 @@ std::string to_bif(const bayesian_network& network, const bif_write_options& opt
 void write_bif(const bayesian_network& network, const std::filesystem::path& path, const bif_write_options& options) {
   const auto text = to_bif(network, options);  // fails before the file is touched
   detail::write_file_atomically(path, [&](std::ostream& out) { out << text; });
+}
+
+network_format_codec detail::bif_format() {
+  return {.name = "bif",
+          .title = "BIF",
+          .extensions = {".bif"},
+          .read =
+              [](std::string_view text, const std::string& source, const network_read_options& options) {
+                return read_keeping_statistics(parse_bif, text, source, options);
+              },
+          .write =
+              [](const bayesian_network& network, const network_write_options& options) {
+                return to_bif(network, {.properties = options.properties,
+                                        .notes = options.notes,
+                                        .network_properties = kept_properties(options)});
+              }};
 }
 
 }  // namespace pgm

@@ -8,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "io/builtin_formats.hpp"
 #include "io/network_text.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
@@ -411,6 +412,21 @@ std::string to_net(const bayesian_network& network, const net_write_options& opt
 void write_net(const bayesian_network& network, const std::filesystem::path& path, const net_write_options& options) {
   const auto text = to_net(network, options);
   detail::write_file_atomically(path, [&](std::ostream& out) { out << text; });
+}
+
+network_format_codec detail::net_format() {
+  return {.name = "net",
+          .title = "Hugin NET",
+          .extensions = {".net"},
+          .read =
+              [](std::string_view text, const std::string& source, const network_read_options& options) {
+                return read_keeping_statistics(parse_net, text, source, options);
+              },
+          .write =
+              [](const bayesian_network& network, const network_write_options& options) {
+                return to_net(network,
+                              {.properties = options.properties, .network_properties = kept_properties(options)});
+              }};
 }
 
 }  // namespace pgm

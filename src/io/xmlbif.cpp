@@ -12,6 +12,7 @@
 #include <string_view>
 #include <vector>
 
+#include "io/builtin_formats.hpp"
 #include "io/network_text.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
@@ -528,6 +529,21 @@ void write_xmlbif(const bayesian_network& network, const std::filesystem::path& 
                   const xmlbif_write_options& options) {
   const auto text = to_xmlbif(network, options);
   detail::write_file_atomically(path, [&](std::ostream& out) { out << text; });
+}
+
+network_format_codec detail::xmlbif_format() {
+  return {.name = "xmlbif",
+          .title = "XMLBIF",
+          .extensions = {".xml", ".xmlbif", ".bifxml"},
+          .read =
+              [](std::string_view text, const std::string& source, const network_read_options& options) {
+                return read_keeping_statistics(parse_xmlbif, text, source, options);
+              },
+          .write =
+              [](const bayesian_network& network, const network_write_options& options) {
+                return to_xmlbif(network,
+                                 {.properties = options.properties, .network_properties = kept_properties(options)});
+              }};
 }
 
 }  // namespace pgm

@@ -559,7 +559,7 @@ TEST_F(cli_test, a_failed_write_to_standard_output_exits_1) {
   // Written to standard output, a model is all that is there: what was done goes to stderr.
   const auto converted = run("convert " + sachs + " /dev/stdout --to json");
   ASSERT_EQ(converted.code, 0) << converted.err;
-  EXPECT_EQ(parse_network(converted.out, network_format::json, "stdout"), read_network(sachs));
+  EXPECT_EQ(parse_network(converted.out, network_format("json"), "stdout"), read_network(sachs));
   EXPECT_THAT(converted.err, HasSubstr("converted " + sachs + " (bif) -> /dev/stdout (json)"));
 }
 

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include "pgm/io/bif.hpp"
+#include "pgm/io/net.hpp"
 #include "pgm/io/network_file.hpp"
 #include "support/program_test.hpp"
 

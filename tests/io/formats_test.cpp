@@ -1,6 +1,6 @@
 // XMLBIF and Hugin NET (pgm/io/xmlbif.hpp, net.hpp) and reading any format by extension
-// (pgm/io/network_file.hpp). The hand-written files follow the styles of the tools that write
-// them: pgmpy and aGrUM for XMLBIF, Hugin and bnlearn's write.net for NET.
+// (pgm/io/network_file.hpp), through the format registry (pgm/io/network_format.hpp). The hand-written files follow the
+// styles of the tools that write them: pgmpy and aGrUM for XMLBIF, Hugin and bnlearn's write.net for NET.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "pgm/core/file.hpp"
 #include "pgm/io/net.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/io/xmlbif.hpp"
@@ -298,18 +299,18 @@ TEST(net_test, errors_are_located) {
 }
 
 TEST(network_file_test, the_extension_chooses_the_format) {
-  EXPECT_EQ(format_of("a.bif"), network_format::bif);
-  EXPECT_EQ(format_of("a.xml"), network_format::xmlbif);
-  EXPECT_EQ(format_of("a.XMLBIF"), network_format::xmlbif);
-  EXPECT_EQ(format_of("a.bifxml"), network_format::xmlbif);
-  EXPECT_EQ(format_of("a.net"), network_format::net);
-  EXPECT_EQ(format_of("a.json"), network_format::json);
+  EXPECT_EQ(format_of("a.bif"), network_format("bif"));
+  EXPECT_EQ(format_of("a.xml"), network_format("xmlbif"));
+  EXPECT_EQ(format_of("a.XMLBIF"), network_format("xmlbif"));
+  EXPECT_EQ(format_of("a.bifxml"), network_format("xmlbif"));
+  EXPECT_EQ(format_of("a.net"), network_format("net"));
+  EXPECT_EQ(format_of("a.json"), network_format("json"));
   EXPECT_THAT([] { static_cast<void>(format_of("a.dne")); },
               ThrowsMessage<io_error>(HasSubstr("'a.dne': not a network file; expected one of .bif, .xml, .xmlbif, "
                                                 ".bifxml, .net, .json (BIF, XMLBIF, Hugin NET, pgm JSON)")));
-  EXPECT_EQ(network_format_named("net"), network_format::net);
+  EXPECT_EQ(network_format_named("net"), network_format("net"));
   EXPECT_THAT([] { static_cast<void>(network_format_named("dsc")); },
-              ThrowsMessage<unknown_name>(HasSubstr("unknown network format 'dsc' (known: bif, xmlbif, net, json)")));
+              ThrowsMessage<unknown_name>(HasSubstr("unknown network format 'dsc' (known: bif, xmlbif, net, json")));
 }
 
 TEST(network_file_test, every_format_reads_back_what_it_writes_and_notes_come_through) {
@@ -335,6 +336,79 @@ TEST(network_file_test, every_format_reads_back_what_it_writes_and_notes_come_th
   EXPECT_THROW(write_network(dotted, dir / "bad.net"), model_error);
   EXPECT_FALSE(std::filesystem::exists(dir / "bad.net"));
   std::filesystem::remove_all(dir);
+}
+
+// A user's format: pgm's JSON behind a header line, under the extension ".pgmx". Registered once
+// for the whole test program, as a user's static registration object would be.
+network_format_codec wrapped_json_format() {
+  constexpr std::string_view header = "pgm-wrapped 1\n";
+  const network_format json("json");
+  return {.name = "wrapped",
+          .title = "wrapped JSON",
+          .extensions = {".PGMX"},  // kept in lower case
+          .read =
+              [=](std::string_view text, const std::string& source, const network_read_options& options) {
+                if (!text.starts_with(header)) throw parse_error(source, 1, 1, "expected the line 'pgm-wrapped 1'");
+                return json.codec().read(text.substr(header.size()), source, options);
+              },
+          .write =
+              [=](const bayesian_network& network, const network_write_options& options) {
+                return std::string(header) + json.codec().write(network, options);
+              }};
+}
+
+const network_format& wrapped() {
+  static const network_format format = [] {
+    add_network_format(wrapped_json_format());
+    return network_format("wrapped");
+  }();
+  return format;
+}
+
+TEST(network_format_registry_test, a_users_format_is_read_written_and_listed_like_the_built_in_ones) {
+  const auto format = wrapped();
+  EXPECT_EQ(format_of("n.pgmx"), format);
+  EXPECT_EQ(format_to_read("n.PGMX.gz"), format);
+  EXPECT_EQ(known_network_formats(), (std::vector<std::string>{"bif", "xmlbif", "net", "json", "wrapped"}));
+  EXPECT_EQ(network_file_kinds(), ".bif, .xml, .net, .json or .pgmx");
+  EXPECT_EQ(network_format_descriptions(),
+            "BIF (.bif), XMLBIF (.xml, .xmlbif, .bifxml), Hugin NET (.net), pgm JSON (.json) and wrapped JSON (.pgmx)");
+
+  const auto dir = std::filesystem::temp_directory_path() / "pgm_user_format_test";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  const auto net = tagged_network();
+  write_network(net, dir / "n.pgmx");
+  EXPECT_EQ(read_file(dir / "n.pgmx"), "pgm-wrapped 1\n" + to_text(net, network_format("json")));
+  EXPECT_EQ(read_network(dir / "n.pgmx"), net);
+  EXPECT_EQ(parse_network(to_text(net, format), format, "text"), net);
+  std::ofstream(dir / "bad.pgmx") << "{}";
+  EXPECT_THAT([&] { static_cast<void>(read_network(dir / "bad.pgmx")); },
+              ThrowsMessage<parse_error>(HasSubstr("bad.pgmx:1:1: expected the line 'pgm-wrapped 1'")));
+  std::filesystem::remove_all(dir);
+}
+
+TEST(network_format_registry_test, a_format_is_refused_without_a_name_an_extension_a_reader_or_a_writer) {
+  static_cast<void>(wrapped());
+  auto refused = [](network_format_codec codec, const std::string& message) {
+    EXPECT_THAT([&] { add_network_format(std::move(codec)); }, ThrowsMessage<model_error>(HasSubstr(message)));
+  };
+  auto codec = wrapped_json_format();
+  refused(codec, "a network format named 'wrapped' is registered already");
+  codec.name = "other";
+  refused(codec, "the extension .pgmx of the network format 'other' is the format 'wrapped''s already");
+  codec.extensions = {".bif"};
+  refused(codec, "the extension .bif of the network format 'other' is the format 'bif''s already");
+  codec.extensions = {"txt"};
+  refused(codec, "the network format 'other' has the extension 'txt'; an extension starts with '.'");
+  codec.extensions = {};
+  refused(codec, "the network format 'other' needs an extension");
+  codec.extensions = {".other"};
+  codec.write = nullptr;
+  refused(codec, "the network format 'other' needs both a reader and a writer");
+  codec.name = "";
+  refused(codec, "a network format needs a non-empty name");
+  EXPECT_EQ(known_network_formats().size(), 5u);
 }
 
 }  // namespace

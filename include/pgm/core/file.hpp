@@ -7,6 +7,7 @@
 
 #include <unistd.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -23,6 +24,13 @@
 #include "pgm/core/limits.hpp"
 
 namespace pgm {
+
+/// A path's extension in lower case (".BIF" -> ".bif"), as file kinds are told apart.
+[[nodiscard]] inline std::string lowercase_extension(const std::filesystem::path& path) {
+  auto extension = path.extension().string();
+  for (auto& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return extension;
+}
 
 /// The whole of a file, refused (io_error naming the limit) beyond `max_bytes`: a regular file
 /// by its size before it is read, a device or pipe as soon as it has given more.

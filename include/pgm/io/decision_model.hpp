@@ -29,8 +29,8 @@ struct decision_model {
 /// itself is read elsewhere; this looks only at the metadata. Throws data_error when the entry
 /// is not a string.
 [[nodiscard]] inline std::optional<std::string> read_success_metadata(const std::filesystem::path& path) {
-  if (format_to_read(path) != network_format::json) return std::nullopt;
-  const auto document = nlohmann::json::parse(detail::read_model_text(path), nullptr, false);
+  if (format_to_read(path) != network_format("json")) return std::nullopt;
+  const auto document = nlohmann::json::parse(read_model_text(path), nullptr, false);
   if (!document.is_object()) return std::nullopt;
   const auto metadata = document.find("metadata");
   if (metadata == document.end() || !metadata->is_object()) return std::nullopt;
