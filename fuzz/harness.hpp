@@ -1,13 +1,16 @@
 #pragma once
 // The contract every harness checks: a parser given any bytes returns or throws a pgm::error
 // with a message. Anything else (another exception, a crash, a sanitizer report, a hang) is a
-// bug. Each harness defines LLVMFuzzerTestOneInput; libFuzzer drives it under PGM_FUZZ, and
-// replay.cpp feeds it the seed corpus and the saved crashers in every build.
+// bug. Each harness defines its entry point with PGM_FUZZ_HARNESS(name): libFuzzer's
+// LLVMFuzzerTestOneInput under PGM_FUZZ, or, in the replay program (PGM_FUZZ_REPLAY), a
+// function registered under its name, so that one program, compiled once, feeds every harness
+// its seed corpus and saved crashers in every build.
 
 #include <cstddef>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,6 +18,19 @@
 #include "pgm/core/error.hpp"
 
 namespace pgm::fuzz {
+
+using harness_function = int (*)(const std::uint8_t* data, std::size_t size);
+
+/// The replay program's harnesses by name.
+inline std::map<std::string_view, harness_function>& replay_harnesses() {
+  static std::map<std::string_view, harness_function> harnesses;
+  return harnesses;
+}
+
+inline bool add_replay_harness(std::string_view name, harness_function harness) {
+  replay_harnesses().emplace(name, harness);
+  return true;
+}
 
 [[nodiscard]] inline std::string_view text_of(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};
@@ -63,3 +79,13 @@ void expect_same(const outcome<T>& a, const outcome<T>& b, const char* what) {
 }
 
 }  // namespace pgm::fuzz
+
+#ifdef PGM_FUZZ_REPLAY
+#define PGM_FUZZ_HARNESS(name)                                                    \
+  static int pgm_fuzz_harness_##name(const std::uint8_t* data, std::size_t size); \
+  [[maybe_unused]] static const bool pgm_fuzz_registered_##name =                 \
+      pgm::fuzz::add_replay_harness(#name, pgm_fuzz_harness_##name);              \
+  static int pgm_fuzz_harness_##name(const std::uint8_t* data, std::size_t size)
+#else
+#define PGM_FUZZ_HARNESS(name) extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
+#endif

@@ -1,7 +1,9 @@
-// Feeds files to a harness's LLVMFuzzerTestOneInput without libFuzzer: the seed corpus and
-// the saved crashers run as ordinary tests in every build (GCC included). Arguments are files
-// or directories (every regular file below them, in sorted order); an empty or missing
-// directory is fine, since crasher directories are usually empty.
+// Feeds files to a harness without libFuzzer: the seed corpus and the saved crashers run as
+// ordinary tests in every build (GCC included). Every harness is compiled into this one program
+// (PGM_FUZZ_REPLAY); the first argument names it, the others are files or directories (every
+// regular file below them, in sorted order); an empty or missing directory is fine, since
+// crasher directories are usually empty.
+//   usage: pgm_fuzz_replay HARNESS [FILE|DIR]...
 
 #include <algorithm>
 #include <cstdint>
@@ -11,12 +13,20 @@
 #include <iterator>
 #include <vector>
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size);
+#include "harness.hpp"
 
 int main(int argc, char** argv) {
   namespace fs = std::filesystem;
+  const auto& harnesses = pgm::fuzz::replay_harnesses();
+  const auto harness = argc > 1 ? harnesses.find(argv[1]) : harnesses.end();
+  if (harness == harnesses.end()) {
+    std::cerr << "usage: pgm_fuzz_replay HARNESS [FILE|DIR]...\nharnesses:";
+    for (const auto& [name, function] : harnesses) std::cerr << ' ' << name;
+    std::cerr << std::endl;
+    return 2;
+  }
   std::vector<fs::path> files;
-  for (int i = 1; i < argc; ++i) {
+  for (int i = 2; i < argc; ++i) {
     const fs::path arg = argv[i];
     if (fs::is_directory(arg)) {
       for (const auto& entry : fs::recursive_directory_iterator(arg)) {
@@ -31,7 +41,7 @@ int main(int argc, char** argv) {
     std::ifstream in(file, std::ios::binary);
     const std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     std::cout << "replaying " << file.string() << " (" << bytes.size() << " bytes)" << std::endl;
-    LLVMFuzzerTestOneInput(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
+    harness->second(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
   }
   std::cout << files.size() << " inputs replayed" << std::endl;
   return 0;

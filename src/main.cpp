@@ -5,7 +5,7 @@
 // Started by mpirun or srun (src/cli/launch.hpp), the program joins the job's MPI processes:
 // the commands that scale out split their work over them, only process 0 prints, and every
 // process ends with the same exit code after agreeing on the failure, if any
-// (pgm/detail/process_group.hpp).
+// (pgm/core/process_group.hpp).
 
 #include <CLI/CLI.hpp>
 #include <cerrno>
@@ -20,8 +20,8 @@
 #include "cli/common.hpp"
 #include "cli/launch.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/detail/process_group.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/process_group.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/version.hpp"
 #ifdef PGM_WITH_MPI
 #include "mpi/mpi_processes.hpp"
@@ -81,7 +81,7 @@ int main(int argc, char** argv) {
     return 1;
   }
 #endif
-  auto& processes = pgm::detail::processes();
+  auto& processes = pgm::processes();
   // Process 0 speaks for all: the others' output would repeat its own.
   if (processes.rank() != 0) {
     std::cout.rdbuf(nullptr);
@@ -136,7 +136,7 @@ int main(int argc, char** argv) {
   // agreement, which is the same collective step).
   if (processes.size() > 1 && !processes.failed()) {
     try {
-      pgm::detail::agree(processes, failure);
+      pgm::agree(processes, failure);
     } catch (...) {
       failure = std::current_exception();
     }

@@ -10,7 +10,7 @@
 
 namespace {
 
-const pgm::bayesian_network& network() {
+const pgm::bayesian_network& assignment_network() {
   static const auto net = pgm::parse_bif(R"(network n { }
 variable x { type discrete [ 3 ] { low, mid, high }; property edges = -1, 0, 0.5, 2 ; }
 variable y { type discrete [ 2 ] { 0, 1 }; }
@@ -23,9 +23,10 @@ probability ( y | x ) { (low) 0.2, 0.8 ; (mid) 0.5, 0.5 ; (high) 0.6, 0.4 ; }
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PGM_FUZZ_HARNESS(assignment) {
   const auto text = pgm::fuzz::text_of(data, size);
   pgm::fuzz::expect_value_or_error([&] { static_cast<void>(pgm::parse_evidence(text)); });
-  return pgm::fuzz::expect_value_or_error(
-      [&] { static_cast<void>(pgm::resolve(network(), pgm::parse_assignment(text, network()))); });
+  return pgm::fuzz::expect_value_or_error([&] {
+    static_cast<void>(pgm::resolve(assignment_network(), pgm::parse_assignment(text, assignment_network())));
+  });
 }

@@ -4,7 +4,7 @@
 
 #include "harness.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PGM_FUZZ_HARNESS(correspondence) {
   return pgm::fuzz::expect_value_or_error(
       [&] { static_cast<void>(pgm::parse_correspondence(pgm::fuzz::text_of(data, size))); });
 }

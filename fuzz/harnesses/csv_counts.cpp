@@ -31,7 +31,7 @@ pgm::fuzz::outcome<std::vector<pgm::count_table>> count(std::string_view text, c
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PGM_FUZZ_HARNESS(csv_counts) {
   if (size == 0) return 0;
   const unsigned choice = data[0];
   const auto text = pgm::fuzz::text_of(data + 1, size - 1);

@@ -5,7 +5,7 @@
 
 #include "network_format_harness.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PGM_FUZZ_HARNESS(json_model) {
   pgm::fuzz::read_as_network_format("json", data, size);
   return pgm::fuzz::expect_value_or_error(
       [&] { static_cast<void>(pgm::parse_discretization_json(pgm::fuzz::text_of(data, size), "fuzz.json")); });

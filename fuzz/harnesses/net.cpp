@@ -2,6 +2,4 @@
 
 #include "network_format_harness.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return pgm::fuzz::read_as_network_format("net", data, size);
-}
+PGM_FUZZ_HARNESS(net) { return pgm::fuzz::read_as_network_format("net", data, size); }

@@ -12,7 +12,7 @@
 
 namespace {
 
-const pgm::bayesian_network& network() {
+const pgm::bayesian_network& query_network() {
   static const auto net = pgm::parse_bif(R"(network n { }
 variable rain { type discrete [ 2 ] { yes, no }; }
 variable grass { type discrete [ 3 ] { dry, damp, wet }; }
@@ -27,17 +27,17 @@ probability ( sun | rain ) { (yes) 0.0, 1.0 ; (no) 0.5, 0.5 ; }
 
 }  // namespace
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PGM_FUZZ_HARNESS(query_batch) {
   const auto text = pgm::fuzz::text_of(data, size);
   pgm::fuzz::expect_value_or_error(
-      [&] { static_cast<void>(pgm::resolve_evidence(network(), {}, pgm::parse_soft_evidence(text))); });
+      [&] { static_cast<void>(pgm::resolve_evidence(query_network(), {}, pgm::parse_soft_evidence(text))); });
   return pgm::fuzz::expect_value_or_error([&] {
-    auto engine = pgm::make_engine("jt", network());
+    auto engine = pgm::make_engine("jt", query_network());
     std::ostringstream out;
     bool header = true;
     for (const auto& request : pgm::parse_query_batch(text, "queries.csv")) {
-      engine.set_evidence(pgm::resolve_evidence(network(), request.observed, request.soft));
-      const auto ids = pgm::resolve_query(network(), request.query, engine.evidence());
+      engine.set_evidence(pgm::resolve_evidence(query_network(), request.observed, request.soft));
+      const auto ids = pgm::resolve_query(query_network(), request.query, engine.evidence());
       try {
         pgm::write_query_record(out, request, engine.joint(ids), {}, header);
       } catch (const pgm::impossible_evidence&) {

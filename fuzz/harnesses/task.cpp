@@ -3,7 +3,7 @@
 #include "harness.hpp"
 #include "pgm/sim/task_file.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PGM_FUZZ_HARNESS(task) {
   return pgm::fuzz::expect_value_or_error(
       [&] { static_cast<void>(pgm::sim::parse_task(pgm::fuzz::text_of(data, size), "fuzz.json")); });
 }

@@ -3,6 +3,6 @@
 #include "harness.hpp"
 #include "pgm/learn/background_knowledge.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+PGM_FUZZ_HARNESS(tiers) {
   return pgm::fuzz::expect_value_or_error([&] { static_cast<void>(pgm::parse_tiers(pgm::fuzz::text_of(data, size))); });
 }

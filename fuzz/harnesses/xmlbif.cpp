@@ -3,6 +3,4 @@
 
 #include "network_format_harness.hpp"
 
-extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
-  return pgm::fuzz::read_as_network_format("xmlbif", data, size);
-}
+PGM_FUZZ_HARNESS(xmlbif) { return pgm::fuzz::read_as_network_format("xmlbif", data, size); }

@@ -12,6 +12,7 @@
 #include "pgm/core/limits.hpp"
 #include "pgm/core/mixed_radix.hpp"
 #include "pgm/core/network_structure.hpp"
+#include "pgm/core/process_group.hpp"
 #include "pgm/core/strong_index.hpp"
 #include "pgm/core/text.hpp"
 #include "pgm/core/unknown_name.hpp"

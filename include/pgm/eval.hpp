@@ -10,7 +10,6 @@
 #include "pgm/eval/headline.hpp"
 #include "pgm/eval/metrics.hpp"
 #include "pgm/eval/plot.hpp"
-#include "pgm/eval/report_template.hpp"
 #include "pgm/eval/report_writer.hpp"
 #include "pgm/eval/result_tables.hpp"
 #include "pgm/eval/run_scenarios.hpp"

@@ -16,7 +16,7 @@
 #include "pgm/causal/d_separation.hpp"
 #include "pgm/causal/dag_check.hpp"
 #include "pgm/causal/intervention.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 
 namespace py = pybind11;
 
@@ -25,7 +25,7 @@ namespace {
 
 std::vector<variable_id> ids_of(const network_handle& handle, const std::vector<std::string>& names) {
   std::vector<variable_id> ids;
-  for (const auto& name : names) ids.push_back(detail::node_of(handle.network, name));
+  for (const auto& name : names) ids.push_back(node_of(handle.network, name));
   return ids;
 }
 

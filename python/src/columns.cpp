@@ -11,8 +11,8 @@
 #include <utility>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/data/state_order.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/learn/family_source.hpp"
 
 namespace pgm::python {

@@ -25,11 +25,11 @@
 #include "network_handle.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/data/bin_columns.hpp"
 #include "pgm/decide/explain.hpp"
 #include "pgm/decide/predict.hpp"
 #include "pgm/decide/table_slice.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/eval/cached_source.hpp"
 #include "pgm/eval/run_scenarios.hpp"
 #include "pgm/eval/scenario_catalog.hpp"
@@ -102,7 +102,7 @@ network_handle read_network_file(const std::filesystem::path& path) {
 /// (configurations × parents, last parent fastest), the child's states and the probabilities
 /// (configurations × child states).
 py::tuple table_of(const network_handle& handle, const std::string& name) {
-  const auto& table = handle.network.table(detail::node_of(handle.network, name));
+  const auto& table = handle.network.table(node_of(handle.network, name));
   // A sparse table has a row per configuration here too, within pgm's limit of a dense table.
   static_cast<void>(checked_table_cells(name, table.child_cardinality(), table.configurations()));
   const auto configurations = table.configurations();
@@ -195,7 +195,7 @@ network_handle fit_frame(const py::list& columns, const std::vector<std::string>
   const py::gil_scoped_release release;
   fit_request request;
   auto edges = to_edges(pairs);
-  auto observed = detail::columns_of(edges);
+  auto observed = columns_of(edges);
   std::erase_if(observed, [&](const std::string& name) {
     return std::any_of(args.latent.begin(), args.latent.end(),
                        [&](const latent_variable& v) { return v.name == name; });
@@ -279,7 +279,7 @@ assignment assignment_of(const bayesian_network& network, const py::object& plan
   assignment result;
   for (const auto& [key, value] : planned.cast<py::dict>()) {
     const auto name = py::str(key).cast<std::string>();
-    const auto& v = network.structure().at(detail::node_of(network, name));
+    const auto& v = network.structure().at(node_of(network, name));
     const bool number =
         !py::isinstance<py::bool_>(value) && (py::isinstance<py::int_>(value) || py::isinstance<py::float_>(value));
     if (number && v.has_intervals()) {
@@ -628,15 +628,15 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("variables", [](const network_handle& h) { return names_of(h.network.variables()); })
       .def("states",
            [](const network_handle& h, const std::string& name) {
-             return h.network.structure().at(pgm::detail::node_of(h.network, name)).states();
+             return h.network.structure().at(pgm::node_of(h.network, name)).states();
            })
       .def("parents",
            [](const network_handle& h, const std::string& name) {
-             return names_of(h.network.structure().parent_variables(pgm::detail::node_of(h.network, name)));
+             return names_of(h.network.structure().parent_variables(pgm::node_of(h.network, name)));
            })
       .def("interval_edges",
            [](const network_handle& h, const std::string& name) -> std::optional<std::vector<double>> {
-             const auto& v = h.network.structure().at(pgm::detail::node_of(h.network, name));
+             const auto& v = h.network.structure().at(pgm::node_of(h.network, name));
              if (!v.has_intervals()) return std::nullopt;
              return v.edges();
            })

@@ -10,7 +10,7 @@
 #include <limits>
 
 #include "pgm/core/error.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/io/network_file.hpp"
 

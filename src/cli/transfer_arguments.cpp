@@ -4,7 +4,7 @@
 #include <iostream>
 
 #include "cli/common.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 
 namespace pgm::cli {
 

@@ -9,8 +9,8 @@
 
 #include "cli/common.hpp"
 #include "pgm/causal/dag_check.hpp"
-#include "pgm/detail/file.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/file.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/io/network_file.hpp"
 
@@ -49,8 +49,8 @@ void run_check(const check_arguments& args) {
     out << "x,y,given,statistic,df,p_value,rejected\n";
     for (const auto& t : result.tests) {
       if (!args.all && t.result.independent(result.alpha)) continue;
-      out << detail::csv_escape(t.x, ',') << ',' << detail::csv_escape(t.y, ',') << ','
-          << detail::csv_escape(text::join(t.given, ";"), ',') << ',' << text::format_double(t.result.statistic) << ','
+      out << text::csv_escape(t.x, ',') << ',' << text::csv_escape(t.y, ',') << ','
+          << text::csv_escape(text::join(t.given, ";"), ',') << ',' << text::format_double(t.result.statistic) << ','
           << text::format_double(t.result.df) << ',' << text::format_double(t.result.p_value) << ','
           << (t.result.independent(result.alpha) ? "no" : "yes") << '\n';
     }

@@ -1,7 +1,7 @@
 #include "commands/decide_common.hpp"
 
 #include "cli/common.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 
 namespace pgm::cli {
 

@@ -7,8 +7,8 @@
 
 #include "cli/common.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/data/bin_columns.hpp"
-#include "pgm/detail/file.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/io/json_model.hpp"
 

@@ -1,7 +1,6 @@
 // pgm draw: a network's structure as a picture (SVG, PNG, PDF through Graphviz's dot) or as
 // DOT text.
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -12,8 +11,8 @@
 #include <vector>
 
 #include "cli/common.hpp"
-#include "pgm/detail/file.hpp"
-#include "pgm/eval/plot.hpp"
+#include "cli/external_programs.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/io/decision_model.hpp"
 #include "pgm/io/dot.hpp"
 #include "pgm/io/network_file.hpp"
@@ -56,7 +55,7 @@ void add_learned(const std::filesystem::path& path, dot_options& options) {
 
 /// Graphviz's dot renders `text` in `format` (svg, png, pdf); its bytes, or io_error with its message.
 std::string render_with_dot(const std::string& text, const std::string& format) {
-  if (std::system("dot -V > /dev/null 2>&1") != 0) {
+  if (!dot_available()) {
     throw io_error("drawing ." + format +
                    " needs Graphviz's dot (Debian: apt-get install graphviz); "
                    "--out NAME.dot writes the DOT text without it");
@@ -65,14 +64,12 @@ std::string render_with_dot(const std::string& text, const std::string& format) 
   const auto stem = folder / ("pgm-draw-" + std::to_string(std::random_device{}()));
   const auto input = stem.string() + ".dot", output = stem.string() + "." + format, messages = stem.string() + ".err";
   std::ofstream(input, std::ios::binary) << text;
-  const auto command = "dot -T" + format + " " + detail::shell_quoted(input) + " -o " + detail::shell_quoted(output) +
-                       " 2> " + detail::shell_quoted(messages);
-  const int status = std::system(command.c_str());
+  const bool drawn = run_dot(format, input, output, messages);
   std::string bytes, problem;
-  if (status == 0) bytes = pgm::read_file(output);
+  if (drawn) bytes = pgm::read_file(output);
   if (std::filesystem::exists(messages)) problem = pgm::read_file(messages);
   for (const auto& file : {input, output, messages}) std::filesystem::remove(file);
-  if (status != 0 || bytes.empty()) throw io_error("Graphviz's dot could not draw the network: " + problem);
+  if (!drawn || bytes.empty()) throw io_error("Graphviz's dot could not draw the network: " + problem);
   return bytes;
 }
 

@@ -7,7 +7,7 @@
 
 #include "cli/common.hpp"
 #include "pgm/causal/d_separation.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/io/network_file.hpp"
 
 namespace pgm::cli {

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "cli/common.hpp"
+#include "cli/external_programs.hpp"
 #include "cli/progress.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
@@ -52,6 +53,7 @@ void run_experiment_command(const experiment_arguments& args) {
     if (done == total) bar.reset();
   };
   options.note = [](const std::string& text) { note(text); };
+  options.render_plots = gnuplot_renderer(options.note);
   options.headline = [](const std::string& line) { std::cout << line << '\n'; };
   // The simulation phase: one bar per data set, with the time left.
   std::optional<progress_bar> simulating;

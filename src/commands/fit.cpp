@@ -10,7 +10,7 @@
 #include "cli/common.hpp"
 #include "cli/transfer_arguments.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/detail/process_group.hpp"
+#include "pgm/core/process_group.hpp"
 #include "pgm/io/csv_source.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
@@ -104,7 +104,7 @@ void note_transfer(const transfer_report& report, const std::string& strategy) {
 
 void run_fit(const fit_arguments& args) {
   require_network_extension(args.out);
-  if (args.data == "-" && detail::processes().size() > 1) {
+  if (args.data == "-" && processes().size() > 1) {
     throw error("--data -: standard input reaches one process only; under mpirun give a file every process can read");
   }
   fit_request request;
@@ -160,7 +160,7 @@ void run_fit(const fit_arguments& args) {
   fit_result fitted;
   if (em) {
     // EM reads the rows at every iteration: they are held in memory.
-    if (detail::processes().size() > 1) throw error("--missing em runs in one process, not under mpirun");
+    if (processes().size() > 1) throw error("--missing em runs in one process, not under mpirun");
     // Every column is read, so that a latent variable that is one is refused.
     const auto data =
         read_discrete_data(args.data, {}, {&request.bin, args.model.empty() ? nullptr : &known, request.missing});
@@ -171,7 +171,7 @@ void run_fit(const fit_arguments& args) {
     // The data are never held in memory: each node's family is counted as the file streams
     // by, over every process under mpirun; process 0 fits and writes.
     csv_reader input(args.data);
-    csv_source source(input, detail::processes());
+    csv_source source(input, processes());
     fitted = fit(source, request);
     if (!fitted.holds_network) return;
     note_counts(fitted.counts, request.bin);

@@ -16,7 +16,7 @@
 
 #include "cli/common.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/learn/bootstrap.hpp"
 #include "pgm/learn/pc.hpp"

@@ -10,10 +10,12 @@
 #include <vector>
 
 #include "cli/common.hpp"
+#include "cli/external_programs.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/decide/assignment.hpp"
 #include "pgm/decide/table_slice.hpp"
-#include "pgm/detail/file.hpp"
 #include "pgm/eval/plot.hpp"
+#include "pgm/io/decision_model.hpp"
 #include "pgm/io/network_file.hpp"
 
 namespace pgm::cli {
@@ -44,13 +46,13 @@ axis axis_of(const variable& v) {
   if (v.has_intervals()) {
     result.edges = v.edges();
     for (std::size_t e = 0; e < result.edges.size(); ++e) {
-      tics << (e ? ", " : "") << detail::gnuplot_quoted(text::format_short(result.edges[e])) << ' '
+      tics << (e ? ", " : "") << gnuplot_quoted(text::format_short(result.edges[e])) << ' '
            << text::format_double(result.edges[e]);
     }
   } else {
     for (std::size_t s = 0; s <= v.cardinality(); ++s) result.edges.push_back(static_cast<double>(s));
     for (std::size_t s = 0; s < v.cardinality(); ++s) {
-      tics << (s ? ", " : "") << detail::gnuplot_quoted(v.states()[s]) << ' ' << static_cast<double>(s) + 0.5;
+      tics << (s ? ", " : "") << gnuplot_quoted(v.states()[s]) << ' ' << static_cast<double>(s) + 0.5;
     }
   }
   tics << ')';
@@ -74,18 +76,17 @@ std::string heat_map_script(const table_slice& slice, const table_slice_request&
                             const std::filesystem::path& output) {
   const auto ax = axis_of(*slice.x), ay = axis_of(*slice.y);
   std::ostringstream g;
-  g << "set terminal " << terminal << " size 820,680 font ',11'\nset output " << detail::gnuplot_quoted(output.string())
+  g << "set terminal " << terminal << " size 820,680 font ',11'\nset output " << gnuplot_quoted(output.string())
     << "\n";
-  g << "set title " << detail::gnuplot_quoted(title_of(slice, request)) << " noenhanced\n";
-  g << "set xlabel " << detail::gnuplot_quoted(slice.x->name()) << " noenhanced\nset ylabel "
-    << detail::gnuplot_quoted(slice.y->name()) << " noenhanced\n";
+  g << "set title " << gnuplot_quoted(title_of(slice, request)) << " noenhanced\n";
+  g << "set xlabel " << gnuplot_quoted(slice.x->name()) << " noenhanced\nset ylabel " << gnuplot_quoted(slice.y->name())
+    << " noenhanced\n";
   g << "set xrange [" << text::format_double(ax.edges.front()) << ':' << text::format_double(ax.edges.back())
     << "]\nset yrange [" << text::format_double(ay.edges.front()) << ':' << text::format_double(ay.edges.back())
     << "]\n";
   g << "set xtics " << ax.tics << " out nomirror\nset ytics " << ay.tics << " out nomirror\n";
   g << "set cbrange [0:1]\nset cblabel "
-    << detail::gnuplot_quoted("P(" + slice.node->name() + " = " + slice.node->states()[slice.state] + ")")
-    << " noenhanced\n";
+    << gnuplot_quoted("P(" + slice.node->name() + " = " + slice.node->states()[slice.state] + ")") << " noenhanced\n";
   // viridis: dark for unlikely, yellow for likely, readable in grey too.
   g << "set palette defined (0 '#440154', 0.25 '#3b528b', 0.5 '#21918c', 0.75 '#5ec962', 1 '#fde725')\n";
   g << "set style fill solid 1.0 noborder\nset tics front\nunset key\n";
@@ -148,7 +149,7 @@ void run_plot_table(const plot_table_arguments& args) {
     const auto terminal = extension == ".png" ? "pngcairo" : "svg";
     pgm::write_file_atomically(
         script, [&](std::ostream& stream) { stream << heat_map_script(slice, request, terminal, picture); });
-    const bool drawn = render_gnuplot(script);
+    const bool drawn = run_gnuplot(script);
     std::filesystem::remove(script);
     std::error_code ignored;
     if (!drawn || !std::filesystem::exists(picture) || std::filesystem::file_size(picture, ignored) == 0) {

@@ -8,8 +8,8 @@
 
 #include "cli/common.hpp"
 #include "commands/decide_common.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/decide/assignment.hpp"
-#include "pgm/detail/text.hpp"
 
 namespace pgm::cli {
 namespace {

@@ -9,9 +9,9 @@
 
 #include "cli/common.hpp"
 #include "commands/decide_common.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/decide/assignment.hpp"
 #include "pgm/decide/explain.hpp"
-#include "pgm/detail/text.hpp"
 
 namespace pgm::cli {
 namespace {

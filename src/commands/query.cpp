@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "cli/common.hpp"
-#include "pgm/detail/file.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/inference/engine_registry.hpp"
 #include "pgm/inference/posterior_table.hpp"
 #include "pgm/io/network_file.hpp"

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "cli/common.hpp"
+#include "cli/report_template.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/detail/file.hpp"
-#include "pgm/eval/report_template.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/eval/result_tables.hpp"
 
 namespace pgm::cli {

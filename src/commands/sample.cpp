@@ -6,7 +6,7 @@
 #include <string>
 
 #include "cli/common.hpp"
-#include "pgm/detail/file.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/inference/sampling.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/io/network_file.hpp"

@@ -12,7 +12,7 @@
 
 #include "cli/common.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/learn/network_score.hpp"
 
 namespace pgm::cli {

@@ -9,9 +9,9 @@
 #include "cli/common.hpp"
 #include "cli/progress.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/detail/file.hpp"
-#include "pgm/detail/process_group.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/file.hpp"
+#include "pgm/core/process_group.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task_lookup.hpp"
@@ -71,7 +71,7 @@ void run_simulate(const simulate_arguments& args) {
       for (std::size_t row = 0; row < data.rows(); ++row) successes += success.code(row);
     }
   };
-  if (detail::processes().rank() != 0) {
+  if (processes().rank() != 0) {
     run_blocks(nullptr);
     return;
   }

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "cli/common.hpp"
-#include "pgm/detail/process_group.hpp"
+#include "pgm/core/process_group.hpp"
 #include "pgm/io/csv_source.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/fit_pipeline.hpp"
@@ -24,7 +24,7 @@ struct update_arguments {
 
 void run_update(const update_arguments& args) {
   require_network_extension(args.out);
-  if (args.data == "-" && detail::processes().size() > 1) {
+  if (args.data == "-" && processes().size() > 1) {
     throw error("--data -: standard input reaches one process only; under mpirun give a file every process can read");
   }
   const auto model = read_model_file(args.model);
@@ -36,7 +36,7 @@ void run_update(const update_arguments& args) {
   request.threads = args.threads;
   request.decay = args.decay;
   csv_reader input(args.data);
-  csv_source source(input, detail::processes());
+  csv_source source(input, processes());
   const auto updated_model = update(source, model.structure, *model.statistics, request);
   if (!updated_model.holds_network) return;
   note_counts(updated_model.counts, {});

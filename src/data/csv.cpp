@@ -494,7 +494,7 @@ void write_csv(const dataset& data, std::ostream& out, char delimiter, std::stri
   const auto& columns = data.columns();
   std::string line;
   for (std::size_t c = 0; c < columns.size(); ++c) {
-    line += (c ? std::string(1, delimiter) : std::string()) + detail::csv_escape(column_name(columns[c]), delimiter);
+    line += (c ? std::string(1, delimiter) : std::string()) + text::csv_escape(column_name(columns[c]), delimiter);
   }
   out << line << '\n';
   write_csv_rows(data, out, delimiter, missing);
@@ -506,11 +506,11 @@ void write_csv_rows(const dataset& data, std::ostream& out, char delimiter, std:
   std::vector<std::vector<std::string>> escaped_labels(columns.size());
   for (std::size_t c = 0; c < columns.size(); ++c) {
     if (const auto* d = std::get_if<discrete_column>(&columns[c])) {
-      for (const auto& state : d->var().states()) escaped_labels[c].push_back(detail::csv_escape(state, delimiter));
+      for (const auto& state : d->var().states()) escaped_labels[c].push_back(text::csv_escape(state, delimiter));
     }
   }
   // Missing values: the code past the states, or NaN.
-  const auto escaped_missing = detail::csv_escape(missing, delimiter);
+  const auto escaped_missing = text::csv_escape(missing, delimiter);
   std::string buffer;
   for (std::size_t row = 0; row < data.rows(); ++row) {
     for (std::size_t c = 0; c < columns.size(); ++c) {

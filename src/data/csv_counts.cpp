@@ -861,7 +861,7 @@ void add_sparse_rows(partial_impl& partial, std::string_view bytes) {
 
 }  // namespace
 
-family_counts count_csv(csv_reader& input, const family_count_request& request, detail::process_group& group) {
+family_counts count_csv(csv_reader& input, const family_count_request& request, process_group& group) {
   if (group.size() == 1) return count_csv(input, request);
   auto& reader = detail::csv_access::of(input);
   const csv_counter counter(reader.source, reader.header, request, reader.delimiter);
@@ -906,13 +906,13 @@ family_counts count_csv(csv_reader& input, const family_count_request& request, 
     if (failure) std::rethrow_exception(failure);
     return {};
   }
-  detail::agree(group, failure, failed_at);
+  agree(group, failure, failed_at);
 
   // One id per label: process 0 merges the labels of all processes in file order.
   const auto every_label = group.gather(labels);
   std::vector<detail::label_dictionary> merged(plan.columns.size());
   std::string ids;
-  detail::run_agreed(group, [&] {
+  run_agreed(group, [&] {
     if (rank != 0) return;
     for (const auto& theirs : every_label) merge_labels(plan, merged, theirs);
     ids = ids_to_bytes(plan, merged);
@@ -936,8 +936,8 @@ family_counts count_csv(csv_reader& input, const family_count_request& request, 
   std::vector<std::string> every_process_rows;
   if (std::any_of(layout.families.begin(), layout.families.end(), [](const family_tally& f) { return f.sparse; })) {
     std::string sparse_rows;
-    detail::run_agreed(
-        group, [&] { sparse_rows = sparse_rows_to_bytes(plan, detail::csv_access::of(partial), merged, layout); });
+    run_agreed(group,
+               [&] { sparse_rows = sparse_rows_to_bytes(plan, detail::csv_access::of(partial), merged, layout); });
     every_process_rows = group.gather(sparse_rows);
   }
   if (rank != 0) return {};

@@ -20,7 +20,7 @@ void check(int code, const char* what) {
 
 constexpr std::size_t piece = INT_MAX;
 
-class world_group final : public detail::process_group {
+class world_group final : public process_group {
  public:
   world_group() {
     int rank = 0;
@@ -94,14 +94,14 @@ mpi_session::mpi_session(int& argc, char**& argv) {
   int provided = 0;
   check(MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided), "MPI_Init_thread");
   group_ = std::make_unique<world_group>();
-  detail::install_processes(group_.get());
+  install_processes(group_.get());
 }
 
 mpi_session::~mpi_session() {
-  detail::install_processes(nullptr);
+  install_processes(nullptr);
   MPI_Finalize();
 }
 
-detail::process_group& mpi_session::group() noexcept { return *group_; }
+process_group& mpi_session::group() noexcept { return *group_; }
 
 }  // namespace pgm::mpi

@@ -4,12 +4,12 @@
 
 #include <memory>
 
-#include "pgm/detail/process_group.hpp"
+#include "pgm/core/process_group.hpp"
 
 namespace pgm::mpi {
 
 /// Initializes MPI (only the calling thread makes MPI calls) and installs MPI_COMM_WORLD as
-/// pgm::detail::processes(); finalizes and uninstalls it when destroyed.
+/// pgm::processes(); finalizes and uninstalls it when destroyed.
 class mpi_session {
  public:
   mpi_session(int& argc, char**& argv);
@@ -17,10 +17,10 @@ class mpi_session {
   mpi_session(const mpi_session&) = delete;
   mpi_session& operator=(const mpi_session&) = delete;
 
-  [[nodiscard]] detail::process_group& group() noexcept;
+  [[nodiscard]] process_group& group() noexcept;
 
  private:
-  std::unique_ptr<detail::process_group> group_;
+  std::unique_ptr<process_group> group_;
 };
 
 }  // namespace pgm::mpi

@@ -293,7 +293,7 @@ TEST(csv_counts_test, counts_over_processes_equal_one_process) {
     const auto data = parse_csv(csv.text, "r.csv", discrete_options());
     for (std::size_t ranks = 1; ranks <= 6; ++ranks) {
       std::vector<family_counts> results(ranks);
-      testing::run_group(ranks, [&](detail::process_group& group) {
+      testing::run_group(ranks, [&](process_group& group) {
         csv_reader input(csv.text, "r.csv");
         results[group.rank()] = count_csv(input, request_for(random_families, 1, 64), group);
       });
@@ -313,7 +313,7 @@ TEST(csv_counts_test, a_bad_record_over_processes_is_reported_by_every_process_w
   family_count_request request;
   request.columns = {"a", "b"};
   request.families = {{"a", {"b"}}};
-  const auto outcomes = testing::run_group(4, [&](detail::process_group& group) {
+  const auto outcomes = testing::run_group(4, [&](process_group& group) {
     csv_reader input(text, "bad.csv");
     static_cast<void>(count_csv(input, request, group));
   });
@@ -327,7 +327,7 @@ void expect_as_one_process(const std::string& text, const family_count_request& 
   const auto alone = count_csv(input, request);
   for (std::size_t ranks = 1; ranks <= 8; ++ranks) {
     std::vector<family_counts> results(ranks);
-    const auto outcomes = testing::run_group(ranks, [&](detail::process_group& group) {
+    const auto outcomes = testing::run_group(ranks, [&](process_group& group) {
       csv_reader theirs(text, "p.csv");
       results[group.rank()] = count_csv(theirs, request, group);
     });
@@ -410,7 +410,7 @@ TEST(csv_counts_test, a_family_too_large_on_one_process_or_only_over_all_is_coun
   std::vector<std::string> steps;
   testing::run_group(
       4,
-      [&](detail::process_group& group) {
+      [&](process_group& group) {
         csv_reader theirs(text, "big.csv");
         static_cast<void>(count_csv(theirs, request, group));
       },
@@ -424,7 +424,7 @@ TEST(csv_counts_test, processes_agree_on_labels_then_sum_their_counts_in_one_red
   std::vector<std::string> steps;
   testing::run_group(
       4,
-      [&](detail::process_group& group) {
+      [&](process_group& group) {
         csv_reader input(csv.text, "r.csv");
         static_cast<void>(count_csv(input, request_for(random_families, 1), group));
       },

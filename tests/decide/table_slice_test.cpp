@@ -40,7 +40,7 @@ TEST(table_slice_test, with_the_other_parents_given_it_is_the_table_itself) {
   const auto slice = slice_table(net, {"onTop", "x", "y", {{"z", std::string("high")}}, false, std::nullopt});
   ASSERT_EQ(slice.probability.size(), 6U);
   EXPECT_EQ(slice.state, 1U);  // the last state by default
-  const auto& table = net.table(detail::node_of(net, "onTop"));
+  const auto& table = net.table(node_of(net, "onTop"));
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t j = 0; j < 2; ++j) {
       const std::size_t u = (i * 2 + j) * 2 + 1;  // parents x, y, z; z = high
@@ -55,8 +55,7 @@ TEST(table_slice_test, with_the_other_parents_given_it_is_the_table_itself) {
 TEST(table_slice_test, averaged_it_is_the_conditional_of_the_joint) {
   const auto net = three_parent_stack();
   const auto slice = slice_table(net, {"onTop", "x", "y", {}, true, std::nullopt});
-  const std::vector<variable_id> query{detail::node_of(net, "x"), detail::node_of(net, "y"),
-                                       detail::node_of(net, "onTop")};
+  const std::vector<variable_id> query{node_of(net, "x"), node_of(net, "y"), node_of(net, "onTop")};
   const auto joint = testing::enumerate_joint(net, query, std::span<const observation>{});
   for (std::size_t i = 0; i < 3; ++i) {
     for (std::size_t j = 0; j < 2; ++j) {
@@ -68,7 +67,7 @@ TEST(table_slice_test, averaged_it_is_the_conditional_of_the_joint) {
 
 TEST(table_slice_test, the_rows_behind_each_cell_are_the_counts_summed_as_asked) {
   const auto net = three_parent_stack();
-  const auto& table = net.table(detail::node_of(net, "onTop"));
+  const auto& table = net.table(node_of(net, "onTop"));
   fit_statistics statistics;
   for (const auto& t : net.tables()) {
     expected_count_table counts(t.child(), t.parents());

@@ -1,7 +1,7 @@
 // Documents whose numbers come from summaries: every placeholder form on a small hand-made
 // summary whose answers are known, and the errors a template author meets.
 
-#include "pgm/eval/report_template.hpp"
+#include "cli/report_template.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -9,6 +9,8 @@
 namespace {
 
 using namespace pgm;
+using pgm::cli::named_summary;
+using pgm::cli::render_report_template;
 using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 

@@ -125,7 +125,7 @@ TEST_F(report_writer_test, the_folder_is_checked_at_once_and_made_only_when_ther
   EXPECT_THAT([&] { report_writer w(dir_ / "missing" / "out"); },
               ThrowsMessage<io_error>(HasSubstr("the folder '" + (dir_ / "missing").string() + "' does not exist")));
   EXPECT_THAT([&] { report_writer w(""); }, ThrowsMessage<io_error>(HasSubstr("no output folder")));
-  report_writer writer(dir_ / "out", {.render_plots = false});
+  report_writer writer(dir_ / "out");
   EXPECT_FALSE(std::filesystem::exists(dir_ / "out"));
 }
 
@@ -136,7 +136,6 @@ TEST_F(report_writer_test, a_cpp_program_runs_an_experiment_into_a_folder) {
   run_scenarios_options options;
   options.experiment.seed = 3;
   options.experiment.threads = 2;
-  options.render_plots = false;
   options.headline = [&](const std::string& line) { headlines.push_back(line); };
   options.note = [&](const std::string& text) { notes.push_back(text); };
   options.progress = [&](const scenario& running, std::size_t done, std::size_t total) {
@@ -163,6 +162,23 @@ TEST_F(report_writer_test, a_cpp_program_runs_an_experiment_into_a_folder) {
   for (const auto& n : notes) EXPECT_THAT(n, StartsWith("tiny: "));
 }
 
+TEST_F(report_writer_test, the_renderer_draws_each_written_script_and_a_failure_is_a_note) {
+  const auto s = parse_scenario(pgm::test::tiny_scenario, "tiny.json");
+  std::vector<std::string> rendered, notes;
+  report_options options;
+  options.render_plots = [&](const std::filesystem::path& script) {
+    rendered.push_back(slurp(script));
+    return false;
+  };
+  options.note = [&](const std::string& text) { notes.push_back(text); };
+  report_writer writer(dir_ / "out", options);
+  writer.add(s, run_experiment(s, pgm::test::deterministic_tasks(), {.seed = 3, .threads = 1}));
+  EXPECT_TRUE(writer.finish().plots_rendered);
+  ASSERT_THAT(rendered, ElementsAre(HasSubstr("set output '" + (dir_ / "out" / "tiny-two.svg").string())));
+  EXPECT_EQ(rendered[0], slurp(dir_ / "out" / "tiny-two.gp")) << "the script is written before it is rendered";
+  EXPECT_THAT(notes, ElementsAre("the plot script " + (dir_ / "out" / "tiny-two.gp").string() + " failed to render"));
+}
+
 TEST_F(report_writer_test, a_failing_scenario_names_its_file_and_writes_nothing) {
   const auto s = parse_scenario(pgm::test::tiny_scenario, "tiny.json");
   auto source = pgm::test::deterministic_tasks();
@@ -170,7 +186,6 @@ TEST_F(report_writer_test, a_failing_scenario_names_its_file_and_writes_nothing)
     throw data_error("no data for " + task);
   };
   run_scenarios_options options;
-  options.render_plots = false;
   EXPECT_THAT([&] { static_cast<void>(run_scenarios({s}, source, dir_ / "out", options)); },
               ThrowsMessage<error>(HasSubstr("tiny.json: no data for one")));
   EXPECT_FALSE(std::filesystem::exists(dir_ / "out"));

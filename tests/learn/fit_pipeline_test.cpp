@@ -158,9 +158,9 @@ TEST(fit_pipeline, saved_intervals_give_every_state_also_those_no_row_has) {
     const auto& x = result.network.structure().at("x");
     EXPECT_EQ(x.states(), (std::vector<std::string>{"0", "1", "2", "3", "4"}));
     EXPECT_EQ(x.edges(), (std::vector<double>{0.0, 1.0, 2.0, 3.0, 4.0, 5.0}));
-    const auto& marginal = result.network.table(detail::node_of(result.network, "x")).values();
+    const auto& marginal = result.network.table(node_of(result.network, "x")).values();
     EXPECT_EQ(std::vector<double>(marginal.begin(), marginal.end()), (std::vector<double>{0, 0, 0.5, 0.25, 0.25}));
-    const auto& y = result.network.table(detail::node_of(result.network, "y"));
+    const auto& y = result.network.table(node_of(result.network, "y"));
     EXPECT_EQ(y(state_index(0), config_index(0)), 0.5);  // x = 0: no rows, uniform
     EXPECT_EQ(y(state_index(0), config_index(2)), 1.0);
   }

@@ -1,6 +1,6 @@
 #pragma once
 // Several processes played by threads, for tests without MPI: each thread is one member of a
-// pgm::detail::process_group whose collective steps meet at a barrier.
+// pgm::process_group whose collective steps meet at a barrier.
 
 #include <algorithm>
 #include <barrier>
@@ -12,12 +12,9 @@
 #include <thread>
 #include <vector>
 
-#include "pgm/detail/process_group.hpp"
+#include "pgm/core/process_group.hpp"
 
 namespace pgm::testing {
-
-using detail::process_group;
-using detail::remote_error;
 
 // What the members of a thread group share.
 struct meeting {

@@ -23,7 +23,7 @@ namespace pgm {
   auto structure = network.structure();
   std::vector<cpt<double>> tables;
   for (const auto& [name, state] : set) {
-    const auto id = detail::node_of(network, name);
+    const auto id = node_of(network, name);
     for (auto parent : network.graph().parents(id)) {
       structure.remove_edge(network.variables()[parent.value()].name(), name);
     }

@@ -45,7 +45,7 @@ using assignment = std::map<std::string, planned_value, std::less<>>;
   std::vector<observation> result;
   result.reserve(planned.size());
   for (const auto& [name, value] : planned) {
-    const auto id = detail::node_of(network, name);
+    const auto id = node_of(network, name);
     result.push_back({id, state_of(network.at(name), value)});
   }
   return result;
@@ -74,7 +74,7 @@ using assignment = std::map<std::string, planned_value, std::less<>>;
     const auto value =
         equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(equals + 1));
     if (name.empty() || value.empty()) throw model_error("'" + piece + "' is not of the form name=value");
-    const auto& v = network.structure().at(detail::node_of(network, name));
+    const auto& v = network.structure().at(node_of(network, name));
     if (!result.emplace(std::string(name), planned_value_of(v, value)).second) {
       throw model_error("'" + std::string(name) + "' is assigned twice");
     }

@@ -147,7 +147,7 @@ template <InferenceEngine Engine>
                                               const prediction_options& prediction = {}) {
   const auto& network = engine.network();
   detail::check_epsilon(options.epsilon);
-  const auto target = detail::node_of(network, success.variable);
+  const auto target = node_of(network, success.variable);
   const auto state = network.at(success.variable).state(success.state);
   if (planned.contains(success.variable)) {
     throw model_error("the success variable '" + success.variable + "' is assigned; it is what is predicted");
@@ -155,7 +155,7 @@ template <InferenceEngine Engine>
   if (controllable.empty())
     throw model_error("no variable is controllable, so nothing can be changed: name at least one");
   for (const auto& name : controllable) {
-    static_cast<void>(detail::node_of(network, name));
+    static_cast<void>(node_of(network, name));
     if (name == success.variable) throw model_error("the success variable '" + name + "' cannot be controllable");
     if (!planned.contains(name)) {
       throw model_error("no value is given for the controllable variable '" + name +
@@ -216,7 +216,7 @@ template <InferenceEngine Engine>
 [[nodiscard]] inline std::vector<std::string> default_controllable(const bayesian_network& network,
                                                                    const success_event& success) {
   std::vector<std::string> names;
-  for (const auto& p : network.table(detail::node_of(network, success.variable)).parents()) names.push_back(p.name());
+  for (const auto& p : network.table(node_of(network, success.variable)).parents()) names.push_back(p.name());
   return names;
 }
 

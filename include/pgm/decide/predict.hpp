@@ -53,7 +53,7 @@ struct success_event {
   if (name.empty() || state.empty()) {
     throw model_error("the success event '" + std::string(text) + "' is not of the form variable=state");
   }
-  const auto& v = network.structure().at(detail::node_of(network, name));
+  const auto& v = network.structure().at(node_of(network, name));
   static_cast<void>(v.state(state));
   return {std::string(name), std::string(state)};
 }
@@ -69,7 +69,7 @@ struct prediction_options {
                                                                  const success_event& success,
                                                                  const assignment& planned) {
   std::vector<std::string> missing;
-  for (const auto& parent : network.table(detail::node_of(network, success.variable)).parents()) {
+  for (const auto& parent : network.table(node_of(network, success.variable)).parents()) {
     if (!planned.contains(parent.name())) missing.push_back(parent.name());
   }
   return missing;
@@ -109,7 +109,7 @@ template <InferenceEngine Engine>
 [[nodiscard]] double predict_success(Engine& engine, const success_event& success, const assignment& planned,
                                      const prediction_options& options = {}) {
   const auto& network = engine.network();
-  const auto target = detail::node_of(network, success.variable);
+  const auto target = node_of(network, success.variable);
   const auto state = network.at(success.variable).state(success.state);
   if (planned.contains(success.variable)) {
     throw model_error("the success variable '" + success.variable + "' is assigned; it is what is predicted");

@@ -29,11 +29,11 @@ template <InferenceEngine Engine>
 [[nodiscard]] cpt<double> success_table(Engine& engine, std::string_view success, std::span<const std::string> given,
                                         std::span<const observation> observed = {}) {
   const auto& network = engine.network();
-  const auto target = detail::node_of(network, success);
+  const auto target = node_of(network, success);
   std::vector<variable_id> ids;
   std::vector<variable> parents;
   for (const auto& name : given) {
-    const auto id = detail::node_of(network, name);
+    const auto id = node_of(network, name);
     if (id == target) throw model_error("'" + name + "' cannot condition its own success table");
     if (std::find(ids.begin(), ids.end(), id) != ids.end()) throw model_error("'" + name + "' is given twice");
     for (const auto& o : observed) {
@@ -90,11 +90,11 @@ template <InferenceEngine Engine>
     return std::find(controllable.begin(), controllable.end(), name) != controllable.end();
   };
   const bool all_roots = std::all_of(controllable.begin(), controllable.end(), [&](const std::string& name) {
-    return network.graph().parents(detail::node_of(network, name)).empty();
+    return network.graph().parents(node_of(network, name)).empty();
   });
-  const auto target = detail::node_of(network, success);
+  const auto target = node_of(network, success);
   std::vector<variable_id> given_ids;
-  for (const auto& name : given) given_ids.push_back(detail::node_of(network, name));
+  for (const auto& name : given) given_ids.push_back(node_of(network, name));
   // With every parent given and nothing below observed, the success node's own table is the
   // answer whether its parents are set or seen: given its parents it depends on nothing else.
   const bool own_table = observed.empty() && given_ids == network.graph().parents(target);

@@ -83,7 +83,7 @@ namespace detail {
 /// a parent of the node, or another parent neither given nor averaged.
 [[nodiscard]] inline table_slice slice_table(const bayesian_network& network, const table_slice_request& request,
                                              const fit_statistics* statistics = nullptr) {
-  const auto target = detail::node_of(network, request.node);
+  const auto target = node_of(network, request.node);
   const auto& node = network.at(request.node);
   const auto& parent_ids = network.graph().parents(target);
   std::vector<std::string> parent_names;
@@ -106,7 +106,7 @@ namespace detail {
       throw model_error("'" + name + "' is an axis or the node itself, so it cannot be given");
     }
     const auto state = state_of(network.at(name), value);
-    observed.push_back({detail::node_of(network, name), state});
+    observed.push_back({node_of(network, name), state});
     fixed.emplace_back(name, state);
   }
   if (!request.average) {

@@ -189,7 +189,7 @@ void parallel_for(std::size_t n, const parallel_options& options, Body&& body) {
 
 /// Runs a job over the processes of `group`: this process runs its share of [0, n) (rank r of
 /// R: [n·r/R, n·(r+1)/R)) as parallel_for does, then every process agrees on the failure (see
-/// pgm::detail::agree): the lowest failing item over all processes is rethrown on every one.
+/// pgm::agree): the lowest failing item over all processes is rethrown on every one.
 /// Returns this process's states. `options.share` is replaced.
 template <StateFactory MakeState, ChunkBody<state_of<MakeState>> Body>
 [[nodiscard]] std::vector<state_of<MakeState>> parallel_for_on(process_group& group, std::size_t n,

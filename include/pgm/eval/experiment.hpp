@@ -76,7 +76,7 @@ struct experiment_options {
   prevention_options prevention;
   std::function<void(std::size_t done, std::size_t total)> progress;
   std::function<void(const std::string&)> note;
-  /// Split the jobs over pgm::detail::processes() (see the file comment).
+  /// Split the jobs over pgm::processes() (see the file comment).
   bool across_processes = false;
 };
 
@@ -307,7 +307,7 @@ struct nothing_to_prepare {};
 /// come in a fixed order (target, repetition, |D|, line, metric).
 [[nodiscard]] inline std::vector<experiment_point> run_experiment(const scenario& s, const task_source& source,
                                                                   const experiment_options& options = {}) {
-  auto& group = options.across_processes ? detail::processes() : detail::lone_process();
+  auto& group = options.across_processes ? processes() : lone_process();
   const std::size_t repetitions = options.repetitions ? options.repetitions : s.repetitions;
   if (repetitions > max_repetitions) {
     throw data_error(std::to_string(repetitions) + " repetitions are more than " + std::to_string(max_repetitions) +
@@ -351,7 +351,7 @@ struct nothing_to_prepare {};
     failure = std::current_exception();
   }
   noting = 0;
-  detail::agree(group, failure, failed_job);
+  agree(group, failure, failed_job);
 
   // One task per (target, repetition); results land in their own slot, so order is fixed.
   std::vector<std::vector<experiment_point>> results(total);

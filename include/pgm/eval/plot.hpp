@@ -4,15 +4,15 @@
 /// column per strategy; rows Max-Difference, Mean-Difference and the success rate after failure
 /// prevention; one line per weight (MLE blue, w from small to large green, red, yellow, w =
 /// auto dashed black, the proposed map dotted purple, the oracle dash-dotted grey); legends
-/// outside the data area, right of each panel. Rendering needs the `gnuplot` program; without
-/// it the scripts are still written.
+/// outside the data area, right of each panel. The library writes scripts only; rendering them
+/// (the `gnuplot` program) is the caller's: `pgm experiment` passes a renderer to the writer.
 
 #include <algorithm>
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -22,23 +22,12 @@
 
 namespace pgm {
 
-namespace detail {
-
 /// A gnuplot single-quoted string: a quote inside is written twice.
 [[nodiscard]] inline std::string gnuplot_quoted(std::string_view text) {
   std::string quoted = "'";
   for (char c : text) quoted += c == '\'' ? std::string("''") : std::string(1, c);
   return quoted + "'";
 }
-
-/// A POSIX shell single-quoted word.
-[[nodiscard]] inline std::string shell_quoted(std::string_view text) {
-  std::string quoted = "'";
-  for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return quoted + "'";
-}
-
-}  // namespace detail
 
 /// The gnuplot script of one target task of a scenario, from the scenario's summary (other
 /// scenarios' and targets' points are skipped). It writes `<stem>.png` and `<stem>.svg`.
@@ -81,19 +70,18 @@ namespace detail {
   // 420 px per panel as before the legends moved out, plus room for the legend beside it.
   const auto width = panels * 600;
   auto render = [&](const std::string& terminal, const std::string& file) {
-    g << "set terminal " << terminal << " size " << width << ",900\nset output " << detail::gnuplot_quoted(file)
-      << "\n";
-    g << "set multiplot layout 3," << panels << " title " << detail::gnuplot_quoted(s.title + ": " + target) << "\n";
+    g << "set terminal " << terminal << " size " << width << ",900\nset output " << gnuplot_quoted(file) << "\n";
+    g << "set multiplot layout 3," << panels << " title " << gnuplot_quoted(s.title + ": " + target) << "\n";
     g << "set key outside right top vertical Left reverse samplen 2 font ',8'\nset grid\nset xlabel '|D|'\n";
     for (const auto& [metric, label] : metrics) {
       for (const auto& column : columns) {
-        g << "set title " << detail::gnuplot_quoted(column) << "\nset ylabel " << detail::gnuplot_quoted(label) << "\n";
+        g << "set title " << gnuplot_quoted(column) << "\nset ylabel " << gnuplot_quoted(label) << "\n";
         g << (metric == "failure_prevention" ? "set yrange [0:1]\n" : "set yrange [0:*]\n");
         std::vector<std::string> plots;
         auto add = [&](const std::string& line, const std::string& title, const std::string& style) {
           const auto it = block_of.find(metric + "#" + line);
           if (it != block_of.end()) {
-            plots.push_back(it->second + " using 1:2 with lines " + style + " title " + detail::gnuplot_quoted(title));
+            plots.push_back(it->second + " using 1:2 with lines " + style + " title " + gnuplot_quoted(title));
           }
         };
         add("mle|0", "MLE", "lw 2 lc rgb '#1f77b4'");
@@ -118,15 +106,6 @@ namespace detail {
   render("pngcairo", stem.string() + ".png");
   render("svg", stem.string() + ".svg");
   return g.str();
-}
-
-/// Whether the `gnuplot` program can be run.
-[[nodiscard]] inline bool gnuplot_available() { return std::system("gnuplot --version > /dev/null 2>&1") == 0; }
-
-/// Runs gnuplot on a script file (its messages go to standard output); false if it failed.
-inline bool render_gnuplot(const std::filesystem::path& script) {
-  const auto command = "gnuplot " + detail::shell_quoted(script.string()) + " 2>&1";
-  return std::system(command.c_str()) == 0;
 }
 
 }  // namespace pgm

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The output folder of an experiment run: per scenario, one gnuplot script per target task
-/// (rendered to PNG and SVG when gnuplot is installed) and the headline numbers; at the end
+/// (rendered to PNG and SVG by the caller's renderer, if any) and the headline numbers; at the end
 /// `points.csv` and `summary.csv` of every scenario. Writing is apart from computing, so that
 /// whoever computes the points (one process, or the ranks of a cluster) hands them to one
 /// writer.
@@ -23,10 +23,14 @@
 
 namespace pgm {
 
+/// Renders a written plot script (`<stem>.gp` into `<stem>.png` and `.svg`); false if it failed.
+/// The program's runs gnuplot; the library itself never starts a process.
+using plot_renderer = std::function<bool(const std::filesystem::path& script)>;
+
 struct report_options {
-  /// Render the plots with gnuplot when it is installed; otherwise only the scripts (.gp).
-  bool render_plots = true;
-  /// What the user should know but need not act on (gnuplot missing or failing).
+  /// Renders each plot script; without one only the scripts (.gp) are written.
+  plot_renderer render_plots;
+  /// What the user should know but need not act on (a plot that failed to render).
   std::function<void(const std::string&)> note;
   /// Each target's headline line (pgm::headline), once its scenario is written.
   std::function<void(const std::string&)> headline;
@@ -60,10 +64,6 @@ class report_writer {
   explicit report_writer(std::filesystem::path folder, report_options options = {})
       : folder_(std::move(folder)), options_(std::move(options)) {
     check_output_folder(folder_);
-    render_ = options_.render_plots && gnuplot_available();
-    if (options_.render_plots && !render_) {
-      say("gnuplot is not installed: writing the plot scripts (.gp) without rendering them");
-    }
   }
 
   [[nodiscard]] const std::filesystem::path& folder() const noexcept { return folder_; }
@@ -78,7 +78,9 @@ class report_writer {
       const auto script = gnuplot_script(s, t.task, summary, stem);
       const std::filesystem::path script_file = stem.string() + ".gp";
       detail::write_file_atomically(script_file, [&](std::ostream& out) { out << script; });
-      if (render_ && !render_gnuplot(script_file)) say("gnuplot failed on " + script_file.string());
+      if (options_.render_plots && !options_.render_plots(script_file)) {
+        say("the plot script " + script_file.string() + " failed to render");
+      }
     }
     if (options_.headline) {
       for (const auto& t : s.targets) options_.headline(headline(s, t.task, summary));
@@ -89,7 +91,8 @@ class report_writer {
   /// Writes points.csv and summary.csv of every scenario added (atomically, each).
   report_files finish() {
     std::filesystem::create_directory(folder_);
-    report_files files{points_.size(), folder_ / "points.csv", folder_ / "summary.csv", render_};
+    report_files files{points_.size(), folder_ / "points.csv", folder_ / "summary.csv",
+                       static_cast<bool>(options_.render_plots)};
     write_points_csv(points_, files.points_csv);
     write_summary_csv(aggregate(points_), files.summary_csv);
     return files;
@@ -102,7 +105,6 @@ class report_writer {
 
   std::filesystem::path folder_;
   report_options options_;
-  bool render_ = false;
   std::vector<experiment_point> points_;
 };
 

@@ -30,7 +30,7 @@ namespace detail {
 inline constexpr std::array<std::string_view, 9> summary_columns{"scenario", "target", "strategy", "w",          "rows",
                                                                  "metric",   "mean",   "sd",       "repetitions"};
 
-[[nodiscard]] inline std::string csv_text(std::string_view text) { return csv_escape(text, ','); }
+[[nodiscard]] inline std::string csv_text(std::string_view text) { return text::csv_escape(text, ','); }
 
 }  // namespace detail
 

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
-#include "pgm/detail/process_group.hpp"
+#include "pgm/core/process_group.hpp"
 #include "pgm/eval/experiment.hpp"
 #include "pgm/eval/report_writer.hpp"
 #include "pgm/eval/scenario.hpp"
@@ -24,8 +24,8 @@ struct run_scenarios_options {
   /// The protocol's options (seed, repetitions, threads, extra lines, prevention); its
   /// `progress` and `note` are replaced by the ones below.
   experiment_options experiment;
-  /// Render the plots with gnuplot when it is installed.
-  bool render_plots = true;
+  /// Renders each plot script (pgm::plot_renderer); without one only the scripts are written.
+  plot_renderer render_plots;
   /// Repetitions finished of the scenario running.
   std::function<void(const scenario&, std::size_t done, std::size_t total)> progress;
   /// Notes of the protocol ("<scenario>: …") and of the writer.
@@ -51,9 +51,9 @@ struct run_scenarios_options {
 /// alone writes (the others return empty report_files).
 inline report_files run_scenarios(const std::vector<scenario>& scenarios, const task_source& source,
                                   const std::filesystem::path& folder, const run_scenarios_options& options = {}) {
-  auto& group = options.experiment.across_processes ? detail::processes() : detail::lone_process();
+  auto& group = options.experiment.across_processes ? processes() : lone_process();
   std::optional<report_writer> writer;
-  detail::run_agreed(group, [&] {
+  run_agreed(group, [&] {
     if (group.rank() == 0) writer.emplace(folder, report_options{options.render_plots, options.note, options.headline});
   });
   auto experiment = options.experiment;

@@ -21,8 +21,8 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/core/unknown_name.hpp"
-#include "pgm/detail/csv_escape.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/inference/query.hpp"
 
@@ -215,12 +215,12 @@ inline void write_posterior_table(std::ostream& out, const posterior& p, const e
   const bool sampled = !p.standard_errors.empty();
   std::string text;
   if (options.format == posterior_format::csv) {
-    for (const auto& v : p.variables) text += detail::csv_escape(v.name(), ',') + ",";
+    for (const auto& v : p.variables) text += text::csv_escape(v.name(), ',') + ",";
     text += sampled ? "probability,standard_error\n" : "probability\n";
     std::size_t row = 0;
     detail::for_each_joint_state(p, [&](const std::vector<std::size_t>& codes, double value) {
       for (std::size_t k = 0; k < codes.size(); ++k) {
-        text += detail::csv_escape(p.variables[k].states()[codes[k]], ',') + ",";
+        text += text::csv_escape(p.variables[k].states()[codes[k]], ',') + ",";
       }
       text += number(value);
       if (sampled) text += "," + number(p.standard_errors[row]);
@@ -276,7 +276,7 @@ inline void write_marginals_table(std::ostream& out, const std::vector<posterior
     for (const auto& m : marginals) {
       const auto& v = m.variables.front();
       for (std::size_t s = 0; s < v.cardinality(); ++s) {
-        text += detail::csv_escape(v.name(), ',') + "," + detail::csv_escape(v.states()[s], ',') + "," +
+        text += text::csv_escape(v.name(), ',') + "," + text::csv_escape(v.states()[s], ',') + "," +
                 number(m.table.values()[s]);
         if (sampled) text += "," + number(m.standard_errors[s]);
         text += "\n";
@@ -324,10 +324,10 @@ inline void write_mpe_table(std::ostream& out, const mpe_result& best, const evi
   detail::check_table_options(options, best.variables);
   std::string text;
   if (options.format == posterior_format::csv) {
-    for (const auto& v : best.variables) text += detail::csv_escape(v.name(), ',') + ",";
+    for (const auto& v : best.variables) text += text::csv_escape(v.name(), ',') + ",";
     text += "probability\n";
     for (std::size_t k = 0; k < best.variables.size(); ++k) {
-      text += detail::csv_escape(best.variables[k].states()[best.states[k].value()], ',') + ",";
+      text += text::csv_escape(best.variables[k].states()[best.states[k].value()], ',') + ",";
     }
     text += number(best.probability) + "\n";
   } else {

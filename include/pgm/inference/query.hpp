@@ -146,8 +146,6 @@ struct mpe_result {
   }
 };
 
-namespace detail {
-
 /// The node id of `name`, throwing model_error naming an unknown one and the known ones.
 [[nodiscard]] inline variable_id node_of(const bayesian_network& network, std::string_view name) {
   if (!network.structure().contains(name)) {
@@ -158,6 +156,8 @@ namespace detail {
   }
   return network.id(name);
 }
+
+namespace detail {
 
 /// "a=s, b=t, do(c=u)" for messages.
 [[nodiscard]] inline std::string describe(const bayesian_network& network, const evidence_set& observed) {
@@ -192,7 +192,7 @@ namespace detail {
                                                    const soft_evidence& soft = {}, const intervention& set = {}) {
   evidence_set result;
   for (const auto& [name, state] : set) {
-    const auto id = detail::node_of(network, name);
+    const auto id = node_of(network, name);
     if (hard.contains(name) || soft.contains(name)) {
       throw model_error("'" + name + "' is both intervened on and observed; do(" + name + "=" + state +
                         ") sets it, so there is nothing to observe");
@@ -200,11 +200,11 @@ namespace detail {
     result.intervened.push_back({id, network.at(name).state(state)});
   }
   for (const auto& [name, state] : hard) {
-    const auto id = detail::node_of(network, name);
+    const auto id = node_of(network, name);
     result.hard.push_back({id, network.at(name).state(state)});
   }
   for (const auto& [name, weights] : soft) {
-    const auto id = detail::node_of(network, name);
+    const auto id = node_of(network, name);
     const auto& v = network.at(name);
     if (hard.contains(name)) throw model_error("'" + name + "' has both hard and soft evidence");
     if (weights.size() != v.cardinality()) {
@@ -235,7 +235,7 @@ namespace detail {
   if (names.empty()) throw model_error("the query names no variable");
   std::vector<variable_id> ids;
   for (const auto& name : names) {
-    const auto id = detail::node_of(network, name);
+    const auto id = node_of(network, name);
     if (std::find(ids.begin(), ids.end(), id) != ids.end()) throw model_error("the query names '" + name + "' twice");
     if (observed.intervenes(id)) {
       throw model_error("'" + name +

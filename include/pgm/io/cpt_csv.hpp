@@ -23,18 +23,17 @@ inline void write_cpt_csv(const cpt<double>& table, std::ostream& out,
   // A row per configuration and state, as many as a dense table holds: within the same limit.
   static_cast<void>(checked_table_cells(table.child().name(), table.child_cardinality(), table.configurations()));
   std::string text;
-  for (const auto& p : table.parents()) text += detail::csv_escape(p.name(), ',') + ",";
-  text += detail::csv_escape(table.child().name(), ',') + "," + detail::csv_escape(value_column, ',') + "\n";
+  for (const auto& p : table.parents()) text += text::csv_escape(p.name(), ',') + ",";
+  text += text::csv_escape(table.child().name(), ',') + "," + text::csv_escape(value_column, ',') + "\n";
   for (std::size_t u = 0; u < table.configurations(); ++u) {
     const auto codes = table.parent_codes(config_index(u));
     std::string prefix;
     for (std::size_t p = 0; p < codes.size(); ++p) {
-      prefix += detail::csv_escape(table.parents()[p].states()[codes[p]], ',') + ",";
+      prefix += text::csv_escape(table.parents()[p].states()[codes[p]], ',') + ",";
     }
     const auto column = table.column(config_index(u));
     for (std::size_t x = 0; x < column.size(); ++x) {
-      text +=
-          prefix + detail::csv_escape(table.child().states()[x], ',') + "," + detail::format_double(column[x]) + "\n";
+      text += prefix + text::csv_escape(table.child().states()[x], ',') + "," + detail::format_double(column[x]) + "\n";
     }
   }
   out << text;

@@ -20,10 +20,10 @@
 #include <string_view>
 #include <vector>
 
+#include "pgm/core/text.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/missing.hpp"
-#include "pgm/detail/csv_escape.hpp"
 
 namespace pgm {
 

@@ -21,10 +21,10 @@
 #include <string_view>
 #include <vector>
 
+#include "pgm/core/process_group.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/data/family_counts.hpp"
 #include "pgm/data/missing.hpp"
-#include "pgm/detail/process_group.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
@@ -64,16 +64,15 @@ class csv_reader {
 /// reports for the same columns (file:line:column), plus "no data rows" for an empty body.
 [[nodiscard]] family_counts count_csv(csv_reader& input, const family_count_request& request);
 
-/// As above, with the records split over the processes of `group` (pgm::detail::processes()
+/// As above, with the records split over the processes of `group` (pgm::processes()
 /// under mpirun), every one of which opened the same file: each counts its own byte range, cut
 /// at line ends; process 0 merges their labels in file order and gives every process the ids
 /// of all labels, and the count tables over those ids are summed by one reduction. Process 0
 /// returns the same counts as one process would; the others return empty counts. Input that is not all in
 /// memory (standard input, compressed data) or that holds quotes (a quoted field may span
 /// lines) is counted whole by process 0. A failure is agreed on by all processes
-/// (pgm::detail::agree): the first in the file wins.
-[[nodiscard]] family_counts count_csv(csv_reader& input, const family_count_request& request,
-                                      detail::process_group& group);
+/// (pgm::agree): the first in the file wins.
+[[nodiscard]] family_counts count_csv(csv_reader& input, const family_count_request& request, process_group& group);
 
 /// Counts of some of a file's records, over provisional ids: add up those of one counter with
 /// `+=` (in any order) and turn them into tables with csv_counter::finish. They refer to their

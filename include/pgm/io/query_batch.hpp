@@ -133,9 +133,9 @@ inline void write_impossible_record(std::ostream& out, const query_request& requ
   std::string text;
   if (options.format == posterior_format::csv) {
     if (header) text += "line,query,evidence,soft,do,engine,evidence_probability,distribution\n";
-    text += std::to_string(request.line) + "," + detail::csv_escape(request.query_text, ',') + "," +
-            detail::csv_escape(request.evidence_text, ',') + "," + detail::csv_escape(request.soft_text, ',') + "," +
-            detail::csv_escape(request.do_text, ',') + "," + detail::csv_escape(engine, ',') + ",0,\n";
+    text += std::to_string(request.line) + "," + text::csv_escape(request.query_text, ',') + "," +
+            text::csv_escape(request.evidence_text, ',') + "," + text::csv_escape(request.soft_text, ',') + "," +
+            text::csv_escape(request.do_text, ',') + "," + text::csv_escape(engine, ',') + ",0,\n";
   } else {
     const auto quoted = [](const std::string& s) { return nlohmann::json(s).dump(); };
     text += "{\"line\": " + std::to_string(request.line) + ", \"query\": " + nlohmann::json(request.query).dump() +
@@ -161,10 +161,10 @@ inline void write_query_record(std::ostream& out, const query_request& request, 
       }
       distribution += "=" + number(value);
     });
-    text += std::to_string(request.line) + "," + detail::csv_escape(request.query_text, ',') + "," +
-            detail::csv_escape(request.evidence_text, ',') + "," + detail::csv_escape(request.soft_text, ',') + "," +
-            detail::csv_escape(request.do_text, ',') + "," + detail::csv_escape(answer.engine, ',') + "," +
-            number(answer.evidence_probability) + "," + detail::csv_escape(distribution, ',') + "\n";
+    text += std::to_string(request.line) + "," + text::csv_escape(request.query_text, ',') + "," +
+            text::csv_escape(request.evidence_text, ',') + "," + text::csv_escape(request.soft_text, ',') + "," +
+            text::csv_escape(request.do_text, ',') + "," + text::csv_escape(answer.engine, ',') + "," +
+            number(answer.evidence_probability) + "," + text::csv_escape(distribution, ',') + "\n";
   } else {
     const auto quoted = [](const std::string& s) { return nlohmann::json(s).dump(); };
     text += "{\"line\": " + std::to_string(request.line) + ", \"query\": [";

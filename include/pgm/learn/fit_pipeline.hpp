@@ -92,6 +92,17 @@ struct fit_result {
   std::optional<fit_statistics> statistics;
 };
 
+/// The columns named by `edges`, in order of first appearance.
+[[nodiscard]] inline std::vector<std::string> columns_of(const std::vector<named_edge>& edges) {
+  std::vector<std::string> columns;
+  for (const auto& e : edges) {
+    for (const auto* name : {&e.from, &e.to}) {
+      if (std::find(columns.begin(), columns.end(), *name) == columns.end()) columns.push_back(*name);
+    }
+  }
+  return columns;
+}
+
 namespace detail {
 
 /// Each node's family by name, in node order, parents in the structure's order.
@@ -104,17 +115,6 @@ namespace detail {
     families.push_back(std::move(family));
   }
   return families;
-}
-
-/// The columns named by `edges`, in order of first appearance.
-[[nodiscard]] inline std::vector<std::string> columns_of(const std::vector<named_edge>& edges) {
-  std::vector<std::string> columns;
-  for (const auto& e : edges) {
-    for (const auto* name : {&e.from, &e.to}) {
-      if (std::find(columns.begin(), columns.end(), *name) == columns.end()) columns.push_back(*name);
-    }
-  }
-  return columns;
 }
 
 /// Whether `name` is among the request's latent variables.
@@ -245,7 +245,7 @@ template <family_source Source>
     }
     counting.families = detail::families_of(structure);
   } else {
-    counting.columns = detail::columns_of(*edges);
+    counting.columns = columns_of(*edges);
     for (const auto& name : counting.columns) {
       if (request.bin.contains(name)) {
         counting.intervals.emplace(name, request.bin.at(name));

@@ -45,7 +45,7 @@ template <Simulator S>
   };
   pgm::detail::parallel_options parallel{.threads = options.threads, .chunk = chunk};
   parallel.progress = options.progress;
-  auto& group = options.across_processes ? pgm::detail::processes() : pgm::detail::lone_process();
+  auto& group = options.across_processes ? pgm::processes() : pgm::lone_process();
   if (options.progress && group.size() > 1) {
     // This process's share stands for the whole: its progress, scaled to all rows.
     const auto share = pgm::detail::process_share{group.rank(), group.size()}.of(rows).size();

@@ -60,7 +60,7 @@ struct simulate_options {
   /// (from whichever worker thread finished a chunk), increasing, the last with `rows`. May be
   /// empty.
   std::function<void(std::size_t done)> progress;
-  /// Spread the rows over the processes pgm runs in (pgm::detail::processes(), several under
+  /// Spread the rows over the processes pgm runs in (pgm::processes(), several under
   /// mpirun): each simulates its block of rows and process 0 gets the whole data set, the
   /// others an empty one. The data are the same for any number of processes.
   bool across_processes = false;
