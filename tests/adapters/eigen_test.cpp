@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-namespace pgm {
+namespace pgm::eigen_tests {
 namespace {
 
 const variable on_top("onTop1", {"0", "1"});
@@ -33,4 +33,4 @@ TEST(eigen_test, float_tables_and_tables_without_parents) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::eigen_tests

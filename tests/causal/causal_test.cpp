@@ -21,7 +21,7 @@
 #include "support/enumeration.hpp"
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::causal_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -360,4 +360,4 @@ TEST(prevention_test, a_controllable_variable_with_a_parent_is_set_not_observed)
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::causal_tests

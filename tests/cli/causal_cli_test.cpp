@@ -17,7 +17,7 @@
 #include "pgm/io/json_model.hpp"
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::causal_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -84,4 +84,4 @@ TEST_F(causal_cli_test, sample_writes_the_rows_the_library_draws) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::causal_cli_tests

@@ -21,7 +21,7 @@
 #include "pgm/io/network_file.hpp"
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -577,4 +577,4 @@ TEST_F(cli_test, bytes_a_message_quotes_from_a_file_are_escaped) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::cli_tests

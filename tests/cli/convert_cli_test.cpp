@@ -12,7 +12,7 @@
 #include "pgm/io/network_file.hpp"
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::convert_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -122,4 +122,4 @@ TEST_F(convert_cli_test, a_header_alone_is_zero_rows_when_a_model_gives_the_stat
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::convert_cli_tests

@@ -17,7 +17,7 @@
 #include "support/program_test.hpp"
 #include "support/random_csv.hpp"
 
-namespace pgm {
+namespace pgm::data_input_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -257,4 +257,4 @@ TEST_F(data_input_test, a_state_the_model_spells_like_a_missing_value_is_that_st
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::data_input_tests

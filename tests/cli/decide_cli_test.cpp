@@ -13,7 +13,7 @@
 #include "pgm/io/network_file.hpp"
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::decide_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -117,4 +117,4 @@ TEST_F(decide_cli_test, bad_input_is_one_clear_line) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::decide_cli_tests

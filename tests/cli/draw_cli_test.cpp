@@ -9,7 +9,7 @@
 
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::draw_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -67,4 +67,4 @@ TEST_F(draw_cli_test, mistakes_are_refused_with_a_clear_message_and_no_output) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::draw_cli_tests

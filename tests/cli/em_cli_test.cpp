@@ -15,7 +15,7 @@
 #include "pgm/learn/expectation_maximization.hpp"
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::em_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -106,4 +106,4 @@ TEST_F(em_data, mistakes_are_refused_with_a_clear_message_and_no_output) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::em_cli_tests

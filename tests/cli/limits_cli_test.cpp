@@ -9,7 +9,7 @@
 #include "pgm/io/network_file.hpp"
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::limits_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -128,4 +128,4 @@ TEST_F(limits_cli_test, a_model_that_never_ends_is_refused_at_the_file_limit) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::limits_cli_tests

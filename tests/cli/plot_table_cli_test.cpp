@@ -10,7 +10,7 @@
 
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::plot_table_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -85,4 +85,4 @@ TEST_F(plot_table_cli_test, mistakes_are_refused_with_a_clear_message_and_no_out
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::plot_table_cli_tests

@@ -15,7 +15,7 @@
 #include "pgm/io/network_file.hpp"
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::query_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -201,4 +201,4 @@ TEST_F(query_cli_test, bad_input_is_one_line_and_no_file) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::query_cli_tests

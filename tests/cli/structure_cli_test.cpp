@@ -11,7 +11,7 @@
 #include "pgm/io/json_model.hpp"
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::structure_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -197,4 +197,4 @@ TEST_F(structure_cli_test, learn_structure_with_a_structure_prior_and_from_pc) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::structure_cli_tests

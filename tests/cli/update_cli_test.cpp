@@ -11,7 +11,7 @@
 #include "pgm/io/network_file.hpp"
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::update_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -109,4 +109,4 @@ TEST_F(update_cli_test, mistakes_are_refused_with_a_clear_message_and_no_output)
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::update_cli_tests

@@ -3,7 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace pgm {
+namespace pgm::cpt_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -81,4 +81,4 @@ TEST(cpt_test, float_tables) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::cpt_tests

@@ -5,7 +5,7 @@
 
 #include <boost/graph/depth_first_search.hpp>
 
-namespace pgm {
+namespace pgm::dag_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -96,4 +96,4 @@ TEST(dag_test, equality_ignores_edge_insertion_order) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::dag_tests

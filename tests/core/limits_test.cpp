@@ -13,7 +13,7 @@
 #include "pgm/core/cpt.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
-namespace pgm {
+namespace pgm::core_limits_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -62,4 +62,4 @@ TEST(limits_test, uniform_tables_are_refused_and_count_tables_kept_sparse_before
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::core_limits_tests

@@ -3,7 +3,7 @@
 
 #include "pgm/core/bayesian_network.hpp"
 
-namespace pgm {
+namespace pgm::network_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -74,4 +74,4 @@ TEST(network_test, parse_edge_list) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::network_tests

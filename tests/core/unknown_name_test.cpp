@@ -18,7 +18,7 @@
 #include "pgm/transfer/registry.hpp"
 #include "pgm/transfer/state_map.hpp"
 
-namespace pgm {
+namespace pgm::unknown_name_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -72,4 +72,4 @@ TEST(unknown_name_test, every_parser_of_a_choice_throws_it) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::unknown_name_tests

@@ -5,7 +5,7 @@
 
 #include "pgm/core/mixed_radix.hpp"
 
-namespace pgm {
+namespace pgm::variable_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -101,4 +101,4 @@ TEST(mixed_radix_test, overflow_is_an_error) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::variable_tests

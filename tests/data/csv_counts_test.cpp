@@ -19,7 +19,7 @@
 #include "support/random_csv.hpp"
 #include "support/thread_processes.hpp"
 
-namespace pgm {
+namespace pgm::csv_counts_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -436,4 +436,4 @@ TEST(csv_counts_test, processes_agree_on_labels_then_sum_their_counts_in_one_red
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::csv_counts_tests

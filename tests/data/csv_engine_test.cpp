@@ -10,7 +10,7 @@
 
 #include "support/random_csv.hpp"
 
-namespace pgm {
+namespace pgm::csv_engine_tests {
 namespace {
 
 struct scanned {
@@ -87,4 +87,4 @@ TEST(csv_engine_test, records_are_read_alike_with_and_without_quotes) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::csv_engine_tests

@@ -18,7 +18,7 @@
 #include "pgm/io/csv_counts.hpp"
 #include "support/folder_test.hpp"
 
-namespace pgm {
+namespace pgm::csv_limits_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -142,4 +142,4 @@ TEST(numbers_in_csv_test, minus_zero_is_zero_and_underflow_is_zero) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::csv_limits_tests

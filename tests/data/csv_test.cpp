@@ -9,7 +9,7 @@
 #include "pgm/io/csv_counts.hpp"
 #include "support/random_csv.hpp"
 
-namespace pgm {
+namespace pgm::csv_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -274,4 +274,4 @@ TEST(csv_test, the_scanner_reads_records_one_at_a_time) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::csv_tests

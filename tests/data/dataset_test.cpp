@@ -3,7 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace pgm {
+namespace pgm::dataset_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -59,4 +59,4 @@ TEST(dataset_test, select_and_slice_rows) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::dataset_tests

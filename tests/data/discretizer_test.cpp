@@ -6,7 +6,7 @@
 #include <boost/math/distributions/normal.hpp>
 #include <random>
 
-namespace pgm {
+namespace pgm::discretizer_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -84,4 +84,4 @@ TEST(discretizer_test, fitted_on_one_set_applied_to_another) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::discretizer_tests

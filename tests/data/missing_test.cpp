@@ -20,7 +20,7 @@
 #include "pgm/learn/independence_test.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
-namespace pgm {
+namespace pgm::missing_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -325,4 +325,4 @@ TEST(missing_test, discretizing_keeps_missing_values_missing) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::missing_tests

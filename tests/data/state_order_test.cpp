@@ -8,7 +8,7 @@
 
 #include "pgm/data/bin_columns.hpp"
 
-namespace pgm {
+namespace pgm::state_order_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -113,4 +113,4 @@ TEST(bin_columns_test, errors_name_what_is_missing) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::state_order_tests

@@ -9,7 +9,7 @@
 #include "pgm/decide/explain.hpp"
 #include "pgm/decide/success_table.hpp"
 
-namespace pgm {
+namespace pgm::predict_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -153,4 +153,4 @@ TEST(explain_test, plan_on_a_network_uses_the_table_and_fixes_the_rest) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::predict_tests

@@ -11,7 +11,7 @@
 
 #include "support/enumeration.hpp"
 
-namespace pgm {
+namespace pgm::prevent_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -219,4 +219,4 @@ TEST(prevention_rate_test, rejects_mismatches) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::prevent_tests

@@ -11,7 +11,7 @@
 
 #include "support/enumeration.hpp"
 
-namespace pgm {
+namespace pgm::table_slice_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -130,4 +130,4 @@ TEST(table_slice_test, mistakes_are_refused_with_what_to_do) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::table_slice_tests

@@ -8,6 +8,7 @@
 #include <string>
 #include <thread>
 
+namespace file_tests {
 namespace {
 
 namespace fs = std::filesystem;
@@ -82,3 +83,4 @@ TEST_F(file_test, reading_a_file_whole_stops_at_the_limit) {
 }
 
 }  // namespace
+}  // namespace file_tests

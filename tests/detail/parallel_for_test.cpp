@@ -17,7 +17,7 @@
 
 #include "pgm/detail/splitmix.hpp"
 
-namespace pgm::detail {
+namespace pgm::detail::parallel_for_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -288,4 +288,4 @@ TEST(parallel_for_test, shares_run_separately_give_the_whole_job) {
 }
 
 }  // namespace
-}  // namespace pgm::detail
+}  // namespace pgm::detail::parallel_for_tests

@@ -23,7 +23,7 @@
 #include "pgm/detail/splitmix.hpp"
 #include "support/thread_processes.hpp"
 
-namespace pgm::detail {
+namespace pgm::detail::process_group_tests {
 namespace {
 
 using pgm::testing::outcome;
@@ -194,4 +194,4 @@ TEST(process_group_test, bytes_read_back_as_written) {
 }
 
 }  // namespace
-}  // namespace pgm::detail
+}  // namespace pgm::detail::process_group_tests

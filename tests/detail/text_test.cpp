@@ -9,7 +9,7 @@
 #include <cmath>
 #include <string>
 
-namespace pgm::detail {
+namespace pgm::detail::text_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -87,4 +87,4 @@ TEST(closest_name_test, a_name_within_two_edits_is_suggested) {
 }
 
 }  // namespace
-}  // namespace pgm::detail
+}  // namespace pgm::detail::text_tests

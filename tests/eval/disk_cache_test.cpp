@@ -15,7 +15,7 @@
 #include "eval/tiny_scenario.hpp"
 #include "support/folder_test.hpp"
 
-namespace pgm {
+namespace pgm::disk_cache_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -112,4 +112,4 @@ TEST_F(disk_cache_test, the_folder_is_made_and_must_be_a_folder) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::disk_cache_tests

@@ -19,7 +19,7 @@
 #include "pgm/sim/task_lookup.hpp"
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::experiment_pipeline_cli_tests {
 namespace {
 
 class experiment_pipeline_test : public pgm::testing::program_test {
@@ -112,4 +112,4 @@ TEST_F(experiment_pipeline_test, prior_truth_and_transferred_priors_equal_the_co
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::experiment_pipeline_cli_tests

@@ -11,6 +11,7 @@
 
 #include "eval/tiny_scenario.hpp"
 
+namespace experiment_tests {
 namespace {
 
 using namespace pgm;
@@ -193,3 +194,4 @@ TEST(scenario_test, the_shipped_scenarios_load) {
 }
 
 }  // namespace
+}  // namespace experiment_tests

@@ -13,7 +13,7 @@
 
 #include "pgm/eval/experiment.hpp"
 
-namespace pgm {
+namespace pgm::family_data_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -120,4 +120,4 @@ TEST(experiment_test, progress_counts_the_jobs_up_to_all) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::family_data_tests

@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+namespace report_template_tests {
 namespace {
 
 using namespace pgm;
@@ -104,3 +105,4 @@ TEST(report_template_test, errors_name_the_place_and_what_was_expected) {
 }
 
 }  // namespace
+}  // namespace report_template_tests

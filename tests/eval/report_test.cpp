@@ -15,6 +15,7 @@
 #include "pgm/eval/run_scenarios.hpp"
 #include "support/folder_test.hpp"
 
+namespace report_tests {
 namespace {
 
 using namespace pgm;
@@ -192,3 +193,4 @@ TEST_F(report_writer_test, a_failing_scenario_names_its_file_and_writes_nothing)
 }
 
 }  // namespace
+}  // namespace report_tests

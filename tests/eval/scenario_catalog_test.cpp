@@ -8,6 +8,7 @@
 
 #include "support/folder_test.hpp"
 
+namespace scenario_catalog_tests {
 namespace {
 
 using namespace pgm;
@@ -90,3 +91,4 @@ TEST_F(scenario_catalog_test, a_task_folder_without_scenarios_is_an_error_naming
 }
 
 }  // namespace
+}  // namespace scenario_catalog_tests

@@ -8,6 +8,7 @@
 #include "pgm/eval/cached_source.hpp"
 #include "pgm/eval/simulated_source.hpp"
 
+namespace source_tests {
 namespace {
 
 using namespace pgm;
@@ -64,3 +65,4 @@ TEST(simulated_source_test, unknown_tasks_variables_and_back_ends_are_errors) {
 }
 
 }  // namespace
+}  // namespace source_tests

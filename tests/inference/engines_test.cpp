@@ -18,7 +18,7 @@
 #include "support/enumeration.hpp"
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::engines_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -480,4 +480,4 @@ TEST(engines_test, semiring_operations_on_factors) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::engines_tests

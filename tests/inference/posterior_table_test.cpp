@@ -10,7 +10,7 @@
 #include <sstream>
 #include <string>
 
-namespace pgm {
+namespace pgm::posterior_table_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -105,4 +105,4 @@ TEST(posterior_table_test, errors_name_what_is_wrong) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::posterior_table_tests

@@ -14,7 +14,7 @@
 #include "support/enumeration.hpp"
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::variable_elimination_tests {
 namespace {
 
 using ::testing::DoubleNear;
@@ -147,4 +147,4 @@ TEST(variable_elimination_test, elimination_order_avoids_fill_on_a_chain) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::variable_elimination_tests

@@ -9,7 +9,7 @@
 #include "pgm/io/network_file.hpp"
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::bif_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -251,4 +251,4 @@ TEST(bif_test, writing_is_atomic) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::bif_tests

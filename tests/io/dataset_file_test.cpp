@@ -13,7 +13,7 @@
 
 #include "support/folder_test.hpp"
 
-namespace pgm {
+namespace pgm::dataset_file_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -116,4 +116,4 @@ TEST_F(dataset_file_io_test, files_are_written_whole_and_read_with_their_name_in
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::dataset_file_tests

@@ -6,7 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace pgm {
+namespace pgm::dot_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -54,4 +54,4 @@ TEST(dot_test, a_marked_name_that_is_no_variable_is_refused) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::dot_tests

@@ -14,7 +14,7 @@
 #include "pgm/io/xmlbif.hpp"
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::formats_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -412,4 +412,4 @@ TEST(network_format_registry_test, a_format_is_refused_without_a_name_an_extensi
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::formats_tests

@@ -9,7 +9,7 @@
 #include "pgm/io/network_file.hpp"
 #include "support/folder_test.hpp"
 
-namespace pgm {
+namespace pgm::gzip_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -82,4 +82,4 @@ TEST_F(gzip_models, inflating_stops_at_the_byte_bound) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::gzip_tests

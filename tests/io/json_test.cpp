@@ -7,7 +7,7 @@
 #include "pgm/io/json_model.hpp"
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::json_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -132,4 +132,4 @@ TEST(cpt_csv_test, round_trip) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::json_tests

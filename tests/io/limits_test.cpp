@@ -18,7 +18,7 @@
 #include "pgm/io/xmlbif.hpp"
 #include "pgm/sim/task_file.hpp"
 
-namespace pgm {
+namespace pgm::io_limits_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -190,4 +190,4 @@ TEST(numbers_in_models_test, json_has_no_nan_hex_or_overflowing_numbers) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::io_limits_tests

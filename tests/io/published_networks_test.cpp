@@ -14,7 +14,7 @@
 #include "pgm/io/xmlbif.hpp"
 #include "pgm/learn/fit.hpp"
 
-namespace pgm {
+namespace pgm::published_networks_tests {
 namespace {
 
 struct published {
@@ -95,4 +95,4 @@ TEST(published_network_fit_test, sachs_is_recovered_from_its_own_samples) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::published_networks_tests

@@ -8,7 +8,7 @@
 #include "pgm/inference/sampling.hpp"
 #include "pgm/io/bif.hpp"
 
-namespace pgm {
+namespace pgm::bootstrap_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -77,4 +77,4 @@ TEST(bootstrap_test, strengths_directions_and_the_averaged_network) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::bootstrap_tests

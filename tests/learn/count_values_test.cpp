@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-namespace pgm {
+namespace pgm::count_values_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -170,4 +170,4 @@ TEST(count_values_test, bad_columns_and_families_are_errors) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::count_values_tests

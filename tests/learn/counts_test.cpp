@@ -6,7 +6,7 @@
 
 #include "pgm/learn/sufficient_statistics.hpp"
 
-namespace pgm {
+namespace pgm::counts_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -113,4 +113,4 @@ TEST(count_table_test, matches_naive_counting_for_every_thread_count) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::counts_tests

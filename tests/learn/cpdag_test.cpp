@@ -13,7 +13,7 @@
 #include "pgm/learn/structural_hamming_distance.hpp"
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::cpdag_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -221,4 +221,4 @@ TEST(cpdag_test, knowledge_errors) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::cpdag_tests

@@ -8,7 +8,7 @@
 #include "pgm/learn/fit.hpp"
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::estimate_tests {
 namespace {
 
 using ::testing::DoubleEq;
@@ -246,4 +246,4 @@ TEST(parameter_prior_test, errors_name_the_prior_and_the_node) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::estimate_tests

@@ -6,7 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace pgm {
+namespace pgm::estimator_choice_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -35,4 +35,4 @@ TEST(estimator_choice_test, a_setting_the_estimator_does_not_use_is_an_error) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::estimator_choice_tests

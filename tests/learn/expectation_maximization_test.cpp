@@ -19,7 +19,7 @@
 #include "pgm/learn/fit_pipeline.hpp"
 #include "support/enumeration.hpp"
 
-namespace pgm {
+namespace pgm::expectation_maximization_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -317,4 +317,4 @@ TEST(expectation_maximization, refuses_what_it_cannot_fit) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::expectation_maximization_tests

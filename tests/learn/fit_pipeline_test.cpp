@@ -13,7 +13,7 @@
 #include "pgm/io/csv_source.hpp"
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::fit_pipeline_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -218,4 +218,4 @@ TEST(fit_pipeline, a_prior_network_transfers_as_add_transferred_priors_does) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::fit_pipeline_tests

@@ -21,7 +21,7 @@
 #include "pgm/learn/fit_pipeline.hpp"
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::fit_statistics_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -223,4 +223,4 @@ TEST(fit_statistics, a_damaged_statistics_entry_is_refused_with_its_json_path) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::fit_statistics_tests

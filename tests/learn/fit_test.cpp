@@ -7,7 +7,7 @@
 
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::fit_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -125,4 +125,4 @@ TEST(fit_test, empty_data_gives_uniform_tables) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::fit_tests

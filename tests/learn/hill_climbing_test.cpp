@@ -18,7 +18,7 @@
 #include "pgm/learn/structure_prior.hpp"
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::hill_climbing_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -315,4 +315,4 @@ TEST(learn_structure_test, one_entry_point_for_every_algorithm) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::hill_climbing_tests

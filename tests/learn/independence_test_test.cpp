@@ -13,7 +13,7 @@
 
 #include "pgm/inference/sampling.hpp"
 
-namespace pgm {
+namespace pgm::independence_test_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -237,4 +237,4 @@ TEST(independence_test, counting_threads_give_the_same_table) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::independence_test_tests

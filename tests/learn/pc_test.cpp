@@ -20,7 +20,7 @@
 #include "pgm/learn/structural_hamming_distance.hpp"
 #include "support/random_network.hpp"
 
-namespace pgm {
+namespace pgm::pc_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -298,4 +298,4 @@ TEST(pc_test, published_sachs_network) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::pc_tests

@@ -11,7 +11,7 @@
 #include "pgm/learn/family_score_cache.hpp"
 #include "pgm/learn/network_score.hpp"
 
-namespace pgm {
+namespace pgm::score_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -179,4 +179,4 @@ TEST(score_test, network_score_is_the_sum_of_its_families) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::score_tests

@@ -20,8 +20,7 @@
 #include "pgm/learn/estimate.hpp"
 #include "pgm/learn/fit.hpp"
 
-// Helpers in a namespace of their own: the unity build joins this file with other tests.
-namespace pgm::sparse_tables {
+namespace pgm::sparse_table_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -315,4 +314,4 @@ TEST(sparse_table_test, counting_csv_equals_counting_the_data_set) {
 }
 
 }  // namespace
-}  // namespace pgm::sparse_tables
+}  // namespace pgm::sparse_table_tests

@@ -29,7 +29,7 @@
 #include "pgm/learn/structural_hamming_distance.hpp"
 #include "support/folder_test.hpp"
 
-namespace pgm {
+namespace pgm::bnlearn_agreement_tests {
 namespace {
 
 struct bnlearn_answers {
@@ -158,4 +158,4 @@ TEST_F(bnlearn_agreement_test, scores_and_hill_climbing_on_published_networks) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::bnlearn_agreement_tests

@@ -31,7 +31,7 @@
 #include "pgm/learn/independence_test.hpp"
 #include "support/folder_test.hpp"
 
-namespace pgm {
+namespace pgm::pgmpy_agreement_tests {
 namespace {
 
 const auto sachs_path = std::filesystem::path(PGM_NETWORKS_DIR) / "sachs.bif";
@@ -375,4 +375,4 @@ TEST_F(pgmpy_agreement_test, files_we_write_pgmpy_reads_and_files_pgmpy_writes_w
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::pgmpy_agreement_tests

@@ -12,7 +12,7 @@
 #include "pgm/io/csv.hpp"
 #include "sim/sim_support.hpp"
 
-namespace pgm::sim {
+namespace pgm::sim::analytic_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -269,4 +269,4 @@ TEST(analytic_test, quantile_edges_reproduce_table_one) {
 }
 
 }  // namespace
-}  // namespace pgm::sim
+}  // namespace pgm::sim::analytic_tests

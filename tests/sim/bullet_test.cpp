@@ -16,7 +16,7 @@
 #include "pgm/sim/agreement.hpp"
 #include "sim/sim_support.hpp"
 
-namespace pgm::sim {
+namespace pgm::sim::bullet_tests {
 namespace {
 
 using testing::pinned;
@@ -196,4 +196,4 @@ TEST(bullet_test, three_cubes_fall_as_the_analytic_model_says) {
 }
 
 }  // namespace
-}  // namespace pgm::sim
+}  // namespace pgm::sim::bullet_tests

@@ -12,7 +12,7 @@
 #include "pgm/sim/task_file.hpp"
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::calibrate_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -90,4 +90,4 @@ TEST_F(calibrate_cli_test, clear_errors_and_no_output) {
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::calibrate_cli_tests

@@ -9,7 +9,7 @@
 
 #include "sim/sim_support.hpp"
 
-namespace pgm::sim {
+namespace pgm::sim::calibrate_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -113,4 +113,4 @@ TEST(calibrate_test, needs_experiments) {
 }
 
 }  // namespace
-}  // namespace pgm::sim
+}  // namespace pgm::sim::calibrate_tests

@@ -9,6 +9,7 @@
 #include "pgm/sim/simulator.hpp"
 #include "sim/sim_support.hpp"
 
+namespace learned_structure_tests {
 namespace {
 
 using namespace pgm;
@@ -48,3 +49,4 @@ TEST(learned_structure_test, two_stack_parents_of_on_top2_are_the_four_offsets) 
 }
 
 }  // namespace
+}  // namespace learned_structure_tests

@@ -12,7 +12,7 @@
 
 #include "sim/sim_support.hpp"
 
-namespace pgm::sim {
+namespace pgm::sim::registry_tests {
 namespace {
 
 using ::testing::Contains;
@@ -100,4 +100,4 @@ TEST(registry_test, errors_name_the_backend_and_the_available_ones) {
 }
 
 }  // namespace
-}  // namespace pgm::sim
+}  // namespace pgm::sim::registry_tests

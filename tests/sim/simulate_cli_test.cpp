@@ -15,7 +15,7 @@
 #include "pgm/sim/task_file.hpp"
 #include "support/program_test.hpp"
 
-namespace pgm {
+namespace pgm::simulate_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -101,4 +101,4 @@ TEST_F(simulate_cli_test, rows_beyond_a_block_are_written_as_they_come_and_equal
 }
 
 }  // namespace
-}  // namespace pgm
+}  // namespace pgm::simulate_cli_tests

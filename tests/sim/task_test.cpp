@@ -6,7 +6,7 @@
 
 #include "sim/sim_support.hpp"
 
-namespace pgm::sim {
+namespace pgm::sim::task_tests {
 namespace {
 
 using ::testing::ElementsAre;
@@ -148,4 +148,4 @@ TEST(task_test, errors_name_the_file_and_the_key) {
 }
 
 }  // namespace
-}  // namespace pgm::sim
+}  // namespace pgm::sim::task_tests

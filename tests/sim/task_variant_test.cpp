@@ -5,7 +5,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
-namespace pgm::sim {
+namespace pgm::sim::task_variant_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -30,4 +30,4 @@ TEST(task_variant_test, loads_the_variant_or_says_there_is_none) {
 }
 
 }  // namespace
-}  // namespace pgm::sim
+}  // namespace pgm::sim::task_variant_tests

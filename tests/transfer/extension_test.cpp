@@ -6,6 +6,7 @@
 
 #include "pgm/transfer/registry.hpp"
 
+namespace extension_tests {
 namespace {
 
 using namespace pgm;
@@ -51,3 +52,4 @@ TEST(extension_test, registry_errors) {
 }
 
 }  // namespace
+}  // namespace extension_tests

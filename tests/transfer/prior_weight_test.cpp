@@ -9,6 +9,7 @@
 
 #include "pgm/transfer/propose.hpp"
 
+namespace prior_weight_tests {
 namespace {
 
 using namespace pgm;
@@ -101,3 +102,4 @@ TEST(propose_test, stack_to_drop_pairs_the_sphere_offsets_with_the_cube_offsets)
 }
 
 }  // namespace
+}  // namespace prior_weight_tests

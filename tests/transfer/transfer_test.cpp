@@ -13,6 +13,7 @@
 #include "pgm/transfer/replacement.hpp"
 #include "support/random_network.hpp"
 
+namespace transfer_tests {
 namespace {
 
 using namespace pgm;
@@ -315,3 +316,4 @@ TEST(transfer_test, a_transferred_node_cannot_take_the_table_of_its_parents_coun
 }
 
 }  // namespace
+}  // namespace transfer_tests
