@@ -23,6 +23,13 @@ struct program_result {
 
 class program_test : public folder_test {
  protected:
+  void SetUp() override {
+    folder_test::SetUp();
+    ASSERT_TRUE(std::filesystem::is_regular_file(PGM_PROGRAM))
+        << PGM_PROGRAM << " is not there: these tests run the pgm program, which a whole build makes "
+        << "(cmake --build --preset release)";
+  }
+
   /// Runs `pgm <arguments>` through the shell (quote what the shell would split).
   program_result run(const std::string& arguments) const { return run_to(arguments, dir_ / "stdout.txt"); }
 

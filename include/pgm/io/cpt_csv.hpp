@@ -17,14 +17,14 @@
 
 namespace pgm {
 
-/// Writes `table`; `value_column` names the last column.
+/// Writes `table`; `value_header` names the last column.
 inline void write_cpt_csv(const cpt<double>& table, std::ostream& out,
-                          const std::string& value_column = "probability") {
+                          const std::string& value_header = "probability") {
   // A row per configuration and state, as many as a dense table holds: within the same limit.
   static_cast<void>(checked_table_cells(table.child().name(), table.child_cardinality(), table.configurations()));
   std::string text;
   for (const auto& p : table.parents()) text += text::csv_escape(p.name(), ',') + ",";
-  text += text::csv_escape(table.child().name(), ',') + "," + text::csv_escape(value_column, ',') + "\n";
+  text += text::csv_escape(table.child().name(), ',') + "," + text::csv_escape(value_header, ',') + "\n";
   for (std::size_t u = 0; u < table.configurations(); ++u) {
     const auto codes = table.parent_codes(config_index(u));
     std::string prefix;
@@ -40,8 +40,8 @@ inline void write_cpt_csv(const cpt<double>& table, std::ostream& out,
 }
 
 inline void write_cpt_csv(const cpt<double>& table, const std::filesystem::path& path,
-                          const std::string& value_column = "probability") {
-  detail::write_file_atomically(path, [&](std::ostream& out) { write_cpt_csv(table, out, value_column); });
+                          const std::string& value_header = "probability") {
+  detail::write_file_atomically(path, [&](std::ostream& out) { write_cpt_csv(table, out, value_header); });
 }
 
 /// Reads a table written by write_cpt_csv for known variables. Every configuration and state
