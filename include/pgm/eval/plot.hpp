@@ -73,7 +73,9 @@ namespace pgm {
     g << "set terminal " << terminal << " size " << width << ",900\nset output " << gnuplot_quoted(file) << "\n";
     g << "set multiplot layout 3," << panels << " title " << gnuplot_quoted(s.title + ": " + target) << "\n";
     g << "set key outside right top vertical Left reverse samplen 2 font ',8'\nset grid\nset xlabel '|D|'\n";
-    for (const auto& [metric, label] : metrics) {
+    for (const auto& metric_label : metrics) {
+      const auto& metric = metric_label.first;  // captured below: no structured binding (clang < 16)
+      const auto& label = metric_label.second;
       for (const auto& column : columns) {
         g << "set title " << gnuplot_quoted(column) << "\nset ylabel " << gnuplot_quoted(label) << "\n";
         g << (metric == "failure_prevention" ? "set yrange [0:1]\n" : "set yrange [0:*]\n");

@@ -314,7 +314,10 @@ inline double dropping_probability(const task_definition& task, const dropping_p
   const double sd = std::hypot(p.landing_noise, p.landing_scatter);
   const noisy_axis ax(x, sd, -largest, largest, o.dropping_grid);
   const noisy_axis ay(y, sd, -largest, largest, o.dropping_grid);
-  const auto [angles, angle_weights] = gauss_legendre(o.angle_nodes);
+  // Named, not a structured binding: the lambda below captures them (clang before 16 cannot).
+  const auto quadrature = gauss_legendre(o.angle_nodes);
+  const auto& angles = quadrature.first;
+  const auto& angle_weights = quadrature.second;
   // P(landing within `within` of the axis); t = within·sin θ, so the half-chord is within·cos θ.
   auto disc = [&](double within) {
     if (within <= 0) return 0.0;

@@ -27,8 +27,10 @@ namespace pgm {
 /// Any strategy, type-erased; it models PriorTransfer itself.
 class any_prior_transfer {
  public:
-  template <PriorTransfer S>
-  requires(!std::same_as<S, any_prior_transfer>)
+  // Itself first: checking PriorTransfer<any_prior_transfer> asks whether it converts from itself,
+  // which under this constructor recursed without end in clang.
+  template <class S>
+  requires(!std::same_as<S, any_prior_transfer> && PriorTransfer<S>)
       any_prior_transfer(S strategy)  // NOLINT(google-explicit-constructor): a strategy is one
       : name_(strategy.name()), call_(std::move(strategy)) {}
 
