@@ -5,6 +5,7 @@
 
 #include "pgm/core/assert.hpp"
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/dag.hpp"
 #include "pgm/core/error.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// The paper's experiment: scenarios, repetitions, metrics, result tables, plots and reports (reads and writes files:
-/// links pgm::io). Every header of pgm/eval/ in one include; target pgm::pgm (pgm::core and pgm::io).
+/// The paper's experiment: scenarios, repetitions, metrics, result tables, plots and reports (reads and writes files).
+/// Every header of pgm/eval/ in one include; target pgm::pgm.
 
 #include "pgm/eval/cached_source.hpp"
 #include "pgm/eval/disk_cache.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// Readers and writers (compiled into pgm::io): CSV, BIF, XMLBIF, NET, JSON models, gzip, DOT.
-/// Every header of pgm/io/ in one include; target pgm::io.
+/// Readers and writers (compiled into libpgm): CSV, BIF, XMLBIF, NET, JSON models, gzip, DOT.
+/// Every header of pgm/io/ in one include; target pgm::pgm.
 
 #include "pgm/io/bif.hpp"
 #include "pgm/io/cpt_csv.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// Internal to pgm::io: the built-in network formats, each defined beside its reader and writer
+// Internal to libpgm: the built-in network formats, each defined beside its reader and writer
 // (bif.cpp, xmlbif.cpp, net.cpp, json_format.cpp) and listed once, in network_format.cpp, and
 // what the formats without a place for counts of their own share to keep a fit's counts.
 

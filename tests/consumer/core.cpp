@@ -1,4 +1,4 @@
-// Links pgm::core alone (no pgm::io, no zlib, no XML parser): every module's umbrella but io's
+// Links pgm::core alone (no libpgm, no zlib, no XML parser): every module's umbrella but io's
 // and eval's compiles, and a network fitted from data in memory answers a query.
 #include <iostream>
 #include <pgm/causal.hpp>

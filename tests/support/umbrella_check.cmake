@@ -1,7 +1,7 @@
 # Fails unless the umbrella headers stay true as headers are added: each module's umbrella
 # (pgm/learn.hpp, ...) includes every header of its folder, pgm/pgm.hpp includes every umbrella,
-# and no header of a pgm::core module includes one of pgm/io/ or pgm/eval/ (which need the
-# compiled pgm::io), so that linking pgm::core alone stays enough for them.
+# and no header of a pgm::core module, nor its definitions (impl/*.ipp), includes one of pgm/io/
+# or pgm/eval/ (which need the compiled library), so that linking pgm::core alone stays enough.
 #   cmake -DINCLUDE_DIR=<include> -P umbrella_check.cmake
 cmake_minimum_required(VERSION 3.20)
 set(core_modules causal core data decide inference learn sim transfer)
@@ -24,10 +24,14 @@ foreach(module IN LISTS modules)
     if(at EQUAL -1)
       list(APPEND problems "pgm/${module}.hpp does not include ${header}")
     endif()
+  endforeach()
+  # A core module's headers and their definitions (impl/*.ipp) include no io or eval header.
+  file(GLOB definitions RELATIVE "${INCLUDE_DIR}" "${INCLUDE_DIR}/pgm/${module}/impl/*.ipp")
+  foreach(file IN LISTS headers definitions)
     if(module IN_LIST core_modules)
-      file(STRINGS "${INCLUDE_DIR}/${header}" compiled REGEX "^#include \"pgm/(io|eval)[/.]")
+      file(STRINGS "${INCLUDE_DIR}/${file}" compiled REGEX "^#include \"pgm/(io|eval)[/.]")
       if(compiled)
-        list(APPEND problems "${header} (pgm::core) includes ${compiled}")
+        list(APPEND problems "${file} (pgm::core) includes ${compiled}")
       endif()
     endif()
   endforeach()

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
@@ -27,48 +28,11 @@ class bayesian_network {
 
   /// One table per variable, in any order. Throws model_error if a table is missing, extra,
   /// or disagrees with the structure.
-  bayesian_network(network_structure structure, std::vector<table_type> tables) : structure_(std::move(structure)) {
-    std::vector<const table_type*> by_node(structure_.size(), nullptr);
-    for (const auto& table : tables) {
-      const auto& name = table.child().name();
-      if (!structure_.contains(name)) {
-        throw model_error("a table is given for '" + name + "', which is not in the network");
-      }
-      auto& slot = by_node[structure_.id(name).value()];
-      if (slot) throw model_error("two tables are given for '" + name + "'");
-      slot = &table;
-    }
-    tables_.reserve(structure_.size());
-    for (std::size_t i = 0; i < by_node.size(); ++i) {
-      const variable_id node(static_cast<variable_id::rep>(i));
-      if (!by_node[i]) throw model_error("no table is given for '" + structure_.at(node).name() + "'");
-      check_table(node, *by_node[i]);
-      tables_.push_back(*by_node[i]);
-    }
-  }
+  PGM_DECL bayesian_network(network_structure structure, std::vector<table_type> tables);
 
   /// The network the tables describe: nodes in table order, edges from each table's parents.
   /// Throws model_error if a variable appears with different states in two tables.
-  [[nodiscard]] static bayesian_network from_tables(std::vector<table_type> tables) {
-    std::vector<variable> variables;
-    std::map<std::string, std::size_t, std::less<>> seen;
-    for (const auto& table : tables) {
-      seen.emplace(table.child().name(), variables.size());
-      variables.push_back(table.child());
-    }
-    network_structure structure(variables);
-    for (const auto& table : tables) {
-      for (const auto& parent : table.parents()) {
-        const auto it = seen.find(parent.name());
-        if (it == seen.end()) {
-          throw model_error("'" + parent.name() + "' is a parent of '" + table.child().name() +
-                            "' but has no table of its own");
-        }
-        structure.add_edge(parent.name(), table.child().name());
-      }
-    }
-    return bayesian_network(std::move(structure), std::move(tables));
-  }
+  [[nodiscard]] PGM_DECL static bayesian_network from_tables(std::vector<table_type> tables);
 
   [[nodiscard]] const network_structure& structure() const noexcept { return structure_; }
   [[nodiscard]] const dag& graph() const noexcept { return structure_.graph(); }
@@ -82,11 +46,7 @@ class bayesian_network {
   [[nodiscard]] const std::vector<table_type>& tables() const noexcept { return tables_; }
 
   /// The number of free parameters, sum over nodes of (J - 1)·|Val(Pa)|.
-  [[nodiscard]] std::size_t free_parameters() const {
-    std::size_t total = 0;
-    for (const auto& t : tables_) total += (t.child_cardinality() - 1) * t.configurations();
-    return total;
-  }
+  [[nodiscard]] PGM_DECL std::size_t free_parameters() const;
 
   /// Whether a table is stored sparse (cpt.hpp).
   [[nodiscard]] bool has_sparse_tables() const noexcept {
@@ -96,53 +56,19 @@ class bayesian_network {
   /// The same network with every table dense, for `purpose` (a format without a sparse form,
   /// say), which names it in the error: throws table_too_large when a table would exceed
   /// max_table_cells.
-  [[nodiscard]] bayesian_network dense(std::string_view purpose) const {
-    std::vector<table_type> tables;
-    tables.reserve(tables_.size());
-    for (const auto& t : tables_) {
-      if (t.is_sparse() && t.size() > max_table_cells) {
-        throw table_too_large(std::string(purpose) + " needs every table dense, and the table of '" + t.child().name() +
-                              "', stored sparse (" + std::to_string(t.stored_configurations().size()) + " of " +
-                              std::to_string(t.configurations()) + " parent configurations), would have " +
-                              std::to_string(t.size()) + " cells, more than pgm's limit of " +
-                              std::to_string(max_table_cells) + " (docs/limits.md)");
-      }
-      tables.push_back(t.dense());
-    }
-    return bayesian_network(structure_, std::move(tables));
-  }
+  [[nodiscard]] PGM_DECL bayesian_network dense(std::string_view purpose) const;
 
   friend bool operator==(const bayesian_network&, const bayesian_network&) = default;
 
  private:
-  void check_table(variable_id node, const table_type& table) const {
-    const auto& own = structure_.at(node);
-    if (table.child() != own) {
-      throw model_error("the table of '" + own.name() +
-                        "' describes the variable differently "
-                        "from the network (states, intervals or tags differ)");
-    }
-    const auto parents = structure_.parents(node);
-    if (parents.size() != table.parents().size()) {
-      throw model_error("the table of '" + own.name() + "' has " + std::to_string(table.parents().size()) +
-                        " parents, the graph " + std::to_string(parents.size()));
-    }
-    for (std::size_t i = 0; i < parents.size(); ++i) {
-      const auto& expected = structure_.at(parents[i]);
-      const auto& given = table.parents()[i];
-      if (given.name() != expected.name()) {
-        throw model_error("the table of '" + own.name() + "' lists parent '" + given.name() +
-                          "' where the graph has '" + expected.name() + "'");
-      }
-      if (given != expected) {
-        throw model_error("the table of '" + own.name() + "' describes its parent '" + given.name() +
-                          "' differently from the network");
-      }
-    }
-  }
+  PGM_DECL void check_table(variable_id node, const table_type& table) const;
 
   network_structure structure_;
   std::vector<table_type> tables_;
 };
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/core/impl/bayesian_network.ipp"
+#endif

@@ -9,6 +9,8 @@
 #include <utility>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
+
 namespace pgm {
 
 /// Base of every error pgm reports about its input.
@@ -26,11 +28,7 @@ class data_error : public error {
 /// A problem at a known place in a text file (CSV, BIF, JSON): "file:line:column: what".
 class parse_error : public data_error {
  public:
-  parse_error(std::string file, std::size_t line, std::size_t column, const std::string& what)
-      : data_error(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " + what),
-        file_(std::move(file)),
-        line_(line),
-        column_(column) {}
+  PGM_DECL parse_error(std::string file, std::size_t line, std::size_t column, const std::string& what);
 
   [[nodiscard]] const std::string& file() const noexcept { return file_; }
   [[nodiscard]] std::size_t line() const noexcept { return line_; }
@@ -65,11 +63,7 @@ class not_a_dag : public model_error {
   [[nodiscard]] const std::vector<std::string>& cycle() const noexcept { return cycle_; }
 
  private:
-  static std::string join(const std::vector<std::string>& nodes) {
-    std::string text;
-    for (const auto& node : nodes) text += (text.empty() ? "" : " -> ") + node;
-    return text;
-  }
+  PGM_DECL static std::string join(const std::vector<std::string>& nodes);
   std::vector<std::string> cycle_;
 };
 
@@ -86,3 +80,7 @@ class io_error : public error {
 };
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/core/impl/error.ipp"
+#endif

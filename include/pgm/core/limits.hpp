@@ -9,6 +9,7 @@
 #include <limits>
 #include <string>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 
 namespace pgm {
@@ -62,17 +63,11 @@ namespace detail {
 /// The cells of a table whose child has `child_states` states and whose parents have
 /// `configurations` configurations; throws model_error naming `child` and the limit when
 /// they exceed max_table_cells (the product is never formed when it would overflow).
-[[nodiscard]] inline std::size_t checked_table_cells(const std::string& child, std::size_t child_states,
-                                                     std::size_t configurations) {
-  if (configurations != 0 && child_states > max_table_cells / configurations) {
-    const bool overflows = child_states > std::numeric_limits<std::size_t>::max() / configurations;
-    throw table_too_large("the table of '" + child + "' would have " +
-                          (overflows ? std::string("more than 2^64") : std::to_string(child_states * configurations)) +
-                          " cells (" + std::to_string(child_states) + " states × " + std::to_string(configurations) +
-                          " parent configurations), more than pgm's limit of " + std::to_string(max_table_cells) +
-                          " cells per table (docs/limits.md)");
-  }
-  return child_states * configurations;
-}
+[[nodiscard]] PGM_DECL std::size_t checked_table_cells(const std::string& child, std::size_t child_states,
+                                                       std::size_t configurations);
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/core/impl/limits.ipp"
+#endif

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pgm/core/assert.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 
 namespace pgm {
@@ -20,18 +21,7 @@ class mixed_radix {
   mixed_radix() = default;
 
   /// Throws model_error when a radix is zero or the product overflows.
-  explicit mixed_radix(std::vector<std::size_t> radices) : radices_(std::move(radices)), strides_(radices_.size()) {
-    std::size_t size = 1;
-    for (std::size_t i = radices_.size(); i-- > 0;) {
-      if (radices_[i] == 0) throw model_error("a variable with no states has no configurations");
-      strides_[i] = size;
-      if (size > std::numeric_limits<std::size_t>::max() / radices_[i]) {
-        throw model_error("the number of parent configurations overflows");
-      }
-      size *= radices_[i];
-    }
-    size_ = size;
-  }
+  PGM_DECL explicit mixed_radix(std::vector<std::size_t> radices);
 
   /// Number of configurations (1 for no digits).
   [[nodiscard]] std::size_t size() const noexcept { return size_; }
@@ -41,30 +31,11 @@ class mixed_radix {
   [[nodiscard]] const std::vector<std::size_t>& radices() const noexcept { return radices_; }
   [[nodiscard]] const std::vector<std::size_t>& strides() const noexcept { return strides_; }
 
-  [[nodiscard]] std::size_t encode(std::span<const std::size_t> digit_values) const {
-    PGM_ASSERT(digit_values.size() == radices_.size(), "wrong number of digits");
-    std::size_t index = 0;
-    for (std::size_t i = 0; i < digit_values.size(); ++i) {
-      PGM_ASSERT(digit_values[i] < radices_[i], "digit out of range");
-      index += digit_values[i] * strides_[i];
-    }
-    return index;
-  }
+  [[nodiscard]] PGM_DECL std::size_t encode(std::span<const std::size_t> digit_values) const;
 
-  void decode(std::size_t index, std::span<std::size_t> digit_values) const {
-    PGM_ASSERT(digit_values.size() == radices_.size(), "wrong number of digits");
-    PGM_ASSERT(index < size_, "index out of range");
-    for (std::size_t i = 0; i < radices_.size(); ++i) {
-      digit_values[i] = index / strides_[i];
-      index %= strides_[i];
-    }
-  }
+  PGM_DECL void decode(std::size_t index, std::span<std::size_t> digit_values) const;
 
-  [[nodiscard]] std::vector<std::size_t> decode(std::size_t index) const {
-    std::vector<std::size_t> digit_values(radices_.size());
-    decode(index, digit_values);
-    return digit_values;
-  }
+  [[nodiscard]] PGM_DECL std::vector<std::size_t> decode(std::size_t index) const;
 
   friend bool operator==(const mixed_radix& a, const mixed_radix& b) { return a.radices_ == b.radices_; }
 
@@ -75,3 +46,7 @@ class mixed_radix {
 };
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/core/impl/mixed_radix.ipp"
+#endif

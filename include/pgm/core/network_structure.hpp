@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/dag.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/variable.hpp"
@@ -49,28 +50,13 @@ class network_structure {
 
   [[nodiscard]] std::vector<variable_id> parents(variable_id node) const { return graph_.parents(node); }
   /// The parents' variables, in the order of the node's table.
-  [[nodiscard]] std::vector<variable> parent_variables(variable_id node) const {
-    std::vector<variable> result;
-    for (auto parent : graph_.parents(node)) result.push_back(at(parent));
-    return result;
-  }
+  [[nodiscard]] PGM_DECL std::vector<variable> parent_variables(variable_id node) const;
 
-  [[nodiscard]] std::vector<named_edge> edges() const {
-    std::vector<named_edge> result;
-    for (auto [from, to] : graph_.edges()) result.push_back({at(from).name(), at(to).name()});
-    return result;
-  }
+  [[nodiscard]] PGM_DECL std::vector<named_edge> edges() const;
 
   /// Replaces a variable by one of the same name and cardinality (to attach interval edges
   /// or semantic tags).
-  void update_variable(variable replacement) {
-    const auto node = id(replacement.name());
-    if (replacement.cardinality() != at(node).cardinality()) {
-      throw model_error("variable '" + replacement.name() + "' has " + std::to_string(at(node).cardinality()) +
-                        " states, the replacement " + std::to_string(replacement.cardinality()));
-    }
-    variables_[node.value()] = std::move(replacement);
-  }
+  PGM_DECL void update_variable(variable replacement);
 
   friend bool operator==(const network_structure&, const network_structure&) = default;
 
@@ -85,23 +71,10 @@ namespace pgm {
 
 /// Parses "a->b, c->b" (whitespace allowed). Throws model_error naming the piece that is not
 /// of the form "from->to".
-[[nodiscard]] inline std::vector<named_edge> parse_edge_list(std::string_view text) {
-  std::vector<named_edge> edges;
-  std::size_t number = 0;
-  for (const auto& piece : detail::split(text, ',')) {
-    ++number;
-    const auto arrow = piece.find("->");
-    const auto from =
-        arrow == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(0, arrow));
-    const auto to =
-        arrow == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(arrow + 2));
-    if (from.empty() || to.empty() || to.find("->") != std::string_view::npos) {
-      throw model_error("edge " + std::to_string(number) + " ('" + piece + "') is not of the form 'from->to'");
-    }
-    edges.push_back({std::string(from), std::string(to)});
-  }
-  if (edges.empty()) throw model_error("the edge list is empty");
-  return edges;
-}
+[[nodiscard]] PGM_DECL std::vector<named_edge> parse_edge_list(std::string_view text);
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/core/impl/network_structure.ipp"
+#endif

@@ -29,6 +29,7 @@
 #include <utility>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 
 namespace pgm {
@@ -105,19 +106,7 @@ namespace detail {
 enum class failure_kind : char { error = 'E', out_of_memory = 'M', internal = 'I' };
 
 /// The kind and message of `failure`.
-[[nodiscard]] inline std::string describe_failure(const std::exception_ptr& failure) {
-  try {
-    std::rethrow_exception(failure);
-  } catch (const error& e) {
-    return static_cast<char>(failure_kind::error) + std::string(e.what());
-  } catch (const std::bad_alloc&) {
-    return static_cast<char>(failure_kind::out_of_memory) + std::string("out of memory");
-  } catch (const std::exception& e) {
-    return static_cast<char>(failure_kind::internal) + std::string(e.what());
-  } catch (...) {
-    return static_cast<char>(failure_kind::internal) + std::string("unknown exception");
-  }
-}
+[[nodiscard]] PGM_DECL std::string describe_failure(const std::exception_ptr& failure);
 
 }  // namespace detail
 
@@ -126,32 +115,7 @@ enum class failure_kind : char { error = 'E', out_of_memory = 'M', internal = 'I
 /// every process throws the failure of the lowest item (lowest rank among equals): the process
 /// that had it rethrows its own exception, the others a remote_error (or bad_alloc, or
 /// std::runtime_error for an internal error) with its message. One process only rethrows.
-inline void agree(process_group& group, std::exception_ptr failure, std::size_t item = 0) {
-  if (group.size() == 1) {
-    if (failure) std::rethrow_exception(failure);
-    return;
-  }
-  constexpr auto none = std::numeric_limits<std::uint64_t>::max();
-  const std::uint64_t ranks = group.size();
-  const std::uint64_t largest_item = (none - 1) / ranks - 1;
-  const std::uint64_t key = failure ? std::min<std::uint64_t>(item, largest_item) * ranks + group.rank() : none;
-  const std::uint64_t lowest = group.smallest(key);
-  if (lowest == none) return;
-  const auto root = static_cast<std::size_t>(lowest % ranks);
-  const std::string description = group.broadcast(group.rank() == root ? detail::describe_failure(failure) : "", root);
-  group.mark_failed();
-  if (group.rank() == root) std::rethrow_exception(failure);
-  const std::string message = description.substr(1);
-  switch (static_cast<detail::failure_kind>(description.at(0))) {
-    case detail::failure_kind::error:
-      throw remote_error(message);
-    case detail::failure_kind::out_of_memory:
-      throw std::bad_alloc();
-    case detail::failure_kind::internal:
-      break;
-  }
-  throw std::runtime_error(message);
-}
+PGM_DECL void agree(process_group& group, std::exception_ptr failure, std::size_t item = 0);
 
 /// Runs `phase` on every process and agrees on its failure (see agree).
 template <std::invocable Phase>
@@ -166,3 +130,7 @@ void run_agreed(process_group& group, Phase&& phase) {
 }
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/core/impl/process_group.ipp"
+#endif

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/detail/text.hpp"
 
@@ -24,12 +25,8 @@ class unknown_name : public error {
   /// `kind` is what the name was to name ("independence test"); `known` the names it could be,
   /// in the order to list them; `where`, if not empty, is added to the message in parentheses
   /// after the list (e.g. the folders a task was looked for in).
-  unknown_name(std::string kind, std::string name, std::vector<std::string> known, const std::string& where = {})
-      : error(message(kind, name, known, where)),
-        kind_(std::move(kind)),
-        name_(std::move(name)),
-        known_(std::move(known)),
-        suggestion_(detail::closest_name(name_, known_)) {}
+  PGM_DECL unknown_name(std::string kind, std::string name, std::vector<std::string> known,
+                        const std::string& where = {});
 
   [[nodiscard]] const std::string& kind() const noexcept { return kind_; }
   [[nodiscard]] const std::string& name() const noexcept { return name_; }
@@ -38,12 +35,8 @@ class unknown_name : public error {
   [[nodiscard]] const std::optional<std::string>& suggestion() const noexcept { return suggestion_; }
 
  private:
-  static std::string message(const std::string& kind, const std::string& name, const std::vector<std::string>& known,
-                             const std::string& where) {
-    const auto near = detail::closest_name(name, known);
-    return "unknown " + kind + " '" + name + "'" + (near ? "; did you mean '" + *near + "'?" : "") +
-           " (known: " + detail::list_for_message(known, 40) + (where.empty() ? "" : "; " + where) + ")";
-  }
+  PGM_DECL static std::string message(const std::string& kind, const std::string& name,
+                                      const std::vector<std::string>& known, const std::string& where);
 
   std::string kind_;
   std::string name_;
@@ -72,3 +65,7 @@ template <class Choice, std::size_t N>
 }
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/core/impl/unknown_name.ipp"
+#endif

@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/strong_index.hpp"
 #include "pgm/detail/text.hpp"
@@ -41,23 +42,12 @@ class variable {
 
   /// A discretized quantity: state i is the interval [edges[i], edges[i+1]), labelled "i".
   /// Edges must be finite and strictly increasing.
-  [[nodiscard]] static variable intervals(std::string name, std::vector<double> edges, semantic_tags tags = {}) {
-    if (edges.size() < 2) {
-      throw model_error("variable '" + name + "': interval edges need at least two values");
-    }
-    std::vector<std::string> labels;
-    labels.reserve(edges.size() - 1);
-    for (std::size_t i = 0; i + 1 < edges.size(); ++i) labels.push_back(std::to_string(i));
-    return with_edges(std::move(name), std::move(labels), std::move(edges), std::move(tags));
-  }
+  [[nodiscard]] PGM_DECL static variable intervals(std::string name, std::vector<double> edges,
+                                                   semantic_tags tags = {});
 
   /// Intervals with labels of the caller's choosing (one fewer label than edges).
-  [[nodiscard]] static variable with_edges(std::string name, std::vector<std::string> states, std::vector<double> edges,
-                                           semantic_tags tags = {}) {
-    variable result(std::move(name), std::move(states), std::move(tags));
-    result.set_edges(std::move(edges));
-    return result;
-  }
+  [[nodiscard]] PGM_DECL static variable with_edges(std::string name, std::vector<std::string> states,
+                                                    std::vector<double> edges, semantic_tags tags = {});
 
   [[nodiscard]] const std::string& name() const noexcept { return name_; }
   [[nodiscard]] const std::vector<std::string>& states() const noexcept { return states_; }
@@ -69,79 +59,28 @@ class variable {
   [[nodiscard]] const std::vector<double>& edges() const noexcept { return edges_; }
   [[nodiscard]] bool has_intervals() const noexcept { return !edges_.empty(); }
 
-  [[nodiscard]] std::optional<state_index> find_state(std::string_view label) const {
-    const auto it = std::find(states_.begin(), states_.end(), label);
-    if (it == states_.end()) return std::nullopt;
-    return state_index(static_cast<state_index::rep>(it - states_.begin()));
-  }
+  [[nodiscard]] PGM_DECL std::optional<state_index> find_state(std::string_view label) const;
 
   /// The state with this label; throws model_error naming the variable and its states.
-  [[nodiscard]] state_index state(std::string_view label) const {
-    if (auto found = find_state(label)) return *found;
-    throw model_error("variable '" + name_ + "' has no state '" + std::string(label) +
-                      "' (states: " + detail::list_for_message(states_) + ")");
-  }
+  [[nodiscard]] PGM_DECL state_index state(std::string_view label) const;
 
   /// Where a state lies on the variable's scale: the midpoint of its interval, or its label
   /// read as a number. Nothing for a categorical state.
-  [[nodiscard]] std::optional<double> midpoint(state_index state) const {
-    const auto i = state.value();
-    if (has_intervals()) return 0.5 * (edges_[i] + edges_[i + 1]);
-    auto value = detail::parse_double(states_.at(i));
-    if (value && std::isfinite(*value)) return value;
-    return std::nullopt;
-  }
+  [[nodiscard]] PGM_DECL std::optional<double> midpoint(state_index state) const;
 
   /// The state whose interval holds `value`; values outside the edges go to the outer states.
   /// Requires intervals. Intervals are closed on the left: [edges[i], edges[i+1]).
-  [[nodiscard]] state_index bin(double value) const {
-    const auto inner_begin = edges_.begin() + 1;
-    const auto inner_end = edges_.end() - 1;
-    return state_index(static_cast<state_index::rep>(std::upper_bound(inner_begin, inner_end, value) - inner_begin));
-  }
+  [[nodiscard]] PGM_DECL state_index bin(double value) const;
 
-  [[nodiscard]] variable with_tags(semantic_tags tags) const {
-    variable copy = *this;
-    copy.tags_ = std::move(tags);
-    return copy;
-  }
+  [[nodiscard]] PGM_DECL variable with_tags(semantic_tags tags) const;
 
   /// The same states with interval edges attached (or removed, with an empty vector).
-  void set_edges(std::vector<double> edges) {
-    if (!edges.empty()) {
-      if (edges.size() != states_.size() + 1) {
-        throw model_error("variable '" + name_ + "': " + std::to_string(states_.size()) + " states need " +
-                          std::to_string(states_.size() + 1) + " interval edges, got " + std::to_string(edges.size()));
-      }
-      for (std::size_t i = 0; i < edges.size(); ++i) {
-        if (!std::isfinite(edges[i]) || (i > 0 && !(edges[i - 1] < edges[i]))) {
-          throw model_error("variable '" + name_ + "': interval edges must be finite and strictly increasing");
-        }
-      }
-    }
-    edges_ = std::move(edges);
-  }
+  PGM_DECL void set_edges(std::vector<double> edges);
 
   friend bool operator==(const variable&, const variable&) = default;
 
  private:
-  void validate() const {
-    if (name_.empty()) throw model_error("a variable needs a name");
-    for (char c : name_) {
-      if (c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == ',') {
-        throw model_error("variable name '" + name_ + "' contains whitespace or a comma");
-      }
-    }
-    if (states_.empty()) throw model_error("variable '" + name_ + "' has no states");
-    std::vector<std::string_view> sorted(states_.begin(), states_.end());
-    std::sort(sorted.begin(), sorted.end());
-    for (std::size_t i = 0; i < sorted.size(); ++i) {
-      if (sorted[i].empty()) throw model_error("variable '" + name_ + "' has an empty state label");
-      if (i > 0 && sorted[i] == sorted[i - 1]) {
-        throw model_error("variable '" + name_ + "' has the state '" + std::string(sorted[i]) + "' twice");
-      }
-    }
-  }
+  PGM_DECL void validate() const;
 
   std::string name_;
   std::vector<std::string> states_;
@@ -150,3 +89,7 @@ class variable {
 };
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/core/impl/variable.ipp"
+#endif

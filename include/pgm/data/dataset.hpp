@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/data/missing.hpp"
@@ -28,11 +29,7 @@ using code_vector = std::variant<std::vector<std::uint8_t>, std::vector<std::uin
 
 /// The narrowest code width for a variable with `cardinality` states (pass one more when the
 /// column holds missing values, whose code is the width's largest value).
-[[nodiscard]] inline code_vector make_code_vector(std::size_t cardinality, std::size_t rows = 0) {
-  if (cardinality <= 256) return std::vector<std::uint8_t>(rows);
-  if (cardinality <= 65536) return std::vector<std::uint16_t>(rows);
-  return std::vector<std::uint32_t>(rows);
-}
+[[nodiscard]] PGM_DECL code_vector make_code_vector(std::size_t cardinality, std::size_t rows = 0);
 
 class discrete_column {
  public:
@@ -69,23 +66,10 @@ class discrete_column {
     return std::visit([row](const auto& c) { return static_cast<std::uint32_t>(c[row]); }, codes_);
   }
   /// The state label of a row; throws data_error for a missing value.
-  [[nodiscard]] const std::string& label(std::size_t row) const {
-    const auto c = code(row);
-    if (c >= variable_.cardinality()) {
-      throw data_error("column '" + name() + "' row " + std::to_string(row + 1) + ": the value is missing");
-    }
-    return variable_.states()[c];
-  }
+  [[nodiscard]] PGM_DECL const std::string& label(std::size_t row) const;
   /// Rows whose value is missing (their code is missing_code of the code type).
   [[nodiscard]] std::size_t missing() const noexcept { return missing_; }
-  [[nodiscard]] bool is_missing(std::size_t row) const {
-    return missing_ != 0 && std::visit(
-                                [row](const auto& c) {
-                                  using code_type = typename std::decay_t<decltype(c)>::value_type;
-                                  return c[row] == missing_code<code_type>;
-                                },
-                                codes_);
-  }
+  [[nodiscard]] PGM_DECL bool is_missing(std::size_t row) const;
   [[nodiscard]] const code_vector& codes() const noexcept { return codes_; }
   /// Bytes per stored code: 1, 2 or 4.
   [[nodiscard]] std::size_t code_width() const noexcept {
@@ -93,29 +77,9 @@ class discrete_column {
   }
 
   /// The same codes under a variable of equal cardinality (new labels, edges or tags).
-  [[nodiscard]] discrete_column with_variable(variable replacement) const {
-    if (replacement.cardinality() != variable_.cardinality()) {
-      throw model_error("column '" + name() + "' has " + std::to_string(variable_.cardinality()) +
-                        " states, the replacement variable " + std::to_string(replacement.cardinality()));
-    }
-    return discrete_column(std::move(replacement), codes_, std::in_place, missing_);
-  }
+  [[nodiscard]] PGM_DECL discrete_column with_variable(variable replacement) const;
 
-  [[nodiscard]] discrete_column select(std::span<const std::size_t> rows) const {
-    std::size_t missing = 0;
-    auto picked = std::visit(
-        [&](const auto& c) -> code_vector {
-          using code_type = typename std::decay_t<decltype(c)>::value_type;
-          std::decay_t<decltype(c)> chosen(rows.size());
-          for (std::size_t i = 0; i < rows.size(); ++i) {
-            chosen[i] = c.at(rows[i]);
-            missing += chosen[i] == missing_code<code_type> && missing_ != 0;
-          }
-          return chosen;
-        },
-        codes_);
-    return discrete_column(variable_, std::move(picked), std::in_place, missing);
-  }
+  [[nodiscard]] PGM_DECL discrete_column select(std::span<const std::size_t> rows) const;
 
   friend bool operator==(const discrete_column&, const discrete_column&) = default;
 
@@ -142,11 +106,7 @@ class continuous_column {
     return static_cast<std::size_t>(std::count_if(values_.begin(), values_.end(), [](double v) { return v != v; }));
   }
 
-  [[nodiscard]] continuous_column select(std::span<const std::size_t> rows) const {
-    std::vector<double> picked(rows.size());
-    for (std::size_t i = 0; i < rows.size(); ++i) picked[i] = values_.at(rows[i]);
-    return continuous_column(name_, std::move(picked), tags_);
-  }
+  [[nodiscard]] PGM_DECL continuous_column select(std::span<const std::size_t> rows) const;
 
   /// Equal names, tags and values, a missing value (NaN) equal to a missing one.
   friend bool operator==(const continuous_column& a, const continuous_column& b) {
@@ -182,35 +142,13 @@ class dataset {
   [[nodiscard]] const std::string& source() const noexcept { return source_; }
 
   /// Appends a column. Throws data_error on a repeated name or a different row count.
-  void add(data_column c) {
-    const auto& name = column_name(c);
-    if (index_.contains(name)) throw data_error(prefix() + "the column '" + name + "' appears twice");
-    const auto n = column_size(c);
-    if (!columns_.empty() && n != rows_) {
-      throw data_error(prefix() + "column '" + name + "' has " + std::to_string(n) + " rows, the others " +
-                       std::to_string(rows_));
-    }
-    rows_ = n;
-    index_.emplace(name, columns_.size());
-    columns_.push_back(std::move(c));
-  }
+  PGM_DECL void add(data_column c);
 
   /// Replaces the column of the same name (e.g. by its discretized form), keeping its place.
-  void replace(data_column c) {
-    const auto i = position(column_name(c));
-    if (column_size(c) != rows_) {
-      throw data_error(prefix() + "replacement column '" + column_name(c) + "' has " + std::to_string(column_size(c)) +
-                       " rows, the data " + std::to_string(rows_));
-    }
-    columns_[i] = std::move(c);
-  }
+  PGM_DECL void replace(data_column c);
 
   [[nodiscard]] bool contains(std::string_view name) const { return index_.find(name) != index_.end(); }
-  [[nodiscard]] std::vector<std::string> names() const {
-    std::vector<std::string> result;
-    for (const auto& c : columns_) result.push_back(column_name(c));
-    return result;
-  }
+  [[nodiscard]] PGM_DECL std::vector<std::string> names() const;
   [[nodiscard]] const std::vector<data_column>& columns() const noexcept { return columns_; }
   [[nodiscard]] const data_column& at(std::string_view name) const { return columns_[position(name)]; }
   [[nodiscard]] bool is_discrete(std::string_view name) const {
@@ -218,56 +156,21 @@ class dataset {
   }
 
   /// The discrete column of this name; throws data_error if it is missing or continuous.
-  [[nodiscard]] const discrete_column& discrete(std::string_view name) const {
-    const auto& c = at(name);
-    if (const auto* d = std::get_if<discrete_column>(&c)) return *d;
-    throw data_error(prefix() + "column '" + std::string(name) + "' holds continuous values; discretize it first");
-  }
+  [[nodiscard]] PGM_DECL const discrete_column& discrete(std::string_view name) const;
   /// The continuous column of this name; throws data_error if it is missing or discrete.
-  [[nodiscard]] const continuous_column& continuous(std::string_view name) const {
-    const auto& c = at(name);
-    if (const auto* d = std::get_if<continuous_column>(&c)) return *d;
-    throw data_error(prefix() + "column '" + std::string(name) + "' is discrete, not numeric");
-  }
+  [[nodiscard]] PGM_DECL const continuous_column& continuous(std::string_view name) const;
 
   /// The rows at the given positions, in that order.
-  [[nodiscard]] dataset select_rows(std::span<const std::size_t> rows) const {
-    for (auto row : rows) {
-      if (row >= rows_) throw data_error(prefix() + "row " + std::to_string(row) + " is out of range");
-    }
-    dataset result(source_);
-    for (const auto& c : columns_) {
-      result.add(std::visit([&](const auto& typed) -> data_column { return typed.select(rows); }, c));
-    }
-    if (columns_.empty()) result.rows_ = rows.size();
-    return result;
-  }
+  [[nodiscard]] PGM_DECL dataset select_rows(std::span<const std::size_t> rows) const;
   /// Rows [begin, end).
-  [[nodiscard]] dataset slice(std::size_t begin, std::size_t end) const {
-    end = std::min(end, rows_);
-    std::vector<std::size_t> rows;
-    for (std::size_t r = begin; r < end; ++r) rows.push_back(r);
-    return select_rows(rows);
-  }
+  [[nodiscard]] PGM_DECL dataset slice(std::size_t begin, std::size_t end) const;
   /// Only the named columns, in the given order.
-  [[nodiscard]] dataset select_columns(std::span<const std::string> names) const {
-    dataset result(source_);
-    for (const auto& name : names) result.add(at(name));
-    if (names.empty()) result.rows_ = rows_;
-    return result;
-  }
+  [[nodiscard]] PGM_DECL dataset select_columns(std::span<const std::string> names) const;
 
   friend bool operator==(const dataset& a, const dataset& b) { return a.rows_ == b.rows_ && a.columns_ == b.columns_; }
 
  private:
-  std::size_t position(std::string_view name) const {
-    const auto it = index_.find(name);
-    if (it == index_.end()) {
-      throw data_error(prefix() + "there is no column '" + std::string(name) +
-                       "' (columns: " + detail::list_for_message(names()) + ")");
-    }
-    return it->second;
-  }
+  PGM_DECL std::size_t position(std::string_view name) const;
   std::string prefix() const { return source_.empty() ? std::string() : source_ + ": "; }
 
   std::string source_;
@@ -277,3 +180,7 @@ class dataset {
 };
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/data/impl/dataset.ipp"
+#endif

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/decide/assignment.hpp"
@@ -64,13 +65,7 @@ struct explanation {
   [[nodiscard]] bool failure_predicted() const noexcept { return predicted < epsilon; }
   /// Whether the target is predicted to succeed (> ε); if not, it is only the best there is.
   [[nodiscard]] bool target_succeeds() const noexcept { return target_predicted > epsilon; }
-  [[nodiscard]] std::vector<variable_change> responsible() const {
-    std::vector<variable_change> result;
-    for (const auto& c : changes) {
-      if (c.moves()) result.push_back(c);
-    }
-    return result;
-  }
+  [[nodiscard]] PGM_DECL std::vector<variable_change> responsible() const;
 };
 
 namespace detail {
@@ -83,47 +78,9 @@ inline std::optional<interval> interval_of(const variable& v, std::size_t state)
 }  // namespace detail
 
 /// The explanation for configuration u of a success table (see prevention_target for u*).
-[[nodiscard]] inline explanation explain(const cpt<double>& table, std::size_t success_state, std::size_t configuration,
-                                         std::span<const bool> controllable, const prevention_options& options = {}) {
-  const auto target = prevention_target(table, success_state, configuration, controllable, options);
-  explanation result;
-  result.success_variable = table.child().name();
-  result.success_state = table.child().states()[success_state];
-  result.epsilon = options.epsilon;
-  result.configuration = configuration;
-  result.target = target;
-  result.predicted = table(state_index(static_cast<state_index::rep>(success_state)), config_index(configuration));
-  result.target_predicted = table(state_index(static_cast<state_index::rep>(success_state)), config_index(target));
-  const auto from = table.parent_codes(config_index(configuration));
-  const auto to = table.parent_codes(config_index(target));
-  double squared = 0.0;
-  bool measurable = true;
-  for (std::size_t p = 0; p < from.size(); ++p) {
-    if (!controllable[p]) continue;
-    const auto& v = table.parents()[p];
-    variable_change change{v.name(),
-                           v.tags().unit,
-                           from[p],
-                           to[p],
-                           v.states()[from[p]],
-                           v.states()[to[p]],
-                           detail::interval_of(v, from[p]),
-                           detail::interval_of(v, to[p]),
-                           std::nullopt};
-    const auto a = v.midpoint(state_index(static_cast<state_index::rep>(from[p])));
-    const auto b = v.midpoint(state_index(static_cast<state_index::rep>(to[p])));
-    if (a && b) {
-      change.move = *b - *a;
-      squared += (*b - *a) * (*b - *a);
-    } else if (change.moves()) {
-      measurable = false;
-    }
-    result.steps += from[p] > to[p] ? from[p] - to[p] : to[p] - from[p];
-    result.changes.push_back(std::move(change));
-  }
-  if (measurable) result.distance_units = std::sqrt(squared);
-  return result;
-}
+[[nodiscard]] PGM_DECL explanation explain(const cpt<double>& table, std::size_t success_state,
+                                           std::size_t configuration, std::span<const bool> controllable,
+                                           const prevention_options& options = {});
 
 /// What prevention decides for one planned assignment on a network.
 struct prevention_plan {
@@ -202,40 +159,24 @@ template <InferenceEngine Engine>
 }
 
 /// The same with variable elimination on `network`.
-[[nodiscard]] inline prevention_plan plan_prevention(const bayesian_network& network, const success_event& success,
-                                                     const assignment& planned,
-                                                     std::span<const std::string> controllable,
-                                                     const prevention_options& options = {},
-                                                     const prediction_options& prediction = {}) {
-  variable_elimination engine(network, {prediction.heuristic});
-  return plan_prevention(engine, success, planned, controllable, options, prediction);
-}
+[[nodiscard]] PGM_DECL prevention_plan plan_prevention(const bayesian_network& network, const success_event& success,
+                                                       const assignment& planned,
+                                                       std::span<const std::string> controllable,
+                                                       const prevention_options& options = {},
+                                                       const prediction_options& prediction = {});
 
 /// The variables prevention may move when the user names none: every parent of the success
 /// variable, in table order.
-[[nodiscard]] inline std::vector<std::string> default_controllable(const bayesian_network& network,
-                                                                   const success_event& success) {
-  std::vector<std::string> names;
-  for (const auto& p : network.table(node_of(network, success.variable)).parents()) names.push_back(p.name());
-  return names;
-}
+[[nodiscard]] PGM_DECL std::vector<std::string> default_controllable(const bayesian_network& network,
+                                                                     const success_event& success);
 
 /// The value prevention suggests for each controllable variable of `why`: an unchanged one
 /// keeps the number planned for it; an interval variable otherwise goes to the middle of its
 /// target interval; any other variable to its target state's label.
-[[nodiscard]] inline assignment suggested_values(const explanation& why, const assignment& planned) {
-  assignment result;
-  for (const auto& c : why.changes) {
-    const auto given = planned.find(c.variable);
-    if (!c.moves() && given != planned.end() && std::holds_alternative<double>(given->second)) {
-      result.emplace(c.variable, given->second);
-    } else if (c.to_interval) {
-      result.emplace(c.variable, c.to_interval->midpoint());
-    } else {
-      result.emplace(c.variable, c.to_label);
-    }
-  }
-  return result;
-}
+[[nodiscard]] PGM_DECL assignment suggested_values(const explanation& why, const assignment& planned);
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/decide/impl/explain.ipp"
+#endif

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/inference/inference_engine.hpp"
@@ -168,12 +169,13 @@ template <InferenceEngine Engine>
 }
 
 /// The same by variable elimination on `network`.
-[[nodiscard]] inline cpt<double> success_table(const bayesian_network& network, std::string_view success,
-                                               std::span<const std::string> given,
-                                               std::span<const observation> observed = {},
-                                               elimination_heuristic heuristic = elimination_heuristic::min_fill) {
-  variable_elimination engine(network, {heuristic});
-  return success_table(engine, success, given, observed);
-}
+[[nodiscard]] PGM_DECL cpt<double> success_table(const bayesian_network& network, std::string_view success,
+                                                 std::span<const std::string> given,
+                                                 std::span<const observation> observed = {},
+                                                 elimination_heuristic heuristic = elimination_heuristic::min_fill);
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/decide/impl/success_table.ipp"
+#endif

@@ -9,14 +9,14 @@
 #include <string>
 #include <string_view>
 
+#include "pgm/core/compilation.hpp"
+
 namespace pgm::detail {
 
-[[nodiscard]] inline std::string crc32_hex(std::string_view bytes) {
-  boost::crc_32_type crc;
-  crc.process_bytes(bytes.data(), bytes.size());
-  char text[9];
-  std::snprintf(text, sizeof text, "%08x", static_cast<unsigned>(crc.checksum()));
-  return text;
-}
+[[nodiscard]] PGM_DECL std::string crc32_hex(std::string_view bytes);
 
 }  // namespace pgm::detail
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/detail/impl/checksum.ipp"
+#endif

@@ -42,6 +42,7 @@
 #include <vector>
 
 #include "pgm/core/assert.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/detail/process_group.hpp"
 
 namespace pgm::detail {
@@ -95,14 +96,7 @@ struct parallel_options {
 /// The threads (the calling one included) that a job of `n` items gets: at most one per chunk,
 /// at most `options.threads`, at least `options.min_items_per_thread` items each, and 0 when
 /// this process owns no items.
-[[nodiscard]] inline unsigned worker_count(std::size_t n, const parallel_options& options) noexcept {
-  const std::size_t items = options.share.of(n).size();
-  if (items == 0) return 0;
-  const std::size_t chunk = std::max<std::size_t>(1, options.chunk);
-  const std::size_t chunks = items / chunk + (items % chunk != 0);
-  const std::size_t by_work = std::max<std::size_t>(1, items / std::max<std::size_t>(1, options.min_items_per_thread));
-  return static_cast<unsigned>(std::min({std::size_t{resolve_threads(options.threads)}, chunks, by_work}));
-}
+[[nodiscard]] PGM_DECL unsigned worker_count(std::size_t n, const parallel_options& options) noexcept;
 
 /// A callable that builds a thread's state: a value that can be moved out at the end.
 template <class F>
@@ -255,11 +249,11 @@ void gather_slots(process_group& group, std::size_t n, Write&& write, Read&& rea
 /// Collective: replaces `values` with their sum over all processes (count tables), after an
 /// agreement that no process failed (`failure`: this process's, if it failed making them;
 /// see agree). One process only rethrows its failure.
-inline void sum_over_processes(process_group& group, std::span<std::uint64_t> values,
-                               std::exception_ptr failure = nullptr) {
-  agree(group, failure);
-  if (group.size() == 1) return;
-  group.sum(values);
-}
+PGM_DECL void sum_over_processes(process_group& group, std::span<std::uint64_t> values,
+                                 std::exception_ptr failure = nullptr);
 
 }  // namespace pgm::detail
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/detail/impl/parallel_for.ipp"
+#endif

@@ -12,6 +12,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/process_group.hpp"
 
 namespace pgm::detail {
@@ -62,13 +63,12 @@ class byte_reader {
   [[nodiscard]] bool at_end() const noexcept { return bytes_.empty(); }
 
  private:
-  std::string_view take(std::size_t n) {
-    if (n > bytes_.size()) throw std::logic_error("bytes from another process end early");
-    const auto part = bytes_.substr(0, n);
-    bytes_.remove_prefix(n);
-    return part;
-  }
+  PGM_DECL std::string_view take(std::size_t n);
   std::string_view bytes_;
 };
 
 }  // namespace pgm::detail
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/detail/impl/process_group.ipp"
+#endif

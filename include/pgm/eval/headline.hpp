@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/eval/experiment.hpp"
 #include "pgm/eval/scenario.hpp"
@@ -21,29 +22,17 @@ struct headline_entry {
 
 /// One entry per strategy of `scenario_name`'s `target` at |D| = 0, in the summary's order,
 /// taken from the first weight listed.
-[[nodiscard]] inline std::vector<headline_entry> prevention_at_zero_data(const std::vector<aggregated_point>& summary,
-                                                                         const std::string& scenario_name,
-                                                                         const std::string& target) {
-  std::vector<headline_entry> entries;
-  std::set<std::string, std::less<>> shown;
-  for (const auto& p : summary) {
-    if (p.scenario != scenario_name || p.target != target || p.rows != 0 ||
-        p.metric != experiment_metric::failure_prevention)
-      continue;
-    if (shown.insert(p.strategy).second) entries.push_back({p.strategy, p.mean});
-  }
-  return entries;
-}
+[[nodiscard]] PGM_DECL std::vector<headline_entry> prevention_at_zero_data(const std::vector<aggregated_point>& summary,
+                                                                           const std::string& scenario_name,
+                                                                           const std::string& target);
 
 /// "<title>, <target>: success after prevention at |D| = 0:  oracle 99.9%  mle 57%  …", as
 /// `pgm experiment` prints it (percentages to 3 significant digits).
-[[nodiscard]] inline std::string headline(const scenario& s, const std::string& target,
-                                          const std::vector<aggregated_point>& summary) {
-  std::string text = s.title + ", " + target + ": success after prevention at |D| = 0:";
-  for (const auto& entry : prevention_at_zero_data(summary, s.name, target)) {
-    text += "  " + entry.strategy + " " + detail::format_short(100 * entry.success, 3) + "%";
-  }
-  return text;
-}
+[[nodiscard]] PGM_DECL std::string headline(const scenario& s, const std::string& target,
+                                            const std::vector<aggregated_point>& summary);
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/eval/impl/headline.ipp"
+#endif

@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/unknown_name.hpp"
 #include "pgm/detail/file.hpp"
@@ -35,14 +36,7 @@ inline constexpr std::array<std::string_view, 9> summary_columns{"scenario", "ta
 }  // namespace detail
 
 /// Writes the points as CSV: scenario, target, strategy, w, rows, repetition, metric, value.
-inline void write_points_csv(const std::vector<experiment_point>& points, std::ostream& out) {
-  out << "scenario,target,strategy,w,rows,repetition,metric,value\n";
-  for (const auto& p : points) {
-    out << detail::csv_text(p.scenario) << ',' << detail::csv_text(p.target) << ',' << detail::csv_text(p.strategy)
-        << ',' << detail::csv_text(p.weight) << ',' << p.rows << ',' << p.repetition << ',' << to_string(p.metric)
-        << ',' << detail::format_double(p.value) << '\n';
-  }
-}
+PGM_DECL void write_points_csv(const std::vector<experiment_point>& points, std::ostream& out);
 
 /// Writes the points to a file atomically (see the stream overload).
 inline void write_points_csv(const std::vector<experiment_point>& points, const std::filesystem::path& path) {
@@ -50,15 +44,7 @@ inline void write_points_csv(const std::vector<experiment_point>& points, const 
 }
 
 /// Writes the summary as CSV: scenario, target, strategy, w, rows, metric, mean, sd, repetitions.
-inline void write_summary_csv(const std::vector<aggregated_point>& summary, std::ostream& out) {
-  out << detail::join(detail::summary_columns, ",") << '\n';
-  for (const auto& p : summary) {
-    out << detail::csv_text(p.scenario) << ',' << detail::csv_text(p.target) << ',' << detail::csv_text(p.strategy)
-        << ',' << detail::csv_text(p.weight) << ',' << p.rows << ',' << to_string(p.metric) << ','
-        << detail::format_double(p.mean) << ',' << detail::format_double(p.standard_deviation) << ',' << p.repetitions
-        << '\n';
-  }
-}
+PGM_DECL void write_summary_csv(const std::vector<aggregated_point>& summary, std::ostream& out);
 
 /// Writes the summary to a file atomically (see the stream overload).
 inline void write_summary_csv(const std::vector<aggregated_point>& summary, const std::filesystem::path& path) {
@@ -67,66 +53,8 @@ inline void write_summary_csv(const std::vector<aggregated_point>& summary, cons
 
 /// Reads a summary as write_summary_csv writes it (columns in any order, others ignored).
 /// Errors name `source`, the line and column, the column's name and what was expected.
-[[nodiscard]] inline std::vector<aggregated_point> parse_summary_csv(std::string_view text, const std::string& source) {
-  detail::csv_scanner scanner(text, source, ',');
-  std::vector<detail::csv_field> fields;
-  if (!scanner.next(fields)) throw parse_error(source, 1, 1, "the file is empty; expected a summary's header row");
-  std::array<std::size_t, detail::summary_columns.size()> position{};
-  for (std::size_t c = 0; c < detail::summary_columns.size(); ++c) {
-    std::optional<std::size_t> found;
-    for (std::size_t f = 0; f < fields.size(); ++f) {
-      if (fields[f].text == detail::summary_columns[c]) found = f;
-    }
-    if (!found) {
-      throw parse_error(source, 1, 1,
-                        "the header has no column '" + std::string(detail::summary_columns[c]) + "' (a summary has " +
-                            detail::join(detail::summary_columns) + ")");
-    }
-    position[c] = *found;
-  }
-  const std::size_t width = fields.size();
-  std::vector<aggregated_point> summary;
-  while (scanner.next(fields)) {
-    if (fields.size() != width) {
-      throw parse_error(
-          source, fields.back().line, fields.back().column,
-          "expected " + std::to_string(width) + " fields as in the header, found " + std::to_string(fields.size()));
-    }
-    auto field = [&](std::size_t c) -> const detail::csv_field& { return fields[position[c]]; };
-    auto fail = [&](std::size_t c, const std::string& what) {
-      throw parse_error(source, field(c).line, field(c).column,
-                        "column '" + std::string(detail::summary_columns[c]) + "': " + what + ", got '" +
-                            std::string(field(c).text) + "'");
-    };
-    auto whole = [&](std::size_t c) {
-      const auto digits = field(c).text;
-      std::size_t value = 0;
-      const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), value);
-      if (digits.empty() || ec != std::errc{} || end != digits.data() + digits.size())
-        fail(c, "expected a whole number");
-      return value;
-    };
-    auto real = [&](std::size_t c) {
-      const auto value = detail::parse_double(field(c).text);
-      if (!value || !std::isfinite(*value)) fail(c, "expected a finite number");
-      return *value;
-    };
-    auto name = [&](std::size_t c) {
-      if (field(c).text.empty()) fail(c, "expected a name");
-      return std::string(field(c).text);
-    };
-    auto metric = [&](std::size_t c) {
-      try {
-        return parse_experiment_metric(field(c).text);
-      } catch (const unknown_name& e) {
-        throw parse_error(source, field(c).line, field(c).column,
-                          "column '" + std::string(detail::summary_columns[c]) + "': " + e.what());
-      }
-    };
-    summary.push_back({name(0), name(1), name(2), name(3), whole(4), metric(5), real(6), real(7), whole(8)});
-  }
-  return summary;
-}
+[[nodiscard]] PGM_DECL std::vector<aggregated_point> parse_summary_csv(std::string_view text,
+                                                                       const std::string& source);
 
 /// Reads a summary file; see parse_summary_csv.
 [[nodiscard]] inline std::vector<aggregated_point> read_summary_csv(const std::filesystem::path& path) {
@@ -134,3 +62,7 @@ inline void write_summary_csv(const std::vector<aggregated_point>& summary, cons
 }
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/eval/impl/result_tables.ipp"
+#endif

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/process_group.hpp"
 #include "pgm/eval/experiment.hpp"
@@ -36,37 +37,18 @@ struct run_scenarios_options {
 
 /// One scenario's points by the protocol (pgm::run_experiment); an error is prefixed with the
 /// scenario's file.
-[[nodiscard]] inline std::vector<experiment_point> run_scenario(const scenario& s, const task_source& source,
-                                                                const experiment_options& options) {
-  try {
-    return run_experiment(s, source, options);
-  } catch (const error& e) {
-    throw error(s.source.string() + ": " + e.what());
-  }
-}
+[[nodiscard]] PGM_DECL std::vector<experiment_point> run_scenario(const scenario& s, const task_source& source,
+                                                                  const experiment_options& options);
 
 /// Runs the scenarios in order into `folder`. The folder is checked before any work and made
 /// once the first scenario is done; an error in a scenario is prefixed with its file.
 /// With `experiment.across_processes`, the jobs are split over the processes and process 0
 /// alone writes (the others return empty report_files).
-inline report_files run_scenarios(const std::vector<scenario>& scenarios, const task_source& source,
-                                  const std::filesystem::path& folder, const run_scenarios_options& options = {}) {
-  auto& group = options.experiment.across_processes ? processes() : lone_process();
-  std::optional<report_writer> writer;
-  run_agreed(group, [&] {
-    if (group.rank() == 0) writer.emplace(folder, report_options{options.render_plots, options.note, options.headline});
-  });
-  auto experiment = options.experiment;
-  experiment.note = options.note;
-  for (const auto& s : scenarios) {
-    experiment.progress = nullptr;
-    if (options.progress) {
-      experiment.progress = [&](std::size_t done, std::size_t total) { options.progress(s, done, total); };
-    }
-    auto points = run_scenario(s, source, experiment);
-    if (writer) writer->add(s, std::move(points));
-  }
-  return writer ? writer->finish() : report_files{};
-}
+PGM_DECL report_files run_scenarios(const std::vector<scenario>& scenarios, const task_source& source,
+                                    const std::filesystem::path& folder, const run_scenarios_options& options = {});
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/eval/impl/run_scenarios.ipp"
+#endif

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/unknown_name.hpp"
 #include "pgm/detail/named_registry.hpp"
@@ -164,11 +165,8 @@ class engine_registry {
   void add(std::string name, engine_factory factory) { factories_.add(std::move(name), std::move(factory)); }
 
   /// The engine of that name for `network`; unknown_name otherwise.
-  [[nodiscard]] any_inference_engine make(std::string_view name, const bayesian_network& network,
-                                          const inference_options& options = {}) const {
-    if (auto factory = factories_.find(name)) return (*factory)(network, options);
-    throw unknown_name("inference engine", std::string(name), names());
-  }
+  [[nodiscard]] PGM_DECL any_inference_engine make(std::string_view name, const bayesian_network& network,
+                                                   const inference_options& options = {}) const;
 
   [[nodiscard]] std::vector<std::string> names() const { return factories_.names(); }
 
@@ -194,3 +192,7 @@ struct register_engine {
 };
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/inference/impl/engine_registry.ipp"
+#endif

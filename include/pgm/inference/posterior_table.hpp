@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/text.hpp"
 #include "pgm/core/unknown_name.hpp"
@@ -53,83 +54,26 @@ struct posterior_table_options {
 
 /// "X,Y" → {"X", "Y"}. Throws model_error for an empty list or an empty name; unknown and
 /// repeated names are reported by `query`.
-[[nodiscard]] inline std::vector<std::string> parse_query_variables(std::string_view text) {
-  auto names = detail::split(text, ',');
-  if (names.empty()) throw model_error("the query names no variable; give one or more, e.g. --query X,Y");
-  for (const auto& name : names) {
-    if (name.empty()) throw model_error("the query '" + std::string(text) + "' has an empty variable name");
-  }
-  return names;
-}
+[[nodiscard]] PGM_DECL std::vector<std::string> parse_query_variables(std::string_view text);
 
 /// "a=s,b=t" → {a: s, b: t}; an empty text is no evidence. Throws model_error for a piece
 /// that is not name=state or a variable observed twice; unknown variables and states are
 /// reported by `query`.
-[[nodiscard]] inline evidence parse_evidence(std::string_view text) {
-  evidence result;
-  for (const auto& piece : detail::split(text, ',')) {
-    const auto equals = piece.find('=');
-    const auto name =
-        equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(0, equals));
-    const auto state =
-        equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(equals + 1));
-    if (name.empty() || state.empty()) {
-      throw model_error("the evidence '" + piece + "' is not of the form variable=state");
-    }
-    if (!result.emplace(std::string(name), std::string(state)).second) {
-      throw model_error("'" + std::string(name) + "' is observed twice in the evidence");
-    }
-  }
-  return result;
-}
+[[nodiscard]] PGM_DECL evidence parse_evidence(std::string_view text);
 
 /// "X=x,Z=z" → do(X = x, Z = z), as --do spells interventions; an empty text is none. Throws
 /// model_error for a piece that is not name=state or a variable set twice.
-[[nodiscard]] inline intervention parse_intervention(std::string_view text) {
-  intervention result;
-  for (const auto& [name, state] : parse_evidence(text)) result.emplace(name, state);
-  return result;
-}
+[[nodiscard]] PGM_DECL intervention parse_intervention(std::string_view text);
 
 /// "X=0.2:0.8,Y=1:2:0" → {X: [0.2, 0.8], Y: [1, 2, 0]}, one weight per state in the variable's
 /// order; an empty text is none. Throws model_error for a piece that is not name=w:w…, a weight
 /// that is not a finite number, or a variable given twice; the weights' count and values are
 /// checked against the network by resolve_evidence.
-[[nodiscard]] inline soft_evidence parse_soft_evidence(std::string_view text) {
-  soft_evidence result;
-  for (const auto& piece : detail::split(text, ',')) {
-    const auto equals = piece.find('=');
-    const auto name =
-        equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(0, equals));
-    const auto weights =
-        equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(equals + 1));
-    if (name.empty() || weights.empty()) {
-      throw model_error("the soft evidence '" + piece + "' is not of the form variable=w1:w2:…, e.g. rain=0.2:0.8");
-    }
-    std::vector<double> values;
-    for (const auto& number : detail::split(weights, ':')) {
-      const auto value = detail::parse_double(number);
-      if (!value || !std::isfinite(*value)) {
-        throw model_error("the soft evidence on '" + std::string(name) + "' has the weight " +
-                          detail::quoted_number(number) + ", which is not a finite number");
-      }
-      values.push_back(*value);
-    }
-    if (!result.emplace(std::string(name), std::move(values)).second) {
-      throw model_error("'" + std::string(name) + "' has soft evidence twice");
-    }
-  }
-  return result;
-}
+[[nodiscard]] PGM_DECL soft_evidence parse_soft_evidence(std::string_view text);
 
 namespace detail {
 
-[[nodiscard]] inline std::string format_probability(double value, int digits) {
-  if (digits < 1 || digits > 17) {
-    throw model_error("digits must be between 1 and 17, got " + std::to_string(digits));
-  }
-  return format_short(value, digits);
-}
+[[nodiscard]] PGM_DECL std::string format_probability(double value, int digits);
 
 /// Calls `row(codes, probability)` for every joint state, the last variable fastest (the
 /// order of the posterior's table).
@@ -154,48 +98,11 @@ namespace detail {
 
 /// `"evidence": {...}` and, when there is any, `"soft_evidence": {...}` and `"do": {...}`, each
 /// with a leading two-space indent and a trailing ",\n".
-[[nodiscard]] inline std::string json_evidence(const evidence& observed, const soft_evidence& soft,
-                                               const std::function<std::string(double)>& number,
-                                               const intervention& set = {}) {
-  std::string text;
-  if (!set.empty()) {
-    text += "  \"do\": {";
-    bool first = true;
-    for (const auto& [name, state] : set) {
-      text += (first ? "" : ", ") + json_text(name) + ": " + json_text(state);
-      first = false;
-    }
-    text += "},\n";
-  }
-  text += "  \"evidence\": {";
-  bool first = true;
-  for (const auto& [name, state] : observed) {
-    text += (first ? "" : ", ") + json_text(name) + ": " + json_text(state);
-    first = false;
-  }
-  text += "},\n";
-  if (!soft.empty()) {
-    text += "  \"soft_evidence\": {";
-    first = true;
-    for (const auto& [name, weights] : soft) {
-      text += (first ? "" : ", ") + json_text(name) + ": [";
-      for (std::size_t k = 0; k < weights.size(); ++k) text += (k ? ", " : "") + number(weights[k]);
-      text += "]";
-      first = false;
-    }
-    text += "},\n";
-  }
-  return text;
-}
+[[nodiscard]] PGM_DECL std::string json_evidence(const evidence& observed, const soft_evidence& soft,
+                                                 const std::function<std::string(double)>& number,
+                                                 const intervention& set = {});
 
-inline void check_table_options(const posterior_table_options& options, std::span<const variable> variables) {
-  static_cast<void>(format_probability(0.0, options.digits));  // check the digits before writing anything
-  for (const auto& v : variables) {
-    if (v.name() == "probability" || v.name() == "standard_error") {
-      throw model_error("the query variable '" + v.name() + "' would share its name with the " + v.name() + " column");
-    }
-  }
-}
+PGM_DECL void check_table_options(const posterior_table_options& options, std::span<const variable> variables);
 
 }  // namespace detail
 
@@ -205,143 +112,27 @@ inline void check_table_options(const posterior_table_options& options, std::spa
 /// [{"X": state, ..., "probability": p[, "standard_error": se]}, ...]}. Rows in table order,
 /// the last query variable fastest. Throws model_error for digits outside 1..17 or a query
 /// variable named like a column.
-inline void write_posterior_table(std::ostream& out, const posterior& p, const evidence& observed,
-                                  const posterior_table_options& options = {}, const soft_evidence& soft = {},
-                                  const intervention& set = {}) {
-  const std::function<std::string(double)> number = [&](double v) {
-    return detail::format_probability(v, options.digits);
-  };
-  detail::check_table_options(options, p.variables);
-  const bool sampled = !p.standard_errors.empty();
-  std::string text;
-  if (options.format == posterior_format::csv) {
-    for (const auto& v : p.variables) text += text::csv_escape(v.name(), ',') + ",";
-    text += sampled ? "probability,standard_error\n" : "probability\n";
-    std::size_t row = 0;
-    detail::for_each_joint_state(p, [&](const std::vector<std::size_t>& codes, double value) {
-      for (std::size_t k = 0; k < codes.size(); ++k) {
-        text += text::csv_escape(p.variables[k].states()[codes[k]], ',') + ",";
-      }
-      text += number(value);
-      if (sampled) text += "," + number(p.standard_errors[row]);
-      text += "\n";
-      ++row;
-    });
-  } else {
-    text += "{\n  \"query\": [";
-    for (std::size_t k = 0; k < p.variables.size(); ++k) {
-      text += (k ? ", " : "") + detail::json_text(p.variables[k].name());
-    }
-    text += "],\n" + detail::json_evidence(observed, soft, number, set);
-    text += "  \"evidence_probability\": " + number(p.evidence_probability) + ",\n";
-    if (p.evidence_probability < std::numeric_limits<double>::min()) {
-      // Beyond a double: the logarithm carries it.
-      text += "  \"log_evidence_probability\": " + detail::format_double(p.log_evidence_probability) + ",\n";
-    }
-    if (!p.engine.empty()) text += "  \"engine\": " + detail::json_text(p.engine) + ",\n";
-    text += "  \"distribution\": [";
-    bool first = true;
-    std::size_t row = 0;
-    detail::for_each_joint_state(p, [&](const std::vector<std::size_t>& codes, double value) {
-      text += first ? "\n    {" : ",\n    {";
-      first = false;
-      for (std::size_t k = 0; k < codes.size(); ++k) {
-        text += detail::json_text(p.variables[k].name()) + ": " + detail::json_text(p.variables[k].states()[codes[k]]) +
-                ", ";
-      }
-      text += "\"probability\": " + number(value);
-      if (sampled) text += ", \"standard_error\": " + number(p.standard_errors[row]);
-      text += "}";
-      ++row;
-    });
-    text += "\n  ]\n}\n";
-  }
-  out << text;
-}
+PGM_DECL void write_posterior_table(std::ostream& out, const posterior& p, const evidence& observed,
+                                    const posterior_table_options& options = {}, const soft_evidence& soft = {},
+                                    const intervention& set = {});
 
 /// Writes every marginal of `marginals`: CSV `variable,state,probability[,standard_error]`, one
 /// row per state; JSON {"evidence": …, "evidence_probability": P(e), "engine": name,
 /// "marginals": {"X": {"state": p, …}, …}[, "standard_errors": {…}]}.
-inline void write_marginals_table(std::ostream& out, const std::vector<posterior>& marginals, const evidence& observed,
-                                  const posterior_table_options& options = {}, const soft_evidence& soft = {},
-                                  const intervention& set = {}) {
-  const std::function<std::string(double)> number = [&](double v) {
-    return detail::format_probability(v, options.digits);
-  };
-  detail::check_table_options(options, {});
-  const bool sampled = !marginals.empty() && !marginals.front().standard_errors.empty();
-  std::string text;
-  if (options.format == posterior_format::csv) {
-    text += sampled ? "variable,state,probability,standard_error\n" : "variable,state,probability\n";
-    for (const auto& m : marginals) {
-      const auto& v = m.variables.front();
-      for (std::size_t s = 0; s < v.cardinality(); ++s) {
-        text += text::csv_escape(v.name(), ',') + "," + text::csv_escape(v.states()[s], ',') + "," +
-                number(m.table.values()[s]);
-        if (sampled) text += "," + number(m.standard_errors[s]);
-        text += "\n";
-      }
-    }
-  } else {
-    text += "{\n" + detail::json_evidence(observed, soft, number, set);
-    if (!marginals.empty()) {
-      text += "  \"evidence_probability\": " + number(marginals.front().evidence_probability) + ",\n";
-      text += "  \"engine\": " + detail::json_text(marginals.front().engine) + ",\n";
-    }
-    const auto section = [&](const char* key, bool errors) {
-      text += std::string("  \"") + key + "\": {";
-      for (std::size_t i = 0; i < marginals.size(); ++i) {
-        const auto& v = marginals[i].variables.front();
-        text += (i ? ",\n    " : "\n    ") + detail::json_text(v.name()) + ": {";
-        for (std::size_t s = 0; s < v.cardinality(); ++s) {
-          text += (s ? ", " : "") + detail::json_text(v.states()[s]) + ": " +
-                  number(errors ? marginals[i].standard_errors[s] : marginals[i].table.values()[s]);
-        }
-        text += "}";
-      }
-      text += "\n  }";
-    };
-    section("marginals", false);
-    if (sampled) {
-      text += ",\n";
-      section("standard_errors", true);
-    }
-    text += "\n}\n";
-  }
-  out << text;
-}
+PGM_DECL void write_marginals_table(std::ostream& out, const std::vector<posterior>& marginals,
+                                    const evidence& observed, const posterior_table_options& options = {},
+                                    const soft_evidence& soft = {}, const intervention& set = {});
 
 /// Writes the most probable explanation: CSV a column per variable then `probability`
 /// (P(states | evidence)), one row; JSON {"evidence": …, "mpe": {"X": state, …},
 /// "probability": P(states | e), "joint_probability": P(states, e), "log_probability": ln of
 /// the joint, "engine": name}.
-inline void write_mpe_table(std::ostream& out, const mpe_result& best, const evidence& observed,
-                            const posterior_table_options& options = {}, const soft_evidence& soft = {},
-                            const intervention& set = {}) {
-  const std::function<std::string(double)> number = [&](double v) {
-    return detail::format_probability(v, options.digits);
-  };
-  detail::check_table_options(options, best.variables);
-  std::string text;
-  if (options.format == posterior_format::csv) {
-    for (const auto& v : best.variables) text += text::csv_escape(v.name(), ',') + ",";
-    text += "probability\n";
-    for (std::size_t k = 0; k < best.variables.size(); ++k) {
-      text += text::csv_escape(best.variables[k].states()[best.states[k].value()], ',') + ",";
-    }
-    text += number(best.probability) + "\n";
-  } else {
-    text += "{\n" + detail::json_evidence(observed, soft, number, set) + "  \"mpe\": {";
-    for (std::size_t k = 0; k < best.variables.size(); ++k) {
-      text += (k ? ", " : "") + detail::json_text(best.variables[k].name()) + ": " +
-              detail::json_text(best.variables[k].states()[best.states[k].value()]);
-    }
-    text += "},\n  \"probability\": " + number(best.probability) +
-            ",\n  \"joint_probability\": " + number(best.joint_probability) +
-            ",\n  \"log_probability\": " + detail::format_double(best.log_joint_probability) +
-            ",\n  \"engine\": " + detail::json_text(best.engine) + "\n}\n";
-  }
-  out << text;
-}
+PGM_DECL void write_mpe_table(std::ostream& out, const mpe_result& best, const evidence& observed,
+                              const posterior_table_options& options = {}, const soft_evidence& soft = {},
+                              const intervention& set = {});
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/inference/impl/posterior_table.ipp"
+#endif

@@ -27,6 +27,7 @@
 
 #include "pgm/core/assert.hpp"
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 
 namespace pgm {
 
@@ -40,21 +41,7 @@ enum class elimination_heuristic {
 using interaction_graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
 
 /// Each node joined to its parents and its parents to each other.
-[[nodiscard]] inline interaction_graph moral_graph(const bayesian_network& network) {
-  interaction_graph graph(network.size());
-  for (std::size_t i = 0; i < network.size(); ++i) {
-    const auto parents = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
-    for (std::size_t a = 0; a < parents.size(); ++a) {
-      if (!boost::edge(i, parents[a].value(), graph).second) boost::add_edge(i, parents[a].value(), graph);
-      for (std::size_t b = a + 1; b < parents.size(); ++b) {
-        if (!boost::edge(parents[a].value(), parents[b].value(), graph).second) {
-          boost::add_edge(parents[a].value(), parents[b].value(), graph);
-        }
-      }
-    }
-  }
-  return graph;
-}
+[[nodiscard]] PGM_DECL interaction_graph moral_graph(const bayesian_network& network);
 
 /// The result of eliminating vertices in a greedy order.
 struct elimination {
@@ -208,11 +195,10 @@ template <class Graph>
 }
 
 /// The cardinality of every node of `network`, in node order.
-[[nodiscard]] inline std::vector<std::size_t> cardinalities_of(const bayesian_network& network) {
-  std::vector<std::size_t> cards;
-  cards.reserve(network.size());
-  for (const auto& v : network.variables()) cards.push_back(v.cardinality());
-  return cards;
-}
+[[nodiscard]] PGM_DECL std::vector<std::size_t> cardinalities_of(const bayesian_network& network);
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/inference/impl/triangulation.ipp"
+#endif

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/inference/exact.hpp"
 #include "pgm/inference/factor.hpp"
@@ -38,31 +39,13 @@ namespace detail {
 
 /// Whether each node is an ancestor of (or one of) `targets`, in the network with the edges into
 /// the intervened variables of `observed` cut.
-[[nodiscard]] inline std::vector<bool> ancestral_set(const bayesian_network& network,
-                                                     std::span<const variable_id> targets,
-                                                     const evidence_set& observed = {}) {
-  std::vector<bool> in(network.size(), false);
-  std::vector<variable_id> stack(targets.begin(), targets.end());
-  while (!stack.empty()) {
-    const auto node = stack.back();
-    stack.pop_back();
-    if (in[node.value()]) continue;
-    in[node.value()] = true;
-    if (observed.intervenes(node)) continue;
-    for (auto parent : network.graph().parents(node)) stack.push_back(parent);
-  }
-  return in;
-}
+[[nodiscard]] PGM_DECL std::vector<bool> ancestral_set(const bayesian_network& network,
+                                                       std::span<const variable_id> targets,
+                                                       const evidence_set& observed = {});
 
 /// The ancestral set of `query` and every variable the evidence names.
-[[nodiscard]] inline std::vector<bool> relevant_set(const bayesian_network& network, std::span<const variable_id> query,
-                                                    const evidence_set& observed) {
-  std::vector<variable_id> targets(query.begin(), query.end());
-  for (const auto& o : observed.hard) targets.push_back(o.variable);
-  for (const auto& l : observed.soft) targets.push_back(l.variable);
-  for (const auto& o : observed.intervened) targets.push_back(o.variable);
-  return ancestral_set(network, targets, observed);
-}
+[[nodiscard]] PGM_DECL std::vector<bool> relevant_set(const bayesian_network& network,
+                                                      std::span<const variable_id> query, const evidence_set& observed);
 
 /// A factor shared rather than copied: a network's tables stay where they are kept until the
 /// evidence or an elimination makes a new one.
@@ -229,13 +212,9 @@ template <Semiring S>
 
 /// The unnormalized P(query, evidence) over `query` in the order given; its sum is P(evidence).
 /// Query and evidence variables must be distinct network ids (checked by the named overload).
-[[nodiscard]] inline factor joint_with_evidence(const bayesian_network& network, std::span<const variable_id> query,
-                                                std::span<const observation> observed,
-                                                elimination_heuristic heuristic = elimination_heuristic::min_fill) {
-  evidence_set set;
-  set.hard.assign(observed.begin(), observed.end());
-  return joint_in<sum_product<double>>(network, query, set, heuristic);
-}
+[[nodiscard]] PGM_DECL factor joint_with_evidence(const bayesian_network& network, std::span<const variable_id> query,
+                                                  std::span<const observation> observed,
+                                                  elimination_heuristic heuristic = elimination_heuristic::min_fill);
 
 /// The most probable joint state of `variables` with the rest summed out (marginal MAP; the
 /// most probable explanation when `variables` are all the unobserved ones), in the max
@@ -306,37 +285,16 @@ class variable_elimination {
   void set_evidence(evidence_set observed) { evidence_ = std::move(observed); }
 
   /// P(query | evidence), `query` in the order wanted.
-  [[nodiscard]] posterior joint(std::span<const variable_id> query) const {
-    return detail::exact_posterior(*network_, query, evidence_, std::string(name()), [&]<Semiring S>() {
-      return joint_in<S>(*network_, query, evidence_, options_.heuristic, tables<S>());
-    });
-  }
+  [[nodiscard]] PGM_DECL posterior joint(std::span<const variable_id> query) const;
 
-  [[nodiscard]] double log_probability_of_evidence() const {
-    return detail::exact_log_evidence([&]<Semiring S>() {
-      return total_of<S>(joint_in<S>(*network_, {}, evidence_, options_.heuristic, tables<S>()));
-    });
-  }
+  [[nodiscard]] PGM_DECL double log_probability_of_evidence() const;
 
   /// The most probable joint state of `variables` (every unobserved variable when empty) given
   /// the evidence, the others summed out.
-  [[nodiscard]] mpe_result mpe(std::span<const variable_id> variables = {}) const {
-    const auto chosen = variables.empty() ? unobserved() : std::vector<variable_id>(variables.begin(), variables.end());
-    const double log_evidence = log_probability_of_evidence();
-    return detail::exact_mpe(*network_, chosen, evidence_, log_evidence, std::string(name()), [&]<Semiring S>() {
-      return maximum_in<S>(*network_, chosen, evidence_, options_.heuristic, tables<S>());
-    });
-  }
+  [[nodiscard]] PGM_DECL mpe_result mpe(std::span<const variable_id> variables = {}) const;
 
  private:
-  [[nodiscard]] std::vector<variable_id> unobserved() const {
-    std::vector<variable_id> ids;
-    for (std::size_t i = 0; i < network_->size(); ++i) {
-      const variable_id id(static_cast<variable_id::rep>(i));
-      if (!evidence_.fixes(id)) ids.push_back(id);
-    }
-    return ids;
-  }
+  [[nodiscard]] PGM_DECL std::vector<variable_id> unobserved() const;
 
   /// Every node's table as a factor in S, made once per semiring on first use.
   template <Semiring S>
@@ -366,18 +324,16 @@ class variable_elimination {
 
 /// P(query | evidence) by name. Throws model_error for an unknown variable or state, a
 /// variable asked twice or both asked and observed; impossible_evidence when P(evidence) = 0.
-[[nodiscard]] inline posterior query(const bayesian_network& network, std::span<const std::string> variables,
-                                     const evidence& observed = {},
-                                     elimination_heuristic heuristic = elimination_heuristic::min_fill) {
-  variable_elimination engine(network, {heuristic});
-  engine.set_evidence(resolve_evidence(network, observed));
-  return engine.joint(resolve_query(network, variables, engine.evidence()));
-}
+[[nodiscard]] PGM_DECL posterior query(const bayesian_network& network, std::span<const std::string> variables,
+                                       const evidence& observed = {},
+                                       elimination_heuristic heuristic = elimination_heuristic::min_fill);
 
-[[nodiscard]] inline posterior query(const bayesian_network& network, std::initializer_list<std::string> variables,
-                                     const evidence& observed = {},
-                                     elimination_heuristic heuristic = elimination_heuristic::min_fill) {
-  return query(network, std::span<const std::string>(variables.begin(), variables.end()), observed, heuristic);
-}
+[[nodiscard]] PGM_DECL posterior query(const bayesian_network& network, std::initializer_list<std::string> variables,
+                                       const evidence& observed = {},
+                                       elimination_heuristic heuristic = elimination_heuristic::min_fill);
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/inference/impl/variable_elimination.ipp"
+#endif

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/decide/predict.hpp"
 #include "pgm/detail/file.hpp"
@@ -28,38 +29,21 @@ struct decision_model {
 /// A .json model's `/metadata/success` text, if it has one (a .bif file has none). The model
 /// itself is read elsewhere; this looks only at the metadata. Throws data_error when the entry
 /// is not a string.
-[[nodiscard]] inline std::optional<std::string> read_success_metadata(const std::filesystem::path& path) {
-  if (format_to_read(path) != network_format("json")) return std::nullopt;
-  const auto document = nlohmann::json::parse(read_model_text(path), nullptr, false);
-  if (!document.is_object()) return std::nullopt;
-  const auto metadata = document.find("metadata");
-  if (metadata == document.end() || !metadata->is_object()) return std::nullopt;
-  const auto success = metadata->find("success");
-  if (success == metadata->end()) return std::nullopt;
-  if (!success->is_string()) {
-    throw data_error(path.string() + ": /metadata/success: expected a string such as \"onTop2=1\"");
-  }
-  return success->get<std::string>();
-}
+[[nodiscard]] PGM_DECL std::optional<std::string> read_success_metadata(const std::filesystem::path& path);
 
 /// The success event: `given` ("onTop2=1") if not empty, else `metadata` if any, else
 /// default_success_event. Throws model_error for an event the network does not have.
-[[nodiscard]] inline success_event choose_success_event(const bayesian_network& network, std::string_view given,
-                                                        const std::optional<std::string>& metadata) {
-  if (!given.empty()) return parse_success_event(given, network);
-  if (metadata) return parse_success_event(*metadata, network);
-  return default_success_event(network);
-}
+[[nodiscard]] PGM_DECL success_event choose_success_event(const bayesian_network& network, std::string_view given,
+                                                          const std::optional<std::string>& metadata);
 
 /// Reads a network of any format (pgm/io/network_file.hpp) and settles its success event (see
 /// choose_success_event).
-[[nodiscard]] inline decision_model read_decision_model(const std::filesystem::path& path,
-                                                        std::string_view success_text,
-                                                        const network_read_options& options = {}) {
-  auto network = read_network(path, options);
-  auto success =
-      choose_success_event(network, success_text, success_text.empty() ? read_success_metadata(path) : std::nullopt);
-  return {std::move(network), std::move(success)};
-}
+[[nodiscard]] PGM_DECL decision_model read_decision_model(const std::filesystem::path& path,
+                                                          std::string_view success_text,
+                                                          const network_read_options& options = {});
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/io/impl/decision_model.ipp"
+#endif

@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
 #include "pgm/core/mixed_radix.hpp"
@@ -54,213 +55,27 @@ struct model_document {
 
 namespace detail {
 
-inline nlohmann::json variable_to_json(const variable& v) {
-  nlohmann::json out = {{"name", v.name()}, {"states", v.states()}};
-  if (v.has_intervals()) out["edges"] = v.edges();
-  if (!v.tags().empty()) {
-    nlohmann::json tags = nlohmann::json::object();
-    if (!v.tags().quantity.empty()) tags["quantity"] = v.tags().quantity;
-    if (!v.tags().unit.empty()) tags["unit"] = v.tags().unit;
-    if (!v.tags().role.empty()) tags["role"] = v.tags().role;
-    out["tags"] = tags;
-  }
-  return out;
-}
+PGM_DECL nlohmann::json variable_to_json(const variable& v);
 
 /// A sparse table's entry: "given" (the parents' states of each stored configuration), "values"
 /// (their columns) and "rest" (the column of every other configuration).
-[[nodiscard]] inline cpt<double> read_sparse_table(const json_reader& reader, const nlohmann::json& entry,
-                                                   const std::string& path, const variable& child,
-                                                   std::vector<variable> parents) {
-  const auto& given = reader.array(reader.member(entry, path, "given"), path + "/given");
-  const auto& rows = reader.array(reader.member(entry, path, "values"), path + "/values");
-  const auto rest = reader.numbers(reader.member(entry, path, "rest"), path + "/rest");
-  if (rows.size() != given.size()) {
-    reader.fail(path + "/values", "expected one column per configuration in \"given\" (" +
-                                      std::to_string(given.size()) + "), got " + std::to_string(rows.size()));
-  }
-  static_cast<void>(checked_table_cells(child.name(), child.cardinality(), given.size()));
-  std::vector<std::size_t> cards;
-  for (const auto& p : parents) cards.push_back(p.cardinality());
-  const mixed_radix radix(cards);
-  // Each stored configuration's index and where its column is, sorted by index.
-  std::vector<std::pair<std::size_t, std::size_t>> order;
-  for (std::size_t i = 0; i < given.size(); ++i) {
-    const auto where = path + "/given/" + std::to_string(i);
-    const auto states = reader.strings(given[i], where);
-    if (states.size() != parents.size()) {
-      reader.fail(where, "expected the states of the " + std::to_string(parents.size()) + " parents");
-    }
-    std::vector<std::size_t> codes;
-    for (std::size_t k = 0; k < states.size(); ++k) {
-      const auto& known = parents[k].states();
-      const auto at = std::find(known.begin(), known.end(), states[k]);
-      if (at == known.end()) {
-        reader.fail(where + "/" + std::to_string(k),
-                    "'" + states[k] + "' is not a state of '" + parents[k].name() + "'");
-      }
-      codes.push_back(static_cast<std::size_t>(at - known.begin()));
-    }
-    order.emplace_back(radix.encode(codes), i);
-  }
-  std::sort(order.begin(), order.end());
-  sparse_columns<double> columns;
-  columns.rest = rest;
-  for (std::size_t k = 0; k < order.size(); ++k) {
-    const auto [u, i] = order[k];
-    if (k > 0 && order[k - 1].first == u) {
-      reader.fail(path + "/given/" + std::to_string(i), "this configuration is given twice");
-    }
-    const auto where = path + "/values/" + std::to_string(i);
-    const auto column = reader.numbers(rows[i], where);
-    if (column.size() != child.cardinality()) {
-      reader.fail(where, "expected " + std::to_string(child.cardinality()) + " probabilities, one per state of '" +
-                             child.name() + "'");
-    }
-    columns.configurations.push_back(u);
-    columns.values.insert(columns.values.end(), column.begin(), column.end());
-  }
-  return cpt<double>(child, std::move(parents), std::move(columns));
-}
+[[nodiscard]] PGM_DECL cpt<double> read_sparse_table(const json_reader& reader, const nlohmann::json& entry,
+                                                     const std::string& path, const variable& child,
+                                                     std::vector<variable> parents);
 
 }  // namespace detail
 
-[[nodiscard]] inline nlohmann::json to_json(const network_structure& structure,
-                                            const std::vector<cpt<double>>* tables = nullptr) {
-  nlohmann::json document = {{"format", "pgm-model"}, {"version", 1}};
-  document["variables"] = nlohmann::json::array();
-  for (const auto& v : structure.variables()) document["variables"].push_back(detail::variable_to_json(v));
-  document["edges"] = nlohmann::json::array();
-  for (const auto& edge : structure.edges()) document["edges"].push_back({edge.from, edge.to});
-  if (tables) {
-    document["tables"] = nlohmann::json::array();
-    for (const auto& table : *tables) {
-      nlohmann::json parents = nlohmann::json::array();
-      for (const auto& p : table.parents()) parents.push_back(p.name());
-      nlohmann::json rows = nlohmann::json::array();
-      if (table.is_sparse()) {
-        // The stored configurations by their parents' states, their columns, and the rest.
-        nlohmann::json given = nlohmann::json::array();
-        for (const auto u : table.stored_configurations()) {
-          const auto codes = table.parent_codes(config_index(u));
-          nlohmann::json states = nlohmann::json::array();
-          for (std::size_t k = 0; k < codes.size(); ++k) states.push_back(table.parents()[k].states()[codes[k]]);
-          given.push_back(std::move(states));
-          const auto column = table.column(config_index(u));
-          rows.push_back(std::vector<double>(column.begin(), column.end()));
-        }
-        document["tables"].push_back({{"variable", table.child().name()},
-                                      {"parents", parents},
-                                      {"given", given},
-                                      {"values", rows},
-                                      {"rest", std::vector<double>(table.rest().begin(), table.rest().end())}});
-        continue;
-      }
-      for (std::size_t u = 0; u < table.configurations(); ++u) {
-        const auto column = table.column(config_index(u));
-        rows.push_back(std::vector<double>(column.begin(), column.end()));
-      }
-      document["tables"].push_back({{"variable", table.child().name()}, {"parents", parents}, {"values", rows}});
-    }
-  }
-  return document;
-}
+[[nodiscard]] PGM_DECL nlohmann::json to_json(const network_structure& structure,
+                                              const std::vector<cpt<double>>* tables = nullptr);
 
 [[nodiscard]] inline nlohmann::json to_json(const bayesian_network& network) {
   return to_json(network.structure(), &network.tables());
 }
 
 /// The network with the counts and priors it was estimated from.
-[[nodiscard]] inline nlohmann::json to_json(const bayesian_network& network, const fit_statistics& statistics) {
-  auto document = to_json(network);
-  document["statistics"] = to_json(statistics);
-  return document;
-}
+[[nodiscard]] PGM_DECL nlohmann::json to_json(const bayesian_network& network, const fit_statistics& statistics);
 
-[[nodiscard]] inline model_document parse_model_json(std::string_view text, const std::string& source) {
-  const detail::json_reader reader(source);
-  const auto document = reader.parse(text);
-  reader.check_format(document, "pgm-model");
-  // Free for people and tools: "metadata" (io/decision_model.hpp reads its "success") and
-  // "learned" (how pgm learn-structure found the structure).
-  reader.only_keys(document, "",
-                   {"format", "version", "variables", "edges", "tables", "statistics", "metadata", "learned"});
-  std::vector<variable> variables;
-  const auto& vars = reader.array(reader.member(document, "", "variables"), "/variables");
-  for (std::size_t i = 0; i < vars.size(); ++i) {
-    variables.push_back(reader.read_variable(vars[i], "/variables/" + std::to_string(i)));
-  }
-  model_document result;
-  try {
-    result.structure = network_structure(variables);
-  } catch (const model_error& e) {
-    reader.fail("/variables", e.what());
-  }
-  if (const auto* edges = reader.optional_member(document, "edges")) {
-    reader.array(*edges, "/edges");
-    for (std::size_t i = 0; i < edges->size(); ++i) {
-      const auto path = "/edges/" + std::to_string(i);
-      const auto pair = reader.strings((*edges)[i], path);
-      if (pair.size() != 2) reader.fail(path, "expected [from, to]");
-      try {
-        result.structure.add_edge(pair[0], pair[1]);
-      } catch (const model_error& e) {
-        reader.fail(path, e.what());
-      }
-    }
-  }
-  if (const auto* tables = reader.optional_member(document, "tables")) {
-    std::vector<cpt<double>> read_tables;
-    reader.array(*tables, "/tables");
-    for (std::size_t i = 0; i < tables->size(); ++i) {
-      const auto path = "/tables/" + std::to_string(i);
-      const auto& entry = (*tables)[i];
-      reader.only_keys(entry, path, {"variable", "parents", "values", "given", "rest"});
-      const auto child = reader.string(reader.member(entry, path, "variable"), path + "/variable");
-      const auto parent_names = reader.strings(reader.member(entry, path, "parents"), path + "/parents");
-      const auto& rows = reader.array(reader.member(entry, path, "values"), path + "/values");
-      try {
-        std::vector<variable> parents;
-        std::vector<std::size_t> cards;
-        for (const auto& name : parent_names) {
-          parents.push_back(result.structure.at(name));
-          cards.push_back(parents.back().cardinality());
-        }
-        const auto& child_variable = result.structure.at(child);
-        if (reader.optional_member(entry, "rest") || reader.optional_member(entry, "given")) {
-          read_tables.push_back(detail::read_sparse_table(reader, entry, path, child_variable, std::move(parents)));
-          continue;
-        }
-        // A table beyond pgm's limit is refused before its values are copied.
-        static_cast<void>(checked_table_cells(child, child_variable.cardinality(), mixed_radix(cards).size()));
-        std::vector<double> values;
-        for (std::size_t u = 0; u < rows.size(); ++u) {
-          const auto row = reader.numbers(rows[u], path + "/values/" + std::to_string(u));
-          values.insert(values.end(), row.begin(), row.end());
-        }
-        if (rows.size() > 0 && rows[0].size() != child_variable.cardinality()) {
-          reader.fail(path + "/values/0", "expected " + std::to_string(child_variable.cardinality()) +
-                                              " probabilities, one per state of '" + child + "'");
-        }
-        read_tables.emplace_back(child_variable, std::move(parents), std::move(values));
-      } catch (const model_error& e) {
-        reader.fail(path, e.what());
-      }
-    }
-    try {
-      // Checks the tables against the edges, one table per variable.
-      static_cast<void>(bayesian_network(result.structure, read_tables));
-    } catch (const model_error& e) {
-      reader.fail("/tables", e.what());
-    }
-    result.tables = std::move(read_tables);
-  }
-  if (const auto* statistics = reader.optional_member(document, "statistics")) {
-    if (!result.tables) reader.fail("/statistics", "statistics need the tables they were estimated into");
-    result.statistics = parse_statistics_json(reader, *statistics, result.structure);
-  }
-  return result;
-}
+[[nodiscard]] PGM_DECL model_document parse_model_json(std::string_view text, const std::string& source);
 
 [[nodiscard]] inline model_document read_model_json(const std::filesystem::path& path) {
   return parse_model_json(detail::read_file(path), path.string());
@@ -273,32 +88,16 @@ inline void write_model_json(const nlohmann::json& document, const std::filesyst
 
 // ---- discretization files ------------------------------------------------------------------
 
-[[nodiscard]] inline nlohmann::json to_json(const discretization& d) {
-  nlohmann::json document = {{"format", "pgm-discretization"}, {"version", 1}};
-  document["variables"] = nlohmann::json::array();
-  for (const auto& [name, v] : d) document["variables"].push_back(detail::variable_to_json(v));
-  return document;
-}
+[[nodiscard]] PGM_DECL nlohmann::json to_json(const discretization& d);
 
-[[nodiscard]] inline discretization parse_discretization_json(std::string_view text, const std::string& source) {
-  const detail::json_reader reader(source);
-  const auto document = reader.parse(text);
-  reader.check_format(document, "pgm-discretization");
-  reader.only_keys(document, "", {"format", "version", "variables"});
-  discretization result;
-  const auto& vars = reader.array(reader.member(document, "", "variables"), "/variables");
-  for (std::size_t i = 0; i < vars.size(); ++i) {
-    const auto path = "/variables/" + std::to_string(i);
-    auto v = reader.read_variable(vars[i], path);
-    if (!v.has_intervals()) reader.fail(path, "a discretized variable needs interval edges");
-    const auto name = v.name();
-    if (!result.emplace(name, std::move(v)).second) reader.fail(path, "'" + name + "' appears twice");
-  }
-  return result;
-}
+[[nodiscard]] PGM_DECL discretization parse_discretization_json(std::string_view text, const std::string& source);
 
 [[nodiscard]] inline discretization read_discretization_json(const std::filesystem::path& path) {
   return parse_discretization_json(detail::read_file(path), path.string());
 }
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/io/impl/json_model.ipp"
+#endif

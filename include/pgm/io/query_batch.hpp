@@ -24,6 +24,7 @@
 #include <string_view>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/inference/posterior_table.hpp"
@@ -51,162 +52,19 @@ struct query_request {
 /// The records of a query file. Throws parse_error naming the line and column of a field that
 /// does not parse, a header without `query` or with an unknown or repeated column, a record
 /// with too many fields, or a file with no query.
-[[nodiscard]] inline std::vector<query_request> parse_query_batch(std::string_view text, const std::string& source) {
-  detail::csv_scanner scanner(text, source, ',');
-  std::vector<detail::csv_field> fields;
-  if (!scanner.next(fields))
-    throw parse_error(source, 1, 1, "the query file is empty; its header names a 'query' column");
-  enum column { query, observed, soft, intervened, engine, unknown };
-  std::vector<column> columns;
-  bool has_query = false;
-  for (const auto& f : fields) {
-    const auto which = f.text == "query"      ? query
-                       : f.text == "evidence" ? observed
-                       : f.text == "soft"     ? soft
-                       : f.text == "do"       ? intervened
-                       : f.text == "engine"   ? engine
-                                              : unknown;
-    if (which == unknown) {
-      throw parse_error(source, f.line, f.column,
-                        "unknown column '" + std::string(f.text) + "' (known: query, evidence, soft, do, engine)");
-    }
-    if (std::find(columns.begin(), columns.end(), which) != columns.end()) {
-      throw parse_error(source, f.line, f.column, "the column '" + std::string(f.text) + "' is named twice");
-    }
-    has_query = has_query || which == query;
-    columns.push_back(which);
-  }
-  if (!has_query) throw parse_error(source, 1, 1, "the header names no 'query' column");
-
-  std::vector<query_request> requests;
-  while (scanner.next(fields)) {
-    if (fields.size() > columns.size()) {
-      const auto& extra = fields[columns.size()];
-      throw parse_error(
-          source, extra.line, extra.column,
-          "this record has " + std::to_string(fields.size()) + " fields, the header " + std::to_string(columns.size()));
-    }
-    query_request request;
-    request.line = scanner.record_line();
-    for (std::size_t k = 0; k < fields.size(); ++k) {
-      const auto& f = fields[k];
-      try {
-        switch (columns[k]) {
-          case query:
-            request.query_text = std::string(f.text);
-            request.query = parse_query_variables(f.text);
-            break;
-          case observed:
-            request.evidence_text = std::string(f.text);
-            request.observed = parse_evidence(f.text);
-            break;
-          case soft:
-            request.soft_text = std::string(f.text);
-            request.soft = parse_soft_evidence(f.text);
-            break;
-          case intervened:
-            request.do_text = std::string(f.text);
-            request.intervened = parse_intervention(f.text);
-            break;
-          case engine:
-            request.engine = std::string(detail::trim(f.text));
-            break;
-          case unknown:
-            break;
-        }
-      } catch (const model_error& e) {
-        throw parse_error(source, f.line, f.column, e.what());
-      }
-    }
-    if (request.query.empty()) {
-      throw parse_error(source, request.line, 1, "the record names no query variable");
-    }
-    requests.push_back(std::move(request));
-  }
-  if (requests.empty()) throw parse_error(source, scanner.line(), 1, "the query file holds a header but no query");
-  return requests;
-}
+[[nodiscard]] PGM_DECL std::vector<query_request> parse_query_batch(std::string_view text, const std::string& source);
 
 /// Writes the record of a query whose evidence is impossible: P(evidence) = 0 and `reason`.
-inline void write_impossible_record(std::ostream& out, const query_request& request, const std::string& engine,
-                                    const std::string& reason, const posterior_table_options& options, bool header) {
-  std::string text;
-  if (options.format == posterior_format::csv) {
-    if (header) text += "line,query,evidence,soft,do,engine,evidence_probability,distribution\n";
-    text += std::to_string(request.line) + "," + text::csv_escape(request.query_text, ',') + "," +
-            text::csv_escape(request.evidence_text, ',') + "," + text::csv_escape(request.soft_text, ',') + "," +
-            text::csv_escape(request.do_text, ',') + "," + text::csv_escape(engine, ',') + ",0,\n";
-  } else {
-    const auto quoted = [](const std::string& s) { return nlohmann::json(s).dump(); };
-    text += "{\"line\": " + std::to_string(request.line) + ", \"query\": " + nlohmann::json(request.query).dump() +
-            ", \"evidence\": " + nlohmann::json(request.observed).dump() + ", \"engine\": " + quoted(engine) +
-            ", \"evidence_probability\": 0, \"error\": " + quoted(reason) + "}\n";
-  }
-  out << text;
-}
+PGM_DECL void write_impossible_record(std::ostream& out, const query_request& request, const std::string& engine,
+                                      const std::string& reason, const posterior_table_options& options, bool header);
 
 /// Writes the answer to `request` as one record (see the file comment); `header` first when
 /// asked (CSV only).
-inline void write_query_record(std::ostream& out, const query_request& request, const posterior& answer,
-                               const posterior_table_options& options, bool header) {
-  const auto number = [&](double v) { return detail::format_probability(v, options.digits); };
-  std::string text;
-  if (options.format == posterior_format::csv) {
-    if (header) text += "line,query,evidence,soft,do,engine,evidence_probability,distribution\n";
-    std::string distribution;
-    detail::for_each_joint_state(answer, [&](const std::vector<std::size_t>& codes, double value) {
-      if (!distribution.empty()) distribution += ';';
-      for (std::size_t k = 0; k < codes.size(); ++k) {
-        distribution += (k ? "&" : "") + answer.variables[k].states()[codes[k]];
-      }
-      distribution += "=" + number(value);
-    });
-    text += std::to_string(request.line) + "," + text::csv_escape(request.query_text, ',') + "," +
-            text::csv_escape(request.evidence_text, ',') + "," + text::csv_escape(request.soft_text, ',') + "," +
-            text::csv_escape(request.do_text, ',') + "," + text::csv_escape(answer.engine, ',') + "," +
-            number(answer.evidence_probability) + "," + text::csv_escape(distribution, ',') + "\n";
-  } else {
-    const auto quoted = [](const std::string& s) { return nlohmann::json(s).dump(); };
-    text += "{\"line\": " + std::to_string(request.line) + ", \"query\": [";
-    for (std::size_t k = 0; k < answer.variables.size(); ++k)
-      text += (k ? ", " : "") + quoted(answer.variables[k].name());
-    text += "], \"evidence\": {";
-    bool first = true;
-    for (const auto& [name, state] : request.observed) {
-      text += (first ? "" : ", ") + quoted(name) + ": " + quoted(state);
-      first = false;
-    }
-    text += "}";
-    if (!request.intervened.empty()) text += ", \"do\": " + nlohmann::json(request.intervened).dump(-1);
-    if (!request.soft.empty()) {
-      text += ", \"soft_evidence\": {";
-      first = true;
-      for (const auto& [name, weights] : request.soft) {
-        text += (first ? "" : ", ") + quoted(name) + ": [";
-        for (std::size_t k = 0; k < weights.size(); ++k) text += (k ? ", " : "") + number(weights[k]);
-        text += "]";
-        first = false;
-      }
-      text += "}";
-    }
-    text += ", \"engine\": " + quoted(answer.engine) +
-            ", \"evidence_probability\": " + number(answer.evidence_probability) + ", \"distribution\": [";
-    first = true;
-    std::size_t row = 0;
-    detail::for_each_joint_state(answer, [&](const std::vector<std::size_t>& codes, double value) {
-      text += first ? "{" : ", {";
-      first = false;
-      for (std::size_t k = 0; k < codes.size(); ++k) {
-        text += quoted(answer.variables[k].name()) + ": " + quoted(answer.variables[k].states()[codes[k]]) + ", ";
-      }
-      text += "\"probability\": " + number(value);
-      if (!answer.standard_errors.empty()) text += ", \"standard_error\": " + number(answer.standard_errors[row]);
-      text += "}";
-      ++row;
-    });
-    text += "]}\n";
-  }
-  out << text;
-}
+PGM_DECL void write_query_record(std::ostream& out, const query_request& request, const posterior& answer,
+                                 const posterior_table_options& options, bool header);
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/io/impl/query_batch.ipp"
+#endif

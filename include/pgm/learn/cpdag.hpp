@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "pgm/core/assert.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/core/strong_index.hpp"
@@ -26,27 +27,13 @@ class cpdag {
  public:
   cpdag() = default;
   /// The nodes, without edges. Throws model_error on an empty or repeated name.
-  explicit cpdag(std::vector<std::string> names) : names_(std::move(names)), marks_(names_.size() * names_.size(), 0) {
-    for (std::size_t i = 0; i < names_.size(); ++i) {
-      if (names_[i].empty()) throw model_error("a node needs a name");
-      if (!index_.emplace(names_[i], i).second) {
-        throw model_error("node '" + names_[i] + "' is already in the graph");
-      }
-    }
-  }
+  PGM_DECL explicit cpdag(std::vector<std::string> names);
 
   [[nodiscard]] std::size_t size() const noexcept { return names_.size(); }
   [[nodiscard]] const std::vector<std::string>& names() const noexcept { return names_; }
   [[nodiscard]] const std::string& name(variable_id node) const { return names_.at(node.value()); }
   /// Throws model_error naming an unknown node.
-  [[nodiscard]] variable_id id(std::string_view name) const {
-    const auto it = index_.find(name);
-    if (it == index_.end()) {
-      throw model_error("unknown variable '" + std::string(name) + "' (known: " + detail::list_for_message(names_) +
-                        ")");
-    }
-    return variable_id(static_cast<variable_id::rep>(it->second));
-  }
+  [[nodiscard]] PGM_DECL variable_id id(std::string_view name) const;
 
   [[nodiscard]] bool adjacent(variable_id a, variable_id b) const { return mark(a, b) || mark(b, a); }
   /// a -> b.
@@ -54,16 +41,8 @@ class cpdag {
   /// a - b.
   [[nodiscard]] bool undirected(variable_id a, variable_id b) const { return mark(a, b) && mark(b, a); }
 
-  void add_undirected(variable_id a, variable_id b) {
-    PGM_ASSERT(a != b, "no self-loops");
-    set(a, b, 1);
-    set(b, a, 1);
-  }
-  void add_directed(variable_id a, variable_id b) {
-    PGM_ASSERT(a != b, "no self-loops");
-    set(a, b, 1);
-    set(b, a, 0);
-  }
+  PGM_DECL void add_undirected(variable_id a, variable_id b);
+  PGM_DECL void add_directed(variable_id a, variable_id b);
   /// Turns a - b (or b -> a) into a -> b.
   void orient(variable_id a, variable_id b) {
     PGM_ASSERT(adjacent(a, b), "orienting a missing edge");
@@ -92,45 +71,13 @@ class cpdag {
   }
 
   /// Whether a directed path a -> … -> b exists (directed edges only; a == b counts).
-  [[nodiscard]] bool has_directed_path(variable_id a, variable_id b) const {
-    std::vector<char> seen(size(), 0);
-    std::vector<variable_id> stack{a};
-    seen[a.value()] = 1;
-    while (!stack.empty()) {
-      const auto node = stack.back();
-      stack.pop_back();
-      if (node == b) return true;
-      for (auto next : children(node)) {
-        if (!seen[next.value()]) {
-          seen[next.value()] = 1;
-          stack.push_back(next);
-        }
-      }
-    }
-    return false;
-  }
+  [[nodiscard]] PGM_DECL bool has_directed_path(variable_id a, variable_id b) const;
 
   /// The directed edges, by source then target node order.
-  [[nodiscard]] std::vector<named_edge> directed_edges() const {
-    std::vector<named_edge> result;
-    for_pairs([&](variable_id a, variable_id b) {
-      if (directed(a, b)) result.push_back({name(a), name(b)});
-    });
-    return result;
-  }
+  [[nodiscard]] PGM_DECL std::vector<named_edge> directed_edges() const;
   /// The undirected edges as {first, second} with first before second in node order.
-  [[nodiscard]] std::vector<named_edge> undirected_edges() const {
-    std::vector<named_edge> result;
-    for_pairs([&](variable_id a, variable_id b) {
-      if (a < b && undirected(a, b)) result.push_back({name(a), name(b)});
-    });
-    return result;
-  }
-  [[nodiscard]] std::size_t edge_count() const {
-    std::size_t count = 0;
-    for_pairs([&](variable_id a, variable_id b) { count += a < b && adjacent(a, b); });
-    return count;
-  }
+  [[nodiscard]] PGM_DECL std::vector<named_edge> undirected_edges() const;
+  [[nodiscard]] PGM_DECL std::size_t edge_count() const;
 
   friend bool operator==(const cpdag& a, const cpdag& b) { return a.names_ == b.names_ && a.marks_ == b.marks_; }
 
@@ -179,52 +126,8 @@ class cpdag {
 /// v-structure, but keeping every directed edge) and `*relaxed_steps` counts how often;
 /// without it, model_error is thrown. Only a directed cycle among the directed edges makes
 /// even the relaxed extension fail.
-[[nodiscard]] inline std::vector<named_edge> extend_to_dag(const cpdag& graph, bool relaxed = false,
-                                                           std::size_t* relaxed_steps = nullptr) {
-  cpdag rest = graph;
-  std::vector<char> removed(graph.size(), 0);
-  std::vector<named_edge> edges;
-  auto id = [](std::size_t i) { return variable_id(static_cast<variable_id::rep>(i)); };
-  for (std::size_t round = 0; round < graph.size(); ++round) {
-    std::size_t pick = graph.size();
-    std::size_t first_sink = graph.size();
-    for (std::size_t i = 0; i < graph.size() && pick == graph.size(); ++i) {
-      if (removed[i]) continue;
-      const auto x = id(i);
-      if (!rest.children(x).empty()) continue;
-      if (first_sink == graph.size()) first_sink = i;
-      const auto around = rest.adjacent_nodes(x);
-      bool ok = true;
-      for (auto y : rest.undirected_neighbours(x)) {
-        for (auto z : around) {
-          if (z != y && !rest.adjacent(y, z)) ok = false;
-        }
-      }
-      if (ok) pick = i;
-    }
-    if (pick == graph.size()) {
-      if (!relaxed || first_sink == graph.size()) {
-        throw model_error(first_sink == graph.size()
-                              ? "the graph's directed edges form a cycle; it has no extension to a DAG"
-                              : "the graph has no extension to a DAG without a new v-structure "
-                                "(conflicting orientations)");
-      }
-      pick = first_sink;
-      if (relaxed_steps) ++*relaxed_steps;
-    }
-    const auto x = id(pick);
-    for (auto y : rest.adjacent_nodes(x)) {
-      edges.push_back({graph.name(y), graph.name(x)});
-      rest.remove(x, y);
-    }
-    removed[pick] = 1;
-  }
-  // Group by source as the core's dag lists its edges.
-  std::stable_sort(edges.begin(), edges.end(), [&](const named_edge& a, const named_edge& b) {
-    return graph.id(a.from) < graph.id(b.from) || (a.from == b.from && graph.id(a.to) < graph.id(b.to));
-  });
-  return edges;
-}
+[[nodiscard]] PGM_DECL std::vector<named_edge> extend_to_dag(const cpdag& graph, bool relaxed = false,
+                                                             std::size_t* relaxed_steps = nullptr);
 
 /// The extension as a structure over `variables` (named as the CPDAG's nodes, in any order).
 [[nodiscard]] inline network_structure extend_to_structure(const cpdag& graph, std::vector<variable> variables) {
@@ -232,3 +135,7 @@ class cpdag {
 }
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/learn/impl/cpdag.ipp"
+#endif

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/discretizer.hpp"
@@ -93,44 +94,19 @@ struct fit_result {
 };
 
 /// The columns named by `edges`, in order of first appearance.
-[[nodiscard]] inline std::vector<std::string> columns_of(const std::vector<named_edge>& edges) {
-  std::vector<std::string> columns;
-  for (const auto& e : edges) {
-    for (const auto* name : {&e.from, &e.to}) {
-      if (std::find(columns.begin(), columns.end(), *name) == columns.end()) columns.push_back(*name);
-    }
-  }
-  return columns;
-}
+[[nodiscard]] PGM_DECL std::vector<std::string> columns_of(const std::vector<named_edge>& edges);
 
 namespace detail {
 
 /// Each node's family by name, in node order, parents in the structure's order.
-[[nodiscard]] inline std::vector<family_names> families_of(const network_structure& structure) {
-  std::vector<family_names> families;
-  for (std::size_t i = 0; i < structure.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
-    family_names family{structure.at(node).name(), {}};
-    for (const auto& parent : structure.parent_variables(node)) family.parents.push_back(parent.name());
-    families.push_back(std::move(family));
-  }
-  return families;
-}
+[[nodiscard]] PGM_DECL std::vector<family_names> families_of(const network_structure& structure);
 
 /// Whether `name` is among the request's latent variables.
-[[nodiscard]] inline const latent_variable* latent_named(const fit_request& request, std::string_view name) {
-  const auto found = std::find_if(request.latent.begin(), request.latent.end(),
-                                  [&](const latent_variable& v) { return v.name == name; });
-  return found == request.latent.end() ? nullptr : &*found;
-}
+[[nodiscard]] PGM_DECL const latent_variable* latent_named(const fit_request& request, std::string_view name);
 
 /// The variable whose states column `name` holds, when the request gives them (saved intervals,
 /// or states named), else nullptr.
-[[nodiscard]] inline const variable* known_states(const fit_request& request, std::string_view name) {
-  if (const auto found = request.intervals.find(name); found != request.intervals.end()) return &found->second;
-  if (const auto found = request.states.find(name); found != request.states.end()) return &found->second;
-  return nullptr;
-}
+[[nodiscard]] PGM_DECL const variable* known_states(const fit_request& request, std::string_view name);
 
 /// The EM path of fit(): the source's rows read once, the latent variables added to the
 /// structure, the transferred priors chosen from the available-case counts.
@@ -341,3 +317,7 @@ template <family_source Source>
 }
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/learn/impl/fit_pipeline.ipp"
+#endif

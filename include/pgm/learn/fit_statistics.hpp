@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/detail/text.hpp"
@@ -40,13 +41,8 @@ namespace detail {
 
 /// A prior as it can be kept in a file: a user's type-erased prior becomes its pseudo-counts,
 /// which estimate() treats alike.
-[[nodiscard]] inline parameter_prior storable_prior(const parameter_prior& prior, const variable& child,
-                                                    const std::vector<variable>& parents) {
-  if (const auto* own = std::get_if<any_parameter_prior>(&prior)) {
-    return pseudo_counts_prior{own->pseudo_counts(child, parents)};
-  }
-  return prior;
-}
+[[nodiscard]] PGM_DECL parameter_prior storable_prior(const parameter_prior& prior, const variable& child,
+                                                      const std::vector<variable>& parents);
 
 template <class Count>
 [[nodiscard]] expected_count_table as_expected(const basic_count_table<Count>& counts) {
@@ -84,18 +80,8 @@ template <class Count>
 }
 
 /// The network the statistics give: each table estimated from its counts under its prior.
-[[nodiscard]] inline bayesian_network estimate_network(const network_structure& structure,
-                                                       const fit_statistics& statistics) {
-  if (statistics.counts.size() != structure.size() || statistics.priors.size() != structure.size()) {
-    throw model_error("the statistics hold " + std::to_string(statistics.counts.size()) +
-                      " count tables for a network of " + std::to_string(structure.size()) + " nodes");
-  }
-  std::vector<cpt<double>> tables;
-  for (std::size_t i = 0; i < structure.size(); ++i) {
-    tables.push_back(estimate(statistics.counts[i], statistics.priors[i], statistics.estimation));
-  }
-  return bayesian_network(structure, std::move(tables));
-}
+[[nodiscard]] PGM_DECL bayesian_network estimate_network(const network_structure& structure,
+                                                         const fit_statistics& statistics);
 
 /// The statistics after new data: decay · the old counts + the new counts (one table per node,
 /// in node order, over the same families and states). `decay` is in (0, 1]; 1 keeps every old
@@ -128,3 +114,7 @@ template <class Count>
 }
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/learn/impl/fit_statistics.ipp"
+#endif

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/dag.hpp"
 #include "pgm/core/strong_index.hpp"
 #include "pgm/learn/background_knowledge.hpp"
@@ -40,11 +41,7 @@ class separation_sets {
   }
 
  private:
-  [[nodiscard]] std::size_t key(variable_id a, variable_id b) const {
-    const auto lo = std::min(a.value(), b.value());
-    const auto hi = std::max(a.value(), b.value());
-    return std::size_t{lo} * size_ + hi;
-  }
+  [[nodiscard]] PGM_DECL std::size_t key(variable_id a, variable_id b) const;
   std::size_t size_;
   std::vector<std::optional<std::vector<variable_id>>> sets_;
 };
@@ -54,57 +51,19 @@ namespace detail {
 inline variable_id node(std::size_t i) { return variable_id(static_cast<variable_id::rep>(i)); }
 
 /// Orients a - b into a -> b unless that closes a directed cycle; records a conflict then.
-inline bool orient_if_acyclic(cpdag& graph, variable_id a, variable_id b, const char* why,
-                              std::vector<std::string>& conflicts) {
-  if (graph.has_directed_path(b, a)) {
-    conflicts.push_back(why + std::string(": ") + graph.name(a) + " -> " + graph.name(b) +
-                        " would close a directed cycle; left undirected");
-    return false;
-  }
-  graph.orient(a, b);
-  return true;
-}
+PGM_DECL bool orient_if_acyclic(cpdag& graph, variable_id a, variable_id b, const char* why,
+                                std::vector<std::string>& conflicts);
 
 }  // namespace detail
 
 /// Directs every edge whose direction the constraints fix: a required edge, or an edge that
 /// may only point one way (tiers, a forbidden direction).
-inline void orient_by_knowledge(cpdag& graph, const edge_constraints& constraints) {
-  for (std::size_t i = 0; i < graph.size(); ++i) {
-    for (std::size_t j = 0; j < graph.size(); ++j) {
-      const auto a = detail::node(i);
-      const auto b = detail::node(j);
-      if (i == j || !graph.undirected(a, b)) continue;
-      if (constraints.required(i, j) || !constraints.allowed(j, i)) graph.orient(a, b);
-    }
-  }
-}
+PGM_DECL void orient_by_knowledge(cpdag& graph, const edge_constraints& constraints);
 
 /// For every unshielded triple a - c - b (a, b not adjacent) whose separating set does not
 /// hold c, orients a -> c <- b. Only undirected edges are oriented; an edge already directed
 /// the other way is left as it is and the conflict reported.
-inline void orient_v_structures(cpdag& graph, const separation_sets& sepsets, std::vector<std::string>& conflicts) {
-  const auto skeleton = graph;  // unshielded triples are those of the skeleton
-  for (std::size_t k = 0; k < graph.size(); ++k) {
-    const auto c = detail::node(k);
-    const auto around = skeleton.adjacent_nodes(c);
-    for (std::size_t x = 0; x < around.size(); ++x) {
-      for (std::size_t y = x + 1; y < around.size(); ++y) {
-        const auto a = around[x];
-        const auto b = around[y];
-        if (skeleton.adjacent(a, b) || sepsets.separates(a, b, c)) continue;
-        for (auto end : {a, b}) {
-          if (graph.undirected(end, c)) {
-            detail::orient_if_acyclic(graph, end, c, "v-structure", conflicts);
-          } else if (graph.directed(c, end)) {
-            conflicts.push_back("v-structure " + graph.name(a) + " -> " + graph.name(c) + " <- " + graph.name(b) +
-                                ": " + graph.name(c) + " -> " + graph.name(end) + " is already oriented");
-          }
-        }
-      }
-    }
-  }
-}
+PGM_DECL void orient_v_structures(cpdag& graph, const separation_sets& sepsets, std::vector<std::string>& conflicts);
 
 /// Meek's rules to a fixed point; each orients an undirected edge a - b into a -> b when
 ///  R1: some c -> a with c, b not adjacent (else a new v-structure at a);
@@ -112,68 +71,13 @@ inline void orient_v_structures(cpdag& graph, const separation_sets& sepsets, st
 ///  R3: a - c -> b and a - d -> b with c, d not adjacent (else a cycle or a new v-structure);
 ///  R4: d -> c -> b with a adjacent to c and to d, and b, d not adjacent (needed only when
 ///      background knowledge has oriented edges).
-inline void apply_meek_rules(cpdag& graph, std::vector<std::string>& conflicts) {
-  const auto n = graph.size();
-  bool changed = true;
-  while (changed) {
-    changed = false;
-    for (std::size_t i = 0; i < n; ++i) {
-      for (std::size_t j = 0; j < n; ++j) {
-        const auto a = detail::node(i);
-        const auto b = detail::node(j);
-        if (i == j || !graph.undirected(a, b)) continue;
-        bool orient = false;
-        for (auto c : graph.parents(a)) {
-          if (c != b && !graph.adjacent(c, b)) orient = true;
-        }
-        if (!orient) {
-          for (auto c : graph.children(a)) {
-            if (graph.directed(c, b)) orient = true;
-          }
-        }
-        if (!orient) {
-          const auto into_b = graph.parents(b);
-          for (std::size_t x = 0; x < into_b.size() && !orient; ++x) {
-            for (std::size_t y = x + 1; y < into_b.size() && !orient; ++y) {
-              const auto c = into_b[x];
-              const auto d = into_b[y];
-              orient = graph.undirected(a, c) && graph.undirected(a, d) && !graph.adjacent(c, d);
-            }
-          }
-        }
-        if (!orient) {
-          for (auto c : graph.parents(b)) {
-            if (c == a || !graph.adjacent(a, c)) continue;
-            for (auto d : graph.parents(c)) {
-              if (d != a && d != b && graph.adjacent(a, d) && !graph.adjacent(b, d)) orient = true;
-            }
-          }
-        }
-        if (orient && detail::orient_if_acyclic(graph, a, b, "Meek's rules", conflicts)) changed = true;
-      }
-    }
-  }
-}
+PGM_DECL void apply_meek_rules(cpdag& graph, std::vector<std::string>& conflicts);
 
 /// The CPDAG (essential graph) of a DAG: its skeleton, its v-structures, Meek's rules.
-[[nodiscard]] inline cpdag cpdag_of(const dag& graph) {
-  cpdag result(graph.names());
-  for (auto [from, to] : graph.edges()) result.add_undirected(from, to);
-  for (std::size_t k = 0; k < graph.size(); ++k) {
-    const auto c = detail::node(k);
-    const auto parents = graph.parents(c);
-    for (std::size_t x = 0; x < parents.size(); ++x) {
-      for (std::size_t y = x + 1; y < parents.size(); ++y) {
-        if (!result.adjacent(parents[x], parents[y])) {
-          result.orient(parents[x], c);
-          result.orient(parents[y], c);
-        }
-      }
-    }
-  }
-  std::vector<std::string> conflicts;  // none: a DAG's orientations are consistent
-  apply_meek_rules(result, conflicts);
-  return result;
-}
+[[nodiscard]] PGM_DECL cpdag cpdag_of(const dag& graph);
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/learn/impl/orientation.ipp"
+#endif

@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/variable.hpp"
@@ -113,12 +114,12 @@ using parameter_prior = std::variant<no_prior, dirichlet_prior, k2_prior, bdeu_p
 
 namespace detail {
 
-inline void check_pseudo_count(double value, const char* what) {
-  if (!std::isfinite(value) || value < 0.0) {
-    throw model_error(std::string(what) + " must be a finite number ≥ 0, got " + format_double(value));
-  }
-}
+PGM_DECL void check_pseudo_count(double value, const char* what);
 
 }  // namespace detail
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/learn/impl/parameter_prior.ipp"
+#endif

@@ -8,6 +8,7 @@
 
 #include <cstddef>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/learn/cpdag.hpp"
 
@@ -22,29 +23,7 @@ struct hamming_parts {
 };
 
 /// Throws model_error if the graphs have different nodes.
-[[nodiscard]] inline hamming_parts hamming_differences(const cpdag& learned, const cpdag& truth) {
-  if (learned.names() != truth.names()) {
-    throw model_error("the graphs to compare have different nodes");
-  }
-  hamming_parts parts;
-  for (std::size_t i = 0; i < learned.size(); ++i) {
-    for (std::size_t j = i + 1; j < learned.size(); ++j) {
-      const variable_id a(static_cast<variable_id::rep>(i));
-      const variable_id b(static_cast<variable_id::rep>(j));
-      const bool in_learned = learned.adjacent(a, b);
-      const bool in_truth = truth.adjacent(a, b);
-      if (in_learned && !in_truth) {
-        ++parts.extra;
-      } else if (!in_learned && in_truth) {
-        ++parts.missing;
-      } else if (in_learned &&
-                 (learned.directed(a, b) != truth.directed(a, b) || learned.directed(b, a) != truth.directed(b, a))) {
-        ++parts.misoriented;
-      }
-    }
-  }
-  return parts;
-}
+[[nodiscard]] PGM_DECL hamming_parts hamming_differences(const cpdag& learned, const cpdag& truth);
 
 /// The structural Hamming distance.
 [[nodiscard]] inline std::size_t structural_hamming_distance(const cpdag& learned, const cpdag& truth) {
@@ -58,3 +37,7 @@ struct hamming_parts {
 }
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/learn/impl/structural_hamming_distance.ipp"
+#endif

@@ -13,33 +13,19 @@
 #include <string>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/transfer/correspondence.hpp"
 
 namespace pgm {
 
 /// The target edges the prior network's edges map to, ordered by (from, to) in `target` order.
-[[nodiscard]] inline std::vector<named_edge> mapped_prior_edges(const std::vector<named_edge>& prior_edges,
-                                                                const correspondence& map,
-                                                                const std::vector<std::string>& target) {
-  auto stands_for = [&](const std::string& t, const std::string& prior) {
-    const auto transferred = map.transferred.find(t);
-    if (transferred != map.transferred.end() && transferred->second == prior) return true;
-    if (map.identical_to(t) == prior) return true;
-    const auto related = map.related_to(t);
-    return related && *related == prior;
-  };
-  std::vector<named_edge> result;
-  for (const auto& from : target) {
-    for (const auto& to : target) {
-      if (from == to) continue;
-      const bool mapped = std::any_of(prior_edges.begin(), prior_edges.end(), [&](const named_edge& e) {
-        return stands_for(from, e.from) && stands_for(to, e.to);
-      });
-      if (mapped) result.push_back({from, to});
-    }
-  }
-  return result;
-}
+[[nodiscard]] PGM_DECL std::vector<named_edge> mapped_prior_edges(const std::vector<named_edge>& prior_edges,
+                                                                  const correspondence& map,
+                                                                  const std::vector<std::string>& target);
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/learn/impl/structure_prior.ipp"
+#endif

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <numbers>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/detail/splitmix.hpp"
 
 namespace pgm::sim {
@@ -38,18 +39,7 @@ class random_stream {
     return static_cast<std::uint64_t>(uniform() * static_cast<double>(n));
   }
   /// Standard normal (Box–Muller; the second value of each pair is kept for the next call).
-  double normal() noexcept {
-    if (has_spare_) {
-      has_spare_ = false;
-      return spare_;
-    }
-    const double u = 1.0 - uniform();  // (0, 1], so the logarithm is finite
-    const double radius = std::sqrt(-2.0 * std::log(u));
-    const double angle = 2.0 * std::numbers::pi * uniform();
-    spare_ = radius * std::sin(angle);
-    has_spare_ = true;
-    return radius * std::cos(angle);
-  }
+  PGM_DECL double normal() noexcept;
 
   [[nodiscard]] static constexpr std::uint64_t mix(std::uint64_t z) noexcept { return pgm::detail::splitmix64_mix(z); }
 
@@ -60,3 +50,7 @@ class random_stream {
 };
 
 }  // namespace pgm::sim
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/sim/impl/random.ipp"
+#endif

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/unknown_name.hpp"
 #include "pgm/data/dataset.hpp"
@@ -53,15 +54,7 @@ class backend_registry {
 
   /// The back-end of that name, or a data_error listing the available ones (and, for
   /// "bullet", how to build it).
-  [[nodiscard]] backend_function at(std::string_view name) const {
-    if (auto run = backends_.find(name)) return *std::move(run);
-    if (name == "bullet") {
-      throw data_error(
-          "the bullet back-end was not built (configure with -DPGM_BUILD_BULLET=ON and "
-          "libbullet-dev installed, and link pgm_bullet)");
-    }
-    throw unknown_name("simulator back-end", std::string(name), names());
-  }
+  [[nodiscard]] PGM_DECL backend_function at(std::string_view name) const;
 
   [[nodiscard]] bool contains(std::string_view name) const { return backends_.find(name).has_value(); }
 
@@ -96,3 +89,7 @@ struct register_backend {
 };
 
 }  // namespace pgm::sim
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/sim/impl/registry.ipp"
+#endif

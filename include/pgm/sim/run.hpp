@@ -13,6 +13,7 @@
 #include <memory>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/detail/parallel_for.hpp"
@@ -21,14 +22,8 @@
 namespace pgm::sim {
 
 /// Samples the inputs of experiment `index` into `values` (outcomes are left at 0).
-inline void sample_inputs(const task_definition& task, std::uint64_t seed, std::uint64_t index,
-                          std::span<double> values) {
-  random_stream inputs(seed, index, stream_purpose::inputs);
-  for (std::size_t k = 0; k < task.variables.size(); ++k) {
-    const auto& v = task.variables[k];
-    values[k] = v.kind == variable_kind::outcome ? 0.0 : v.sampling.sample(inputs);
-  }
-}
+PGM_DECL void sample_inputs(const task_definition& task, std::uint64_t seed, std::uint64_t index,
+                            std::span<double> values);
 
 /// Runs `options.rows` experiments of `task` with simulator S, `chunk` rows at a time.
 template <Simulator S>
@@ -92,3 +87,7 @@ template <Simulator S>
 }
 
 }  // namespace pgm::sim
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/sim/impl/run.ipp"
+#endif

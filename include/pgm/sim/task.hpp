@@ -17,6 +17,7 @@
 #include <variant>
 #include <vector>
 
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/core/variable.hpp"
@@ -117,34 +118,18 @@ struct task_definition {
   std::vector<named_edge> structure;
   physics_parameters physics;
 
-  [[nodiscard]] bool contains(std::string_view variable_name) const {
-    for (const auto& v : variables) {
-      if (v.name == variable_name) return true;
-    }
-    return false;
-  }
+  [[nodiscard]] PGM_DECL bool contains(std::string_view variable_name) const;
   /// Position of a variable in the file's order; throws data_error naming the task.
-  [[nodiscard]] std::size_t index(std::string_view variable_name) const {
-    for (std::size_t i = 0; i < variables.size(); ++i) {
-      if (variables[i].name == variable_name) return i;
-    }
-    throw data_error("task '" + name + "' has no variable '" + std::string(variable_name) + "'");
-  }
+  [[nodiscard]] PGM_DECL std::size_t index(std::string_view variable_name) const;
   [[nodiscard]] const task_variable& at(std::string_view variable_name) const {
     return variables[index(variable_name)];
   }
-  [[nodiscard]] std::vector<std::string> names() const {
-    std::vector<std::string> result;
-    for (const auto& v : variables) result.push_back(v.name);
-    return result;
-  }
-  [[nodiscard]] std::vector<std::string> controllable() const {
-    std::vector<std::string> result;
-    for (const auto& v : variables) {
-      if (v.controllable) result.push_back(v.name);
-    }
-    return result;
-  }
+  [[nodiscard]] PGM_DECL std::vector<std::string> names() const;
+  [[nodiscard]] PGM_DECL std::vector<std::string> controllable() const;
 };
 
 }  // namespace pgm::sim
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/sim/impl/task.ipp"
+#endif

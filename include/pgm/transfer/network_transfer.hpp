@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/learn/fit.hpp"
@@ -23,59 +24,26 @@ namespace pgm {
 /// parent's counterpart. Quantity tags are not compared: transferring between outcomes of different
 /// quantities (`inside=onTop1`, stacking to dropping) is the paper's use. Both names must be in
 /// their networks. `pgm fit` and `pgm transfer` check each pair with it (via check_correspondence).
-inline void check_transferred_pair(const correspondence& map, const std::string& prior_node,
-                                   const network_structure& target, const std::string& target_node) {
-  const auto entry = "map entry '" + target_node + "=" + prior_node + "': ";
-  for (const auto& parent : target.parent_variables(target.id(target_node))) {
-    const auto related = map.related_to(parent.name());
-    if (map.identical_to(parent.name()) == prior_node || (related && *related == prior_node)) {
-      throw model_error(entry + "the prior's '" + prior_node + "' already stands for '" + parent.name() +
-                        "', a parent of '" + target_node + "'; a transferred node needs the prior's counterpart " +
-                        "of itself, e.g. 'onTop2=onTop1'");
-    }
-  }
-}
+PGM_DECL void check_transferred_pair(const correspondence& map, const std::string& prior_node,
+                                     const network_structure& target, const std::string& target_node);
 
 /// Throws model_error for a map entry that names a variable its network lacks, or a
 /// transferred pair that check_transferred_pair refuses.
-inline void check_correspondence(const correspondence& map, const bayesian_network& prior,
-                                 const network_structure& target) {
-  auto in_target = [&](const std::string& name, const char* kind) {
-    if (!target.contains(name))
-      throw model_error("the map's " + std::string(kind) + " '" + name + "' is not a variable of the target network");
-  };
-  auto in_prior = [&](const std::string& name, const char* kind) {
-    if (!prior.structure().contains(name))
-      throw model_error("the map's " + std::string(kind) + " '" + name + "' is not a variable of the prior network");
-  };
-  for (const auto& [t, p] : map.transferred) in_target(t, "transferred node"), in_prior(p, "transferred node");
-  for (const auto& [t, p] : map.identical) in_target(t, "identical variable"), in_prior(p, "identical variable");
-  for (const auto& [t, p] : map.related) in_target(t, "related variable"), in_prior(p, "related variable");
-  for (const auto& [p, pin] : map.pinned) in_prior(p, "pinned variable");
-  for (const auto& [t, p] : map.transferred) check_transferred_pair(map, p, target, t);
-}
+PGM_DECL void check_correspondence(const correspondence& map, const bayesian_network& prior,
+                                   const network_structure& target);
 
 /// The transferred prior of every `target=prior` pair of `map`, by target node.
-[[nodiscard]] inline std::map<std::string, transferred_prior, std::less<>> transfer_priors(
+[[nodiscard]] PGM_DECL std::map<std::string, transferred_prior, std::less<>> transfer_priors(
     const bayesian_network& prior, const network_structure& target, const correspondence& map,
-    const any_prior_transfer& strategy, const transfer_options& options = {}) {
-  check_correspondence(map, prior, target);
-  std::map<std::string, transferred_prior, std::less<>> priors;
-  for (const auto& [target_node, prior_node] : map.transferred) {
-    const auto id = target.id(target_node);
-    const transfer_problem problem(prior, prior_node, target.at(id), target.parent_variables(id), map, options);
-    priors.emplace(target_node, strategy(problem));
-  }
-  return priors;
-}
+    const any_prior_transfer& strategy, const transfer_options& options = {});
 
 /// Adds the weighted prior (eq. 8) of each transferred node to a fit's options.
-inline void use_transferred_priors(fit_options& options,
-                                   const std::map<std::string, transferred_prior, std::less<>>& priors,
-                                   const std::map<std::string, double, std::less<>>& weights) {
-  for (const auto& [node, prior] : priors) {
-    options.node_priors.insert_or_assign(node, weighted_prior{prior.table(), weights.at(node)});
-  }
-}
+PGM_DECL void use_transferred_priors(fit_options& options,
+                                     const std::map<std::string, transferred_prior, std::less<>>& priors,
+                                     const std::map<std::string, double, std::less<>>& weights);
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/transfer/impl/network_transfer.ipp"
+#endif

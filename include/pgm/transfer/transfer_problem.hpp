@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/variable.hpp"
@@ -31,22 +32,13 @@ class transfer_problem {
  public:
   /// Transfers the table of `prior_node` of `prior_network` to `target_child` given
   /// `target_parents`.
-  transfer_problem(const bayesian_network& prior_network, std::string_view prior_node, variable target_child,
-                   std::vector<variable> target_parents, correspondence map, transfer_options options = {})
-      : transfer_problem(prior_network.table(prior_node), std::move(target_child), std::move(target_parents),
-                         std::move(map), std::move(options)) {
-    prior_network_ = &prior_network;
-  }
+  PGM_DECL transfer_problem(const bayesian_network& prior_network, std::string_view prior_node, variable target_child,
+                            std::vector<variable> target_parents, correspondence map, transfer_options options = {});
 
   /// Without the prior network: unassigned prior parents can then only be pinned, not
   /// marginalized.
-  transfer_problem(const cpt<double>& prior_table, variable target_child, std::vector<variable> target_parents,
-                   correspondence map, transfer_options options = {})
-      : prior_table_(&prior_table),
-        target_child_(std::move(target_child)),
-        target_parents_(std::move(target_parents)),
-        map_(std::move(map)),
-        options_(std::move(options)) {}
+  PGM_DECL transfer_problem(const cpt<double>& prior_table, variable target_child, std::vector<variable> target_parents,
+                            correspondence map, transfer_options options = {});
 
   [[nodiscard]] const cpt<double>& prior_table() const noexcept { return *prior_table_; }
   [[nodiscard]] const bayesian_network* prior_network() const noexcept { return prior_network_; }
@@ -56,11 +48,7 @@ class transfer_problem {
   [[nodiscard]] const transfer_options& options() const noexcept { return options_; }
 
   /// The target child's success state, or a model_error saying what is missing.
-  [[nodiscard]] std::size_t success_state() const {
-    if (const auto s = target_child_.find_state(options_.success_state)) return s->value();
-    throw model_error("'" + target_child_.name() + "' has no success state '" + options_.success_state +
-                      "' (its states: " + detail::list_for_message(target_child_.states()) + ")");
-  }
+  [[nodiscard]] PGM_DECL std::size_t success_state() const;
 
  private:
   const cpt<double>* prior_table_;
@@ -74,17 +62,7 @@ class transfer_problem {
 /// Which candidate of Minimal-Replacement a configuration's prior came from.
 enum class replacement : std::uint8_t { direct, cross, other };
 
-[[nodiscard]] inline const char* to_string(replacement r) {
-  switch (r) {
-    case replacement::direct:
-      return "direct";
-    case replacement::cross:
-      return "cross";
-    case replacement::other:
-      break;
-  }
-  return "other";
-}
+[[nodiscard]] PGM_DECL const char* to_string(replacement r);
 
 /// One prior configuration u′ and its share in a target configuration's prior.
 struct prior_term {
@@ -98,21 +76,8 @@ class transferred_prior {
  public:
   /// `terms` lists each target configuration's prior terms one after the other; `term_counts`
   /// says how many each has.
-  transferred_prior(cpt<double> table, std::vector<variable> prior_parents, std::vector<prior_term> terms,
-                    std::vector<std::uint32_t> term_counts, std::vector<replacement> via)
-      : table_(std::move(table)),
-        prior_parents_(std::move(prior_parents)),
-        terms_(std::move(terms)),
-        via_(std::move(via)) {
-    if (term_counts.size() != table_.configurations() || via_.size() != table_.configurations()) {
-      throw model_error("a transferred prior needs sources for each of the " + std::to_string(table_.configurations()) +
-                        " configurations of '" + table_.child().name() + "'");
-    }
-    offsets_.reserve(term_counts.size() + 1);
-    offsets_.push_back(0);
-    for (auto n : term_counts) offsets_.push_back(offsets_.back() + n);
-    if (offsets_.back() != terms_.size()) throw model_error("a transferred prior's term counts do not add up");
-  }
+  PGM_DECL transferred_prior(cpt<double> table, std::vector<variable> prior_parents, std::vector<prior_term> terms,
+                             std::vector<std::uint32_t> term_counts, std::vector<replacement> via);
 
   [[nodiscard]] const cpt<double>& table() const noexcept { return table_; }
   [[nodiscard]] const std::vector<variable>& prior_parents() const noexcept { return prior_parents_; }
@@ -124,28 +89,10 @@ class transferred_prior {
   [[nodiscard]] replacement via(config_index u) const { return via_.at(u.value()); }
 
   /// "xOff1=2, yOff1=3" for u′, with weights when several u′ are mixed.
-  [[nodiscard]] std::string describe_sources(config_index u) const {
-    mixed_radix radix = prior_radix();
-    std::string text;
-    for (const auto& term : sources(u)) {
-      if (!text.empty()) text += " + ";
-      const auto codes = radix.decode(term.configuration);
-      std::string states;
-      for (std::size_t k = 0; k < codes.size(); ++k) {
-        states += (k ? ", " : "") + prior_parents_[k].name() + "=" + prior_parents_[k].states()[codes[k]];
-      }
-      if (states.empty()) states = "(no parents)";
-      text += term.weight == 1.0 ? states : detail::format_short(term.weight, 4) + "·(" + states + ")";
-    }
-    return text;
-  }
+  [[nodiscard]] PGM_DECL std::string describe_sources(config_index u) const;
 
  private:
-  [[nodiscard]] mixed_radix prior_radix() const {
-    std::vector<std::size_t> cards;
-    for (const auto& p : prior_parents_) cards.push_back(p.cardinality());
-    return mixed_radix(std::move(cards));
-  }
+  [[nodiscard]] PGM_DECL mixed_radix prior_radix() const;
 
   cpt<double> table_;
   std::vector<variable> prior_parents_;
@@ -155,3 +102,7 @@ class transferred_prior {
 };
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/transfer/impl/transfer_problem.ipp"
+#endif

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
@@ -57,24 +58,13 @@ struct transfer_report {
 
 /// The map `text` gives, or with "auto" the one proposed from the two networks. Throws
 /// pgm::error for an empty text, model_error for a malformed map.
-[[nodiscard]] inline correspondence resolve_correspondence(std::string_view text, const bayesian_network& prior,
-                                                           const network_structure& target) {
-  if (text.empty()) {
-    throw error("a transferred prior needs a correspondence map, e.g. \"onTop2=onTop1,xOff2~xOff1\", or auto");
-  }
-  if (text != "auto") return parse_correspondence(text);
-  return propose_correspondence({&target, nullptr}, {&prior.structure(), &prior});
-}
+[[nodiscard]] PGM_DECL correspondence resolve_correspondence(std::string_view text, const bayesian_network& prior,
+                                                             const network_structure& target);
 
 /// The transferred prior of every `target=prior` pair of `map`, by the named strategy.
-[[nodiscard]] inline std::map<std::string, transferred_prior, std::less<>> transfer_priors(
+[[nodiscard]] PGM_DECL std::map<std::string, transferred_prior, std::less<>> transfer_priors(
     const bayesian_network& prior, const network_structure& target, const correspondence& map,
-    const transfer_settings& settings) {
-  transfer_options options;
-  options.success_state = settings.success;
-  options.matching = settings.matching;
-  return transfer_priors(prior, target, map, transfer_registry::instance().at(settings.strategy), options);
-}
+    const transfer_settings& settings);
 
 namespace detail {
 
@@ -108,21 +98,18 @@ transfer_report add_transferred_priors(fit_options& options, const network_struc
 /// Gives every node the map transfers to its weighted prior (eq. 8) in `options`, the weight
 /// chosen from `data` where `settings.weight` is empty. Throws model_error for a weight that is
 /// negative or not finite, or a map that does not fit the networks.
-inline transfer_report add_transferred_priors(fit_options& options, const network_structure& structure,
-                                              const dataset& data, const bayesian_network& prior,
-                                              const transfer_settings& settings) {
-  return detail::add_transferred_priors(options, structure, prior, settings, [&](variable_id node) {
-    return count_node(structure, node, data, options.counting);
-  });
-}
+PGM_DECL transfer_report add_transferred_priors(fit_options& options, const network_structure& structure,
+                                                const dataset& data, const bayesian_network& prior,
+                                                const transfer_settings& settings);
 
 /// The same, the weights chosen from counts already made: `counts[i]` is node i's family (as
 /// `pgm fit` counts them while it streams the data).
-inline transfer_report add_transferred_priors(fit_options& options, const network_structure& structure,
-                                              std::span<const count_table> counts, const bayesian_network& prior,
-                                              const transfer_settings& settings) {
-  return detail::add_transferred_priors(options, structure, prior, settings,
-                                        [&](variable_id node) -> const count_table& { return counts[node.value()]; });
-}
+PGM_DECL transfer_report add_transferred_priors(fit_options& options, const network_structure& structure,
+                                                std::span<const count_table> counts, const bayesian_network& prior,
+                                                const transfer_settings& settings);
 
 }  // namespace pgm
+
+#if !defined(PGM_SEPARATE_COMPILATION)
+#include "pgm/transfer/impl/transfer_settings.ipp"
+#endif

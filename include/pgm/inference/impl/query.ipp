@@ -1,0 +1,121 @@
+#pragma once
+// The definitions of pgm/inference/query.hpp: inline in a header-only build, compiled once into libpgm
+// under PGM_SEPARATE_COMPILATION (pgm/core/compilation.hpp).
+
+#include "pgm/inference/query.hpp"
+
+namespace pgm {
+
+PGM_DECL std::size_t posterior::index_of(std::span<const std::string> states) const {
+  if (states.size() != variables.size()) {
+    throw model_error("the posterior is over " + std::to_string(variables.size()) + " variables, got " +
+                      std::to_string(states.size()) + " states");
+  }
+  std::size_t index = 0;
+  for (std::size_t i = 0; i < states.size(); ++i) {
+    index = index * variables[i].cardinality() + variables[i].state(states[i]).value();
+  }
+  return index;
+}
+
+PGM_DECL evidence mpe_result::assignment() const {
+  evidence result;
+  for (std::size_t i = 0; i < variables.size(); ++i) {
+    result.emplace(variables[i].name(), variables[i].states()[states[i].value()]);
+  }
+  return result;
+}
+
+PGM_DECL variable_id node_of(const bayesian_network& network, std::string_view name) {
+  if (!network.structure().contains(name)) {
+    std::vector<std::string> names;
+    for (const auto& v : network.variables()) names.push_back(v.name());
+    throw model_error("the network has no variable '" + std::string(name) +
+                      "' (variables: " + detail::list_for_message(names) + ")");
+  }
+  return network.id(name);
+}
+
+}  // namespace pgm
+
+namespace pgm::detail {
+
+PGM_DECL std::string describe(const bayesian_network& network, const evidence_set& observed) {
+  std::string text;
+  for (const auto& o : observed.intervened) {
+    const auto& v = network.variables()[o.variable.value()];
+    text += (text.empty() ? "do(" : ", do(") + v.name() + "=" + v.states()[o.state.value()] + ")";
+  }
+  for (const auto& o : observed.hard) {
+    const auto& v = network.variables()[o.variable.value()];
+    text += (text.empty() ? "" : ", ") + v.name() + "=" + v.states()[o.state.value()];
+  }
+  for (const auto& l : observed.soft) {
+    std::vector<std::string> weights;
+    for (double w : l.weights) weights.push_back(detail::format_short(w));
+    text += (text.empty() ? "" : ", ") + network.variables()[l.variable.value()].name() + "~" + join(weights, ":");
+  }
+  return text;
+}
+
+}  // namespace pgm::detail
+
+namespace pgm {
+
+PGM_DECL evidence_set resolve_evidence(const bayesian_network& network, const evidence& hard, const soft_evidence& soft,
+                                       const intervention& set) {
+  evidence_set result;
+  for (const auto& [name, state] : set) {
+    const auto id = node_of(network, name);
+    if (hard.contains(name) || soft.contains(name)) {
+      throw model_error("'" + name + "' is both intervened on and observed; do(" + name + "=" + state +
+                        ") sets it, so there is nothing to observe");
+    }
+    result.intervened.push_back({id, network.at(name).state(state)});
+  }
+  for (const auto& [name, state] : hard) {
+    const auto id = node_of(network, name);
+    result.hard.push_back({id, network.at(name).state(state)});
+  }
+  for (const auto& [name, weights] : soft) {
+    const auto id = node_of(network, name);
+    const auto& v = network.at(name);
+    if (hard.contains(name)) throw model_error("'" + name + "' has both hard and soft evidence");
+    if (weights.size() != v.cardinality()) {
+      throw model_error("the soft evidence on '" + name + "' has " + std::to_string(weights.size()) +
+                        " weights, but '" + name + "' has " + std::to_string(v.cardinality()) + " states (" +
+                        detail::list_for_message(v.states()) + ")");
+    }
+    bool positive = false;
+    for (double w : weights) {
+      if (!std::isfinite(w) || w < 0.0) {
+        throw model_error("the soft evidence on '" + name + "' has the weight " + detail::format_double(w) +
+                          "; likelihoods are finite and not negative");
+      }
+      positive = positive || w > 0.0;
+    }
+    if (!positive) throw model_error("the soft evidence on '" + name + "' gives every state weight 0");
+    result.soft.push_back({id, weights});
+  }
+  return result;
+}
+
+PGM_DECL std::vector<variable_id> resolve_query(const bayesian_network& network, std::span<const std::string> names,
+                                                const evidence_set& observed) {
+  if (names.empty()) throw model_error("the query names no variable");
+  std::vector<variable_id> ids;
+  for (const auto& name : names) {
+    const auto id = node_of(network, name);
+    if (std::find(ids.begin(), ids.end(), id) != ids.end()) throw model_error("the query names '" + name + "' twice");
+    if (observed.intervenes(id)) {
+      throw model_error("'" + name +
+                        "' is intervened on, so its distribution is the point it is set to; query "
+                        "another variable");
+    }
+    if (observed.fixes(id)) throw model_error("'" + name + "' is both queried and observed");
+    ids.push_back(id);
+  }
+  return ids;
+}
+
+}  // namespace pgm

@@ -1,0 +1,32 @@
+#pragma once
+// The definitions of pgm/inference/triangulation.hpp: inline in a header-only build, compiled once into libpgm
+// under PGM_SEPARATE_COMPILATION (pgm/core/compilation.hpp).
+
+#include "pgm/inference/triangulation.hpp"
+
+namespace pgm {
+
+PGM_DECL interaction_graph moral_graph(const bayesian_network& network) {
+  interaction_graph graph(network.size());
+  for (std::size_t i = 0; i < network.size(); ++i) {
+    const auto parents = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
+    for (std::size_t a = 0; a < parents.size(); ++a) {
+      if (!boost::edge(i, parents[a].value(), graph).second) boost::add_edge(i, parents[a].value(), graph);
+      for (std::size_t b = a + 1; b < parents.size(); ++b) {
+        if (!boost::edge(parents[a].value(), parents[b].value(), graph).second) {
+          boost::add_edge(parents[a].value(), parents[b].value(), graph);
+        }
+      }
+    }
+  }
+  return graph;
+}
+
+PGM_DECL std::vector<std::size_t> cardinalities_of(const bayesian_network& network) {
+  std::vector<std::size_t> cards;
+  cards.reserve(network.size());
+  for (const auto& v : network.variables()) cards.push_back(v.cardinality());
+  return cards;
+}
+
+}  // namespace pgm

@@ -1,0 +1,161 @@
+#pragma once
+// The definitions of pgm/io/statistics_json.hpp: inline in a header-only build, compiled once into libpgm
+// under PGM_SEPARATE_COMPILATION (pgm/core/compilation.hpp).
+
+#include "pgm/io/statistics_json.hpp"
+
+namespace pgm::detail {
+
+PGM_DECL nlohmann::json rows_of(std::span<const double> values, std::size_t width) {
+  nlohmann::json rows = nlohmann::json::array();
+  for (std::size_t begin = 0; begin < values.size(); begin += width) {
+    rows.push_back(std::vector<double>(values.begin() + static_cast<std::ptrdiff_t>(begin),
+                                       values.begin() + static_cast<std::ptrdiff_t>(begin + width)));
+  }
+  return rows;
+}
+
+PGM_DECL nlohmann::json prior_to_json(const parameter_prior& prior, std::size_t width) {
+  return std::visit(
+      [&](const auto& p) -> nlohmann::json {
+        using prior_type = std::decay_t<decltype(p)>;
+        if constexpr (std::is_same_v<prior_type, no_prior>) {
+          return {{"kind", "none"}};
+        } else if constexpr (std::is_same_v<prior_type, dirichlet_prior>) {
+          return {{"kind", "dirichlet"}, {"alpha", p.alpha}};
+        } else if constexpr (std::is_same_v<prior_type, k2_prior>) {
+          return {{"kind", "k2"}};
+        } else if constexpr (std::is_same_v<prior_type, bdeu_prior>) {
+          return {{"kind", "bdeu"}, {"ess", p.equivalent_sample_size}};
+        } else if constexpr (std::is_same_v<prior_type, pseudo_counts_prior>) {
+          return {{"kind", "pseudo-counts"}, {"alpha", rows_of(p.alpha, width)}};
+        } else if constexpr (std::is_same_v<prior_type, weighted_prior>) {
+          return {{"kind", "weighted"}, {"w", p.weight}, {"table", rows_of(p.prior.values(), width)}};
+        } else {
+          throw model_error("a user's prior is kept as its pseudo-counts: make the statistics with statistics_of");
+        }
+      },
+      prior);
+}
+
+PGM_DECL std::vector<double> cells_of(const json_reader& reader, const nlohmann::json& rows, const std::string& path,
+                                      const expected_count_table& family) {
+  const auto width = family.child_cardinality();
+  std::vector<double> values;
+  const auto& array = reader.array(rows, path);
+  if (array.size() != family.configurations()) {
+    reader.fail(path, "expected " + std::to_string(family.configurations()) +
+                          " rows, one per configuration of the parents of '" + family.child().name() + "'");
+  }
+  for (std::size_t u = 0; u < array.size(); ++u) {
+    const auto row_path = path + "/" + std::to_string(u);
+    const auto row = reader.numbers(array[u], row_path);
+    if (row.size() != width) {
+      reader.fail(row_path,
+                  "expected " + std::to_string(width) + " values, one per state of '" + family.child().name() + "'");
+    }
+    for (std::size_t x = 0; x < row.size(); ++x) {
+      if (!std::isfinite(row[x]) || row[x] < 0.0) {
+        reader.fail(row_path + "/" + std::to_string(x), "expected a finite number >= 0, got " + format_double(row[x]));
+      }
+    }
+    values.insert(values.end(), row.begin(), row.end());
+  }
+  return values;
+}
+
+PGM_DECL parameter_prior prior_from_json(const json_reader& reader, const nlohmann::json& value,
+                                         const std::string& path, const expected_count_table& family) {
+  const auto kind = reader.string(reader.member(value, path, "kind"), path + "/kind");
+  const auto non_negative = [&](const char* key) {
+    const double x = reader.number(reader.member(value, path, key), path + "/" + key);
+    if (!std::isfinite(x) || x < 0.0) reader.fail(path + "/" + key, "expected a finite number >= 0");
+    return x;
+  };
+  if (kind == "none") {
+    reader.only_keys(value, path, {"kind"});
+    return no_prior{};
+  }
+  if (kind == "dirichlet") {
+    reader.only_keys(value, path, {"kind", "alpha"});
+    return dirichlet_prior{non_negative("alpha")};
+  }
+  if (kind == "k2") {
+    reader.only_keys(value, path, {"kind"});
+    return k2_prior{};
+  }
+  if (kind == "bdeu") {
+    reader.only_keys(value, path, {"kind", "ess"});
+    return bdeu_prior{non_negative("ess")};
+  }
+  if (kind == "pseudo-counts") {
+    reader.only_keys(value, path, {"kind", "alpha"});
+    return pseudo_counts_prior{cells_of(reader, reader.member(value, path, "alpha"), path + "/alpha", family)};
+  }
+  if (kind == "weighted") {
+    reader.only_keys(value, path, {"kind", "w", "table"});
+    auto table = cells_of(reader, reader.member(value, path, "table"), path + "/table", family);
+    return weighted_prior{cpt<double>(family.child(), family.parents(), std::move(table)), non_negative("w")};
+  }
+  reader.fail(path + "/kind", "unknown prior '" + kind +
+                                  "' (the priors: none, dirichlet, k2, bdeu, pseudo-counts, "
+                                  "weighted)");
+}
+
+}  // namespace pgm::detail
+
+namespace pgm {
+
+PGM_DECL nlohmann::json to_json(const fit_statistics& statistics) {
+  nlohmann::json families = nlohmann::json::array();
+  for (std::size_t i = 0; i < statistics.counts.size(); ++i) {
+    const auto& counts = statistics.counts[i];
+    const auto width = counts.child_cardinality();
+    families.push_back({{"variable", counts.child().name()},
+                        {"counts", detail::rows_of(counts.counts(), width)},
+                        {"prior", detail::prior_to_json(statistics.priors[i], width)}});
+  }
+  return {{"rows", statistics.rows},
+          {"empty", std::string(to_string(statistics.estimation.empty))},
+          {"families", families}};
+}
+
+PGM_DECL fit_statistics parse_statistics_json(const detail::json_reader& reader, const nlohmann::json& value,
+                                              const network_structure& structure) {
+  const std::string path = "/statistics";
+  reader.only_keys(value, path, {"rows", "empty", "families"});
+  fit_statistics result;
+  result.rows = reader.number(reader.member(value, path, "rows"), path + "/rows");
+  if (!std::isfinite(result.rows) || result.rows < 0.0) reader.fail(path + "/rows", "expected a finite number >= 0");
+  const auto empty = reader.string(reader.member(value, path, "empty"), path + "/empty");
+  try {
+    result.estimation.empty = parse_empty_configuration(empty);
+  } catch (const unknown_name& e) {
+    reader.fail(path + "/empty", e.what());
+  }
+  const auto& families = reader.array(reader.member(value, path, "families"), path + "/families");
+  if (families.size() != structure.size()) {
+    reader.fail(path + "/families", "expected " + std::to_string(structure.size()) + " families, one per variable");
+  }
+  for (std::size_t i = 0; i < families.size(); ++i) {
+    const auto family_path = path + "/families/" + std::to_string(i);
+    const auto& entry = families[i];
+    reader.only_keys(entry, family_path, {"variable", "counts", "prior"});
+    const variable_id node(static_cast<variable_id::rep>(i));
+    const auto name = reader.string(reader.member(entry, family_path, "variable"), family_path + "/variable");
+    if (name != structure.at(node).name()) {
+      reader.fail(family_path + "/variable",
+                  "expected '" + structure.at(node).name() + "' (the families are in the variables' order)");
+    }
+    expected_count_table counts(structure.at(node), structure.parent_variables(node));
+    const auto cells =
+        detail::cells_of(reader, reader.member(entry, family_path, "counts"), family_path + "/counts", counts);
+    std::copy(cells.begin(), cells.end(), counts.counts().begin());
+    result.priors.push_back(
+        detail::prior_from_json(reader, reader.member(entry, family_path, "prior"), family_path + "/prior", counts));
+    result.counts.push_back(std::move(counts));
+  }
+  return result;
+}
+
+}  // namespace pgm

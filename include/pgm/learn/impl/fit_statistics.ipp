@@ -1,0 +1,33 @@
+#pragma once
+// The definitions of pgm/learn/fit_statistics.hpp: inline in a header-only build, compiled once into libpgm
+// under PGM_SEPARATE_COMPILATION (pgm/core/compilation.hpp).
+
+#include "pgm/learn/fit_statistics.hpp"
+
+namespace pgm::detail {
+
+PGM_DECL parameter_prior storable_prior(const parameter_prior& prior, const variable& child,
+                                        const std::vector<variable>& parents) {
+  if (const auto* own = std::get_if<any_parameter_prior>(&prior)) {
+    return pseudo_counts_prior{own->pseudo_counts(child, parents)};
+  }
+  return prior;
+}
+
+}  // namespace pgm::detail
+
+namespace pgm {
+
+PGM_DECL bayesian_network estimate_network(const network_structure& structure, const fit_statistics& statistics) {
+  if (statistics.counts.size() != structure.size() || statistics.priors.size() != structure.size()) {
+    throw model_error("the statistics hold " + std::to_string(statistics.counts.size()) +
+                      " count tables for a network of " + std::to_string(structure.size()) + " nodes");
+  }
+  std::vector<cpt<double>> tables;
+  for (std::size_t i = 0; i < structure.size(); ++i) {
+    tables.push_back(estimate(statistics.counts[i], statistics.priors[i], statistics.estimation));
+  }
+  return bayesian_network(structure, std::move(tables));
+}
+
+}  // namespace pgm
