@@ -69,8 +69,13 @@ class variable {
   [[nodiscard]] PGM_DECL std::optional<double> midpoint(state_index state) const;
 
   /// The state whose interval holds `value`; values outside the edges go to the outer states.
-  /// Requires intervals. Intervals are closed on the left: [edges[i], edges[i+1]).
-  [[nodiscard]] PGM_DECL state_index bin(double value) const;
+  /// Requires intervals. Intervals are closed on the left: [edges[i], edges[i+1]). In the header:
+  /// it is called once per value.
+  [[nodiscard]] state_index bin(double value) const {
+    const auto inner_begin = edges_.begin() + 1;
+    const auto inner_end = edges_.end() - 1;
+    return state_index(static_cast<state_index::rep>(std::upper_bound(inner_begin, inner_end, value) - inner_begin));
+  }
 
   [[nodiscard]] PGM_DECL variable with_tags(semantic_tags tags) const;
 

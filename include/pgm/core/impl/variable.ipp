@@ -43,12 +43,6 @@ PGM_DECL std::optional<double> variable::midpoint(state_index state) const {
   return std::nullopt;
 }
 
-PGM_DECL state_index variable::bin(double value) const {
-  const auto inner_begin = edges_.begin() + 1;
-  const auto inner_end = edges_.end() - 1;
-  return state_index(static_cast<state_index::rep>(std::upper_bound(inner_begin, inner_end, value) - inner_begin));
-}
-
 PGM_DECL variable variable::with_tags(semantic_tags tags) const {
   variable copy = *this;
   copy.tags_ = std::move(tags);
