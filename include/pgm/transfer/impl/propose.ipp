@@ -60,8 +60,8 @@ PGM_DECL correspondence_candidate score_pair(const variable& target, const varia
     const double q = tt.quantity == pt.quantity ? 1.0 : 0.0;
     const double u = tt.unit == pt.unit ? 1.0 : 0.0;
     add(0.75 * q + 0.25 * u, 0.3,
-        q ? "same quantity '" + tt.quantity + "'" + (u ? " in " + tt.unit : ", other units")
-          : "other quantities '" + tt.quantity + "'/'" + pt.quantity + "'");
+        q != 0.0 ? "same quantity '" + tt.quantity + "'" + (u != 0.0 ? " in " + tt.unit : ", other units")
+                 : "other quantities '" + tt.quantity + "'/'" + pt.quantity + "'");
   }
   const auto tr = detail::value_range(target), pr = detail::value_range(prior);
   if (tr && pr) {
