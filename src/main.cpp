@@ -33,6 +33,9 @@ namespace {
 int report(const std::exception_ptr& failure) {
   try {
     std::rethrow_exception(failure);
+  } catch (const pgm::memory_limit_exceeded& e) {
+    std::cerr << "pgm: error: " << pgm::text::printable(e.what()) << '\n';
+    return 1;
   } catch (const pgm::table_too_large& e) {
     std::cerr << "pgm: error: " << pgm::text::printable(e.what()) << '\n'
               << "pgm: hint: a variable with that many states is usually a continuous column read as labels; bin it "
@@ -108,6 +111,7 @@ int main(int argc, char** argv) {
   pgm::cli::add_calibrate_command(app);
   pgm::cli::add_predict_command(app);
   pgm::cli::add_query_command(app);
+  pgm::cli::add_solve_command(app);
   pgm::cli::add_prevent_command(app);
   pgm::cli::add_dsep_command(app);
   pgm::cli::add_check_command(app);

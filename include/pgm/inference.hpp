@@ -17,5 +17,6 @@
 #include "pgm/inference/sampling.hpp"
 #include "pgm/inference/sampling_options.hpp"
 #include "pgm/inference/semiring.hpp"
+#include "pgm/inference/solve.hpp"
 #include "pgm/inference/triangulation.hpp"
 #include "pgm/inference/variable_elimination.hpp"

@@ -19,4 +19,5 @@
 #include "pgm/io/query_batch.hpp"
 #include "pgm/io/read_options.hpp"
 #include "pgm/io/statistics_json.hpp"
+#include "pgm/io/uai.hpp"
 #include "pgm/io/xmlbif.hpp"

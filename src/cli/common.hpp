@@ -118,6 +118,7 @@ void add_calibrate_command(CLI::App& app);
 void add_predict_command(CLI::App& app);
 void add_query_command(CLI::App& app);
 void add_convert_command(CLI::App& app);
+void add_solve_command(CLI::App& app);
 void add_prevent_command(CLI::App& app);
 void add_dsep_command(CLI::App& app);
 void add_check_command(CLI::App& app);

@@ -1,6 +1,6 @@
 #pragma once
 // Internal to libpgm: the built-in network formats, each defined beside its reader and writer
-// (bif.cpp, xmlbif.cpp, net.cpp, json_format.cpp) and listed once, in network_format.cpp, and
+// (bif.cpp, xmlbif.cpp, net.cpp, json_format.cpp, uai.cpp) and listed once, in network_format.cpp, and
 // what the formats without a place for counts of their own share to keep a fit's counts.
 
 #include <map>
@@ -18,6 +18,7 @@ namespace pgm::detail {
 [[nodiscard]] network_format_codec xmlbif_format();
 [[nodiscard]] network_format_codec net_format();
 [[nodiscard]] network_format_codec json_format();
+[[nodiscard]] network_format_codec uai_format();
 
 /// BIF, XMLBIF and NET keep a fit's counts in a network-level property, pgm.statistics: the
 /// counts as pgm's JSON (pgm/io/statistics_json.hpp), compact, in base64 without its '='

@@ -23,7 +23,8 @@ class format_registry {
   static format_registry& instance() {
     static format_registry registry = [] {
       format_registry r;
-      for (auto* make : {detail::bif_format, detail::xmlbif_format, detail::net_format, detail::json_format}) {
+      for (auto* make :
+           {detail::bif_format, detail::xmlbif_format, detail::net_format, detail::json_format, detail::uai_format}) {
         r.add(make());
       }
       return r;

@@ -35,7 +35,7 @@ expect(parameter_prior "mle: P\\(inside=1 \\| centre\\) = ${number}, P\\(inside=
 expect(inference_engine "engines: auto enumerate gibbs jt lw ve\n"
        "enumerate: P\\(rain=yes \\| grass=wet\\) = 0.413086, P\\(grass=wet\\) = 0.43618\n"
        "jt: P\\(rain=yes \\| grass=wet\\) = 0.413086, P\\(grass=wet\\) = 0.43618\n")
-expect(network_format "formats: bif xmlbif net json uai\n" "files: .bif, .xml, .net, .json or .uai\n"
+expect(network_format "formats: bif xmlbif net json uai fg\n" "files: .bif, .xml, .net, .json, .uai or .fg\n"
        "read back: 3 variables, 7 free parameters\n"
        "P\\(grass=wet \\| rain=yes, sprinkler=off\\) = 0.9, P\\(v2=1 \\| v0=1, v1=0\\) = 0.9\n"
-       "a broken file: .*broken.uai:3:3: expected a cardinality, found 'x'")
+       "a broken file: .*broken.fg:4:3: expected a variable's label, found 'x'")

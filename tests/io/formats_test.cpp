@@ -307,7 +307,7 @@ TEST(network_file_test, the_extension_chooses_the_format) {
   EXPECT_EQ(format_of("a.json"), network_format("json"));
   EXPECT_THAT([] { static_cast<void>(format_of("a.dne")); },
               ThrowsMessage<io_error>(HasSubstr("'a.dne': not a network file; expected one of .bif, .xml, .xmlbif, "
-                                                ".bifxml, .net, .json (BIF, XMLBIF, Hugin NET, pgm JSON)")));
+                                                ".bifxml, .net, .json, .uai (BIF, XMLBIF, Hugin NET, pgm JSON, UAI)")));
   EXPECT_EQ(network_format_named("net"), network_format("net"));
   EXPECT_THAT([] { static_cast<void>(network_format_named("dsc")); },
               ThrowsMessage<unknown_name>(HasSubstr("unknown network format 'dsc' (known: bif, xmlbif, net, json")));
@@ -369,10 +369,11 @@ TEST(network_format_registry_test, a_users_format_is_read_written_and_listed_lik
   const auto format = wrapped();
   EXPECT_EQ(format_of("n.pgmx"), format);
   EXPECT_EQ(format_to_read("n.PGMX.gz"), format);
-  EXPECT_EQ(known_network_formats(), (std::vector<std::string>{"bif", "xmlbif", "net", "json", "wrapped"}));
-  EXPECT_EQ(network_file_kinds(), ".bif, .xml, .net, .json or .pgmx");
+  EXPECT_EQ(known_network_formats(), (std::vector<std::string>{"bif", "xmlbif", "net", "json", "uai", "wrapped"}));
+  EXPECT_EQ(network_file_kinds(), ".bif, .xml, .net, .json, .uai or .pgmx");
   EXPECT_EQ(network_format_descriptions(),
-            "BIF (.bif), XMLBIF (.xml, .xmlbif, .bifxml), Hugin NET (.net), pgm JSON (.json) and wrapped JSON (.pgmx)");
+            "BIF (.bif), XMLBIF (.xml, .xmlbif, .bifxml), Hugin NET (.net), pgm JSON (.json), UAI (.uai) and wrapped "
+            "JSON (.pgmx)");
 
   const auto dir = std::filesystem::temp_directory_path() / "pgm_user_format_test";
   std::filesystem::remove_all(dir);
@@ -408,7 +409,7 @@ TEST(network_format_registry_test, a_format_is_refused_without_a_name_an_extensi
   refused(codec, "the network format 'other' needs both a reader and a writer");
   codec.name = "";
   refused(codec, "a network format needs a non-empty name");
-  EXPECT_EQ(known_network_formats().size(), 5u);
+  EXPECT_EQ(known_network_formats().size(), 6u);
 }
 
 }  // namespace

@@ -1,4 +1,4 @@
-// Writes the sprinkler network in the UAI format of uai_format.cpp through the format registry,
+// Writes the sprinkler network in libDAI's factor graph format of fg_format.cpp through the format registry,
 // reads it back, and shows a broken file's error.
 
 #include <filesystem>
@@ -19,17 +19,17 @@ int main() {
       pgm::cpt<double>(sprinkler, {rain}, {0.6, 0.4, 0.99, 0.01}),
       pgm::cpt<double>(grass, {rain, sprinkler}, {1.0, 0.0, 0.2, 0.8, 0.1, 0.9, 0.01, 0.99}),
   });
-  const auto folder = std::filesystem::temp_directory_path() / "pgm-uai-example";
+  const auto folder = std::filesystem::temp_directory_path() / "pgm-fg-example";
   std::filesystem::create_directories(folder);
-  pgm::write_network(net, folder / "sprinkler.uai");
-  const auto back = pgm::read_network(folder / "sprinkler.uai");
+  pgm::write_network(net, folder / "sprinkler.fg");
+  const auto back = pgm::read_network(folder / "sprinkler.fg");
   std::cout << "read back: " << back.size() << " variables, " << back.free_parameters() << " free parameters\n"
             << "P(grass=wet | rain=yes, sprinkler=off) = " << net.table("grass").probability("wet", {"yes", "off"})
             << ", P(v2=1 | v0=1, v1=0) = " << back.table("v2").probability("1", {"1", "0"}) << '\n';
 
-  std::ofstream(folder / "broken.uai") << "BAYES\n2\n2 x\n";
+  std::ofstream(folder / "broken.fg") << "1\n\n2\n0 x\n";
   try {
-    static_cast<void>(pgm::read_network(folder / "broken.uai"));
+    static_cast<void>(pgm::read_network(folder / "broken.fg"));
   } catch (const pgm::error& e) {
     std::cout << "a broken file: " << e.what() << '\n';
   }

@@ -14,6 +14,7 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/factor_table.hpp"
 #include "pgm/core/limits.hpp"
 #include "pgm/core/network_structure.hpp"
 
@@ -44,6 +45,18 @@ class bayesian_network {
   [[nodiscard]] const table_type& table(variable_id node) const { return tables_.at(node.value()); }
   [[nodiscard]] const table_type& table(std::string_view name) const { return table(id(name)); }
   [[nodiscard]] const std::vector<table_type>& tables() const noexcept { return tables_; }
+
+  /// As a GraphicalModel (graphical_model.hpp): factor i is node i's table, over (its parents…,
+  /// node) in graph order, the node fastest.
+  [[nodiscard]] std::size_t factor_count() const noexcept { return size(); }
+  [[nodiscard]] std::vector<variable_id> factor_scope(std::size_t f) const {
+    const variable_id node(static_cast<variable_id::rep>(f));
+    auto scope = graph().parents(node);
+    scope.push_back(node);
+    return scope;
+  }
+  /// Node f's table as a dense factor; throws table_too_large for a sparse table past the limit.
+  [[nodiscard]] PGM_DECL factor_table factor(std::size_t f) const;
 
   /// The number of free parameters, sum over nodes of (J - 1)·|Val(Pa)|.
   [[nodiscard]] PGM_DECL std::size_t free_parameters() const;

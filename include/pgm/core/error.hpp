@@ -73,6 +73,13 @@ class table_too_large : public model_error {
   using model_error::model_error;
 };
 
+/// Exact inference whose tables would take more memory than the limit it was given, refused
+/// before any is allocated; the message names both and what answers such models.
+class memory_limit_exceeded : public table_too_large {
+ public:
+  using table_too_large::table_too_large;
+};
+
 /// A file that cannot be opened, read or written.
 class io_error : public error {
  public:

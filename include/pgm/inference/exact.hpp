@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/graphical_model.hpp"
 #include "pgm/inference/factor.hpp"
 #include "pgm/inference/query.hpp"
 #include "pgm/inference/semiring.hpp"
@@ -54,15 +55,35 @@ template <Semiring S>
   return factor_of<S>(std::move(scope), std::move(cards), std::move(values));
 }
 
-/// Whether a probability computed in doubles can be trusted as it is: positive and not
-/// subnormal (a subnormal total has lost digits, so its ratios would be rough).
-[[nodiscard]] inline bool well_represented(double p) noexcept { return p >= std::numeric_limits<double>::min(); }
+/// Factor f of `model` in semiring S: a Bayesian network's table read as table_factor does, any
+/// other model's factor with each value converted by S::from_probability.
+template <Semiring S, GraphicalModel M>
+[[nodiscard]] factor_of<S> model_factor(const M& model, std::size_t f) {
+  if constexpr (std::same_as<M, bayesian_network>) {
+    return table_factor<S>(model, variable_id(static_cast<variable_id::rep>(f)));
+  } else {
+    const auto& table = model.factor(f);
+    std::vector<typename S::value_type> values;
+    values.reserve(table.values().size());
+    for (const double v : table.values()) values.push_back(S::from_probability(v));
+    return factor_of<S>(std::vector<variable_id>(table.scope().begin(), table.scope().end()),
+                        std::vector<std::size_t>(table.cardinalities().begin(), table.cardinalities().end()),
+                        std::move(values));
+  }
+}
+
+/// Whether a probability (or a Markov network's partition function) computed in doubles can be
+/// trusted as it is: positive, finite and not subnormal (a subnormal total has lost digits, so
+/// its ratios would be rough; an infinite one has lost them all).
+[[nodiscard]] inline bool well_represented(double p) noexcept {
+  return p >= std::numeric_limits<double>::min() && p <= std::numeric_limits<double>::max();
+}
 
 /// P(query | evidence) from `joint_in<S>()`, an unnormalized joint over `query` computed in
 /// semiring S: first with sum_product, then, when its total underflows, with log_sum_product.
 /// Throws impossible_evidence when the evidence has probability 0.
-template <class JointIn>
-[[nodiscard]] posterior exact_posterior(const bayesian_network& network, std::span<const variable_id> query,
+template <GraphicalModel M, class JointIn>
+[[nodiscard]] posterior exact_posterior(const M& network, std::span<const variable_id> query,
                                         const evidence_set& observed, std::string engine, JointIn&& joint_in) {
   posterior result;
   result.engine = std::move(engine);
@@ -102,8 +123,8 @@ template <class TotalIn>
 /// the largest value of the joint with the evidence) in a max semiring S; in probabilities
 /// first, in logarithms when the maximum underflows. `log_evidence` is ln P(evidence); throws
 /// impossible_evidence when it is −∞.
-template <class MaximumIn>
-[[nodiscard]] mpe_result exact_mpe(const bayesian_network& network, std::span<const variable_id> variables,
+template <GraphicalModel M, class MaximumIn>
+[[nodiscard]] mpe_result exact_mpe(const M& network, std::span<const variable_id> variables,
                                    const evidence_set& observed, double log_evidence, std::string engine,
                                    MaximumIn&& maximum_in) {
   if (log_evidence == -std::numeric_limits<double>::infinity()) throw_impossible(network, observed);

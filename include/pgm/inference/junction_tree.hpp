@@ -1,11 +1,12 @@
 #pragma once
 /// \file
-/// `junction_tree`: a network compiled for exact inference, once. The moral graph is
-/// triangulated by greedy elimination (triangulation.hpp: min-fill by default, or min-weight);
+/// `junction_tree`: a model (any GraphicalModel: a Bayesian network, a Markov network) compiled
+/// for exact inference, once. The graph of its factors' interactions (a Bayesian network's moral
+/// graph) is triangulated by greedy elimination (triangulation.hpp: min-fill by default, or min-weight);
 /// the elimination cliques, linked each to the clique of its first-eliminated neighbour and with
 /// the non-maximal ones merged into the clique that contains them, form a tree with the running
-/// intersection property. Every node's table (its family) is assigned to the smallest clique that
-/// holds the family, and every variable has a home: the smallest clique that holds it, where its
+/// intersection property. Every factor (a node's table, in a Bayesian network) is assigned to the
+/// smallest clique that holds its scope, and every variable has a home: the smallest clique that holds it, where its
 /// evidence is entered and its marginal read. Disconnected parts are joined by empty separators.
 ///
 /// A clique's table is numbered mixed-radix over its variables in ascending id, last fastest, as
@@ -27,6 +28,7 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/graphical_model.hpp"
 #include "pgm/core/limits.hpp"
 #include "pgm/inference/triangulation.hpp"
 
@@ -39,6 +41,8 @@ struct junction_tree_options {
   /// Answer a one-off query by eliminating its relevant part when that is cheaper than the
   /// messages it needs (junction_tree_engine.hpp); false always propagates.
   bool prune = true;
+  /// Restarts of the elimination order's search (triangulation.hpp): 0 takes the greedy order.
+  order_search search;
 };
 
 class junction_tree {
@@ -63,13 +67,22 @@ class junction_tree {
     std::size_t cells = 1;
   };
 
-  /// Compiles `network`. Throws table_too_large when the tree would exceed options.max_cells.
-  PGM_DECL explicit junction_tree(const bayesian_network& network, const junction_tree_options& options = {});
+  /// Compiles `model`. Throws table_too_large when the tree would exceed options.max_cells.
+  template <GraphicalModel M>
+  explicit junction_tree(const M& model, const junction_tree_options& options = {})
+      : junction_tree(cardinalities_of(model), scopes_of(model), options) {}
+
+  /// Compiles the model of variables with these cardinalities and factors over these scopes.
+  PGM_DECL junction_tree(std::vector<std::size_t> cardinalities, const std::vector<std::vector<variable_id>>& scopes,
+                         const junction_tree_options& options = {});
 
   [[nodiscard]] const std::vector<clique>& cliques() const noexcept { return cliques_; }
   [[nodiscard]] const std::vector<edge>& edges() const noexcept { return edges_; }
-  /// The clique whose table holds node i's table.
-  [[nodiscard]] std::size_t family_clique(variable_id node) const { return family_clique_.at(node.value()); }
+  /// The clique whose table holds factor f.
+  [[nodiscard]] std::size_t factor_clique(std::size_t f) const { return factor_clique_.at(f); }
+  /// The clique whose table holds a Bayesian network's node's table (its factor).
+  [[nodiscard]] std::size_t family_clique(variable_id node) const { return factor_clique(node.value()); }
+  [[nodiscard]] std::size_t factor_count() const noexcept { return factor_clique_.size(); }
   /// The smallest clique holding the variable.
   [[nodiscard]] std::size_t home(variable_id node) const { return home_.at(node.value()); }
   [[nodiscard]] std::size_t cardinality(variable_id node) const { return cardinalities_.at(node.value()); }
@@ -107,14 +120,14 @@ class junction_tree {
 
   PGM_DECL void check_size(std::size_t max_cells);
 
-  PGM_DECL void assign_families(const bayesian_network& network);
+  PGM_DECL void assign_factors(const std::vector<std::vector<variable_id>>& scopes);
 
   PGM_DECL void root_and_number();
 
   std::vector<std::size_t> cardinalities_;
   std::vector<clique> cliques_;
   std::vector<edge> edges_;
-  std::vector<std::size_t> family_clique_;
+  std::vector<std::size_t> factor_clique_;
   std::vector<std::size_t> home_;
   std::vector<std::size_t> first_;
   std::vector<std::size_t> last_;

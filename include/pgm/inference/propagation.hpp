@@ -41,18 +41,25 @@ class propagation {
  public:
   using value_type = typename S::value_type;
 
-  /// Propagation over `tree`, compiled from `network` (which must outlive this object).
-  propagation(std::shared_ptr<const junction_tree> tree, const bayesian_network& network)
-      : tree_(std::move(tree)), network_(&network) {
+  /// Propagation over `tree`, compiled from `model`, whose factors it keeps (in S).
+  template <GraphicalModel M>
+  propagation(std::shared_ptr<const junction_tree> tree, const M& model)
+      : propagation(std::move(tree), factors_in(model)) {}
+
+  /// Propagation over `tree` of these factors, factor f in the tree's factor_clique(f). An
+  /// intervention do(X = x) takes out factor X (a Bayesian network's numbering: node i's table
+  /// is factor i).
+  propagation(std::shared_ptr<const junction_tree> tree, std::vector<factor_of<S>> factors)
+      : tree_(std::move(tree)), factors_(std::move(factors)) {
+    PGM_ASSERT(factors_.size() == tree_->factor_count(), "one factor per factor the tree was compiled for");
     const auto& cliques = tree_->cliques();
     base_.resize(cliques.size());
     for (std::size_t c = 0; c < cliques.size(); ++c) base_[c].assign(cliques[c].cells, S::one());
     families_.resize(cliques.size());
-    for (std::size_t i = 0; i < network.size(); ++i) {
-      const variable_id node(static_cast<variable_id::rep>(i));
-      const auto c = tree_->family_clique(node);
-      families_[c].push_back(node);
-      multiply_table(base_[c], c, node);
+    for (std::size_t f = 0; f < factors_.size(); ++f) {
+      const auto c = tree_->factor_clique(f);
+      families_[c].push_back(f);
+      multiply_table(base_[c], c, f);
     }
     prior_.resize(2 * tree_->edges().size());
     working_.resize(2 * tree_->edges().size());
@@ -79,7 +86,7 @@ class propagation {
   /// queries under one set of interventions cost what they cost on the mutilated network.
   void set_evidence(const evidence_set& observed) {
     std::vector<std::vector<observation>> cut(tree_->cliques().size());
-    for (const auto& o : observed.intervened) cut[tree_->family_clique(o.variable)].push_back(o);
+    for (const auto& o : observed.intervened) cut[tree_->factor_clique(o.variable.value())].push_back(o);
     for (std::size_t c = 0; c < cut.size(); ++c) {
       std::sort(cut[c].begin(), cut[c].end(),
                 [](const observation& a, const observation& b) { return a.variable < b.variable; });
@@ -318,12 +325,12 @@ class propagation {
   void rebuild_base(std::size_t c) {
     const auto& clique = tree_->cliques()[c];
     base_[c].assign(clique.cells, S::one());
-    const auto is_cut = [&](variable_id node) {
+    const auto is_cut = [&](std::size_t f) {
       return std::any_of(cut_at_[c].begin(), cut_at_[c].end(),
-                         [&](const observation& o) { return o.variable == node; });
+                         [&](const observation& o) { return o.variable.value() == f; });
     };
-    for (auto node : families_[c]) {
-      if (!is_cut(node)) multiply_table(base_[c], c, node);
+    for (auto f : families_[c]) {
+      if (!is_cut(f)) multiply_table(base_[c], c, f);
     }
     for (const auto& o : cut_at_[c]) {
       std::vector<value_type> point(tree_->cardinality(o.variable), S::zero());
@@ -343,11 +350,20 @@ class propagation {
     }
   }
 
-  /// `table` ⊗= node's table, in clique c's numbering.
-  void multiply_table(std::vector<value_type>& table, std::size_t c, variable_id node) const {
-    const auto family = detail::table_factor<S>(*network_, node);
-    detail::multiply_into<S, value_type>(table, tree_->cliques()[c].cardinalities,
-                                         tree_->strides_into(c, family.scope()), family.values());
+  /// Every factor of `model` in S.
+  template <GraphicalModel M>
+  [[nodiscard]] static std::vector<factor_of<S>> factors_in(const M& model) {
+    std::vector<factor_of<S>> factors;
+    factors.reserve(model.factor_count());
+    for (std::size_t f = 0; f < model.factor_count(); ++f) factors.push_back(detail::model_factor<S>(model, f));
+    return factors;
+  }
+
+  /// `table` ⊗= factor f, in clique c's numbering.
+  void multiply_table(std::vector<value_type>& table, std::size_t c, std::size_t f) const {
+    const auto& held = factors_[f];
+    detail::multiply_into<S, value_type>(table, tree_->cliques()[c].cardinalities, tree_->strides_into(c, held.scope()),
+                                         held.values());
   }
 
   /// Every message with clique c on its source side is stale.
@@ -427,6 +443,10 @@ class propagation {
     }
     auto& kept = group_folds_[c][g];
     if (kept.valid && kept.inputs == inputs_) return kept.values;
+    if (q.groups.size() >= fold_all_from && all_messages_in(c)) {
+      fold_all_groups(c);
+      return kept.values;
+    }
     const auto table = product_at(c, q.edges.size(), g);
     const auto k = q.groups[g].front();
     kept.values.assign(tree_->edges()[q.edges[k]].cells, S::zero());
@@ -435,6 +455,76 @@ class propagation {
     kept.inputs = inputs_;
     kept.valid = true;
     return kept.values;
+  }
+
+  /// A clique with this many groups or more sends all its messages from one divide-and-conquer
+  /// pass once every message into it is known: G messages from G·log G products over its table
+  /// instead of G·G (a clique many cliques hang from, as a relational model's, sends dozens).
+  static constexpr std::size_t fold_all_from = 4;
+
+  [[nodiscard]] bool all_messages_in(std::size_t c) {
+    const auto& q = tree_->cliques()[c];
+    return std::all_of(q.edges.begin(), q.edges.end(), [&](std::size_t e) { return stored(message_into(c, e)).valid; });
+  }
+
+  /// The product of group g's messages into c, over its separator.
+  [[nodiscard]] std::vector<value_type> group_product(std::size_t c, std::size_t g) {
+    const auto& q = tree_->cliques()[c];
+    const auto& group = q.groups[g];
+    std::vector<value_type> product = stored(message_into(c, q.edges[group.front()])).values;
+    for (std::size_t i = 1; i < group.size(); ++i) {
+      const auto& in = stored(message_into(c, q.edges[group[i]])).values;
+      for (std::size_t j = 0; j < product.size(); ++j) product[j] = S::times(product[j], in[j]);
+    }
+    return product;
+  }
+
+  /// Every group fold of clique c at once (fold_for_group), every message into c known.
+  void fold_all_groups(std::size_t c) {
+    const auto& q = tree_->cliques()[c];
+    std::vector<std::vector<value_type>> products(q.groups.size());
+    for (std::size_t g = 0; g < q.groups.size(); ++g) products[g] = group_product(c, g);
+    std::vector<value_type> table = potential(c);
+    fold_range(c, 0, q.groups.size(), table, products);
+    for (std::size_t g = 0; g < q.groups.size(); ++g) {
+      auto& kept = group_folds_[c][g];
+      kept.inputs.assign(1, potential_version_[c]);
+      for (std::size_t h = 0; h < q.groups.size(); ++h) {
+        if (h == g) continue;
+        for (auto k : q.groups[h]) kept.inputs.push_back(stored(message_into(c, q.edges[k])).version);
+      }
+      kept.valid = true;
+    }
+  }
+
+  /// `table` is ψ_c ⊗ the products of every group outside [lo, hi): folds it, with the products
+  /// of all of [lo, hi) but one, onto each group of [lo, hi). Consumes `table`.
+  void fold_range(std::size_t c, std::size_t lo, std::size_t hi, std::vector<value_type>& table,
+                  const std::vector<std::vector<value_type>>& products) {
+    const auto& q = tree_->cliques()[c];
+    const auto strides_of = [&](std::size_t g) -> const std::vector<std::size_t>& {
+      return q.strides[q.groups[g].front()];
+    };
+    if (hi - lo == 1) {
+      auto& values = group_folds_[c][lo].values;
+      values.assign(tree_->edges()[q.edges[q.groups[lo].front()]].cells, S::zero());
+      detail::fold_onto<S, value_type>(std::span<const value_type>(table), q.cardinalities, strides_of(lo),
+                                       std::span<value_type>(values));
+      return;
+    }
+    const auto mid = lo + (hi - lo) / 2;
+    auto left = table;
+    for (auto g = mid; g < hi; ++g) {
+      detail::multiply_into<S, value_type>(left, q.cardinalities, strides_of(g),
+                                           std::span<const value_type>(products[g]));
+    }
+    fold_range(c, lo, mid, left, products);
+    left = {};
+    for (auto g = lo; g < mid; ++g) {
+      detail::multiply_into<S, value_type>(table, q.cardinalities, strides_of(g),
+                                           std::span<const value_type>(products[g]));
+    }
+    fold_range(c, mid, hi, table, products);
   }
 
   void compute(std::size_t d) {
@@ -542,10 +632,10 @@ class propagation {
   }
 
   std::shared_ptr<const junction_tree> tree_;
-  const bayesian_network* network_;
+  std::vector<factor_of<S>> factors_;
   std::vector<std::vector<value_type>> base_;
   std::vector<std::vector<local_evidence>> evidence_at_;
-  std::vector<std::vector<variable_id>> families_;  ///< the nodes whose tables each clique holds
+  std::vector<std::vector<std::size_t>> families_;  ///< the factors each clique holds
   std::vector<std::vector<observation>> cut_at_;    ///< the interventions on them, by variable
   std::vector<std::vector<value_type>> with_evidence_;
   std::vector<std::size_t> evidence_cliques_;

@@ -27,6 +27,7 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/markov_network.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/inference/factor.hpp"
 
@@ -136,8 +137,17 @@ struct mpe_result {
 
 namespace detail {
 
-/// "a=s, b=t, do(c=u)" for messages.
-[[nodiscard]] PGM_DECL std::string describe(const bayesian_network& network, const evidence_set& observed);
+/// "a=s, b=t, do(c=u)" for messages, the variables a model's.
+[[nodiscard]] PGM_DECL std::string describe(const std::vector<variable>& variables, const evidence_set& observed);
+
+[[nodiscard]] inline std::string describe(const bayesian_network& network, const evidence_set& observed) {
+  return describe(network.variables(), observed);
+}
+
+[[noreturn]] inline void throw_impossible(const markov_network& model, const evidence_set& observed) {
+  throw impossible_evidence("the evidence " + describe(model.variables(), observed) +
+                            " has probability 0 under the model");
+}
 
 [[noreturn]] inline void throw_impossible(const bayesian_network& network, const evidence_set& observed) {
   throw impossible_evidence("the evidence " + describe(network, observed) + " has probability 0 under the network");

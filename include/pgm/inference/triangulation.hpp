@@ -15,6 +15,7 @@
 /// only vertices whose fill-in or weight can change.
 
 #include <algorithm>
+#include <array>
 #include <boost/graph/adjacency_list.hpp>
 #include <boost/graph/graph_concepts.hpp>
 #include <cmath>
@@ -22,12 +23,18 @@
 #include <cstdint>
 #include <limits>
 #include <span>
+#include <string>
+#include <string_view>
 #include <tuple>
 #include <vector>
 
 #include "pgm/core/assert.hpp"
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
+#include "pgm/core/graphical_model.hpp"
+#include "pgm/core/limits.hpp"
+#include "pgm/core/unknown_name.hpp"
+#include "pgm/detail/splitmix.hpp"
 
 namespace pgm {
 
@@ -37,11 +44,40 @@ enum class elimination_heuristic {
   min_weight   ///< smallest product of cardinalities of the clique; ties by fill-in, then id
 };
 
+inline constexpr std::array all_elimination_heuristics{
+    elimination_heuristic::min_fill, elimination_heuristic::min_degree, elimination_heuristic::min_weight};
+
+[[nodiscard]] constexpr std::string_view to_string(elimination_heuristic heuristic) noexcept {
+  switch (heuristic) {
+    case elimination_heuristic::min_fill:
+      return "min-fill";
+    case elimination_heuristic::min_degree:
+      return "min-degree";
+    case elimination_heuristic::min_weight:
+      return "min-weight";
+  }
+  return "?";
+}
+
+/// "min-fill", "min-degree" or "min-weight"; throws unknown_name otherwise.
+[[nodiscard]] inline elimination_heuristic parse_elimination_heuristic(std::string_view text) {
+  return parse_choice("elimination heuristic", text, all_elimination_heuristics);
+}
+
+[[nodiscard]] inline std::vector<std::string> known_elimination_heuristics() {
+  return names_of(all_elimination_heuristics);
+}
+
 /// The undirected graph of a network's factors: vertex i is node i.
 using interaction_graph = boost::adjacency_list<boost::vecS, boost::vecS, boost::undirectedS>;
 
 /// Each node joined to its parents and its parents to each other.
 [[nodiscard]] PGM_DECL interaction_graph moral_graph(const bayesian_network& network);
+
+/// The graph of `n` variables in which two are joined when some scope holds both: a model's
+/// factors' interactions (a Bayesian network's families give its moral graph).
+[[nodiscard]] PGM_DECL interaction_graph interaction_graph_of(std::size_t n,
+                                                              std::span<const std::vector<variable_id>> scopes);
 
 /// The result of eliminating vertices in a greedy order.
 struct elimination {
@@ -75,10 +111,12 @@ class bit_adjacency {
 
 /// Eliminates the vertices flagged in `eliminate` (all when empty) of `graph` greedily by
 /// `heuristic`; `cardinalities` (one per vertex) weigh cliques for min_weight. The vertices not
-/// eliminated stay, as neighbours only.
+/// eliminated stay, as neighbours only. Ties go to the lower vertex index, or, with a non-zero
+/// `tie_seed`, to one of the tied vertices drawn from that seed (an order search's restarts).
 template <class Graph>
 [[nodiscard]] elimination greedy_elimination(const Graph& graph, std::span<const std::size_t> cardinalities,
-                                             elimination_heuristic heuristic, std::span<const bool> eliminate = {}) {
+                                             elimination_heuristic heuristic, std::span<const bool> eliminate = {},
+                                             std::uint64_t tie_seed = 0) {
   BOOST_CONCEPT_ASSERT((boost::VertexListGraphConcept<Graph>));
   BOOST_CONCEPT_ASSERT((boost::AdjacencyGraphConcept<Graph>));
   const std::size_t n = boost::num_vertices(graph);
@@ -144,10 +182,19 @@ template <class Graph>
   result.cliques.reserve(remaining);
   std::vector<std::size_t> touched;
   std::vector<char> mark(n, 0);
+  std::uint64_t draws = 0;
   while (remaining-- > 0) {
     std::size_t best = n;
+    std::size_t tied = 0;
     for (std::size_t v = 0; v < n; ++v) {
-      if (candidate[v] && !gone[v] && (best == n || costs[v] < costs[best])) best = v;
+      if (!candidate[v] || gone[v]) continue;
+      if (best == n || costs[v] < costs[best]) {
+        best = v;
+        tied = 1;
+      } else if (tie_seed != 0 && costs[v] == costs[best]) {
+        // Reservoir sampling: each of the tied vertices is kept with probability 1/tied.
+        if (detail::mix_seed(tie_seed, draws++) % ++tied == 0) best = v;
+      }
     }
     auto& around = neighbours[best];
     for (std::size_t i = 0; i < around.size(); ++i) {
@@ -194,8 +241,59 @@ template <class Graph>
   return result;
 }
 
-/// The cardinality of every node of `network`, in node order.
-[[nodiscard]] PGM_DECL std::vector<std::size_t> cardinalities_of(const bayesian_network& network);
+/// The cells of the tables an elimination creates, together (saturating).
+[[nodiscard]] inline std::size_t elimination_cells(const elimination& e, std::span<const std::size_t> cardinalities) {
+  std::size_t total = 0;
+  for (const auto& clique : e.cliques) {
+    std::size_t cells = 1;
+    for (auto v : clique) cells = detail::saturating_multiply(cells, cardinalities[v]);
+    total = detail::saturating_add(total, cells);
+  }
+  return total;
+}
+
+/// How hard to look for an elimination order: greedy once, or greedy with `restarts` more runs
+/// that break ties at random (seeded, so the same seed gives the same order), keeping the order
+/// whose tables are smallest together, as Merlin and the Julia solvers search.
+struct order_search {
+  std::size_t restarts = 0;
+  std::uint64_t seed = 1;
+};
+
+/// The best of the greedy orders `search` asks for (ties in size to the earlier run).
+template <class Graph>
+[[nodiscard]] elimination searched_elimination(const Graph& graph, std::span<const std::size_t> cardinalities,
+                                               elimination_heuristic heuristic, const order_search& search) {
+  auto best = greedy_elimination(graph, cardinalities, heuristic);
+  auto best_cells = elimination_cells(best, cardinalities);
+  for (std::size_t r = 0; r < search.restarts; ++r) {
+    auto next = greedy_elimination(graph, cardinalities, heuristic, {}, detail::mix_seed(search.seed, r) | 1U);
+    const auto cells = elimination_cells(next, cardinalities);
+    if (cells < best_cells) {
+      best = std::move(next);
+      best_cells = cells;
+    }
+  }
+  return best;
+}
+
+/// The cardinality of every variable of `model`, in id order.
+template <GraphicalModel M>
+[[nodiscard]] std::vector<std::size_t> cardinalities_of(const M& model) {
+  std::vector<std::size_t> cards;
+  cards.reserve(model.size());
+  for (const auto& v : model.variables()) cards.push_back(v.cardinality());
+  return cards;
+}
+
+/// Every factor's scope, in factor order.
+template <GraphicalModel M>
+[[nodiscard]] std::vector<std::vector<variable_id>> scopes_of(const M& model) {
+  std::vector<std::vector<variable_id>> scopes;
+  scopes.reserve(model.factor_count());
+  for (std::size_t f = 0; f < model.factor_count(); ++f) scopes.push_back(model.factor_scope(f));
+  return scopes;
+}
 
 }  // namespace pgm
 

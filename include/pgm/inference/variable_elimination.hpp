@@ -52,38 +52,55 @@ namespace detail {
 template <Semiring S>
 using shared_factor = std::shared_ptr<const factor_of<S>>;
 
-/// The factors of the ancestral set of `keep` and the evidence, in semiring S: each table with
-/// the hard evidence and interventions applied (an intervened variable's own table left out:
-/// the truncated factorisation), and a factor per soft evidence. `eliminate` receives the
-/// relevant variables that are neither kept nor fixed. `table_of(node)` gives a node's
-/// table as a shared factor (made by table_factor<S>, or kept).
-template <Semiring S, class TableOf>
-[[nodiscard]] std::vector<shared_factor<S>> evidence_factors(const bayesian_network& network,
-                                                             std::span<const variable_id> keep,
+/// The factors of `model` that bear on `keep` and the evidence, in semiring S: each with the hard
+/// evidence and interventions applied, and a factor per soft evidence. In a Bayesian network
+/// only the ancestral set of `keep` and the evidence (the rest is barren), an intervened
+/// variable's own table left out (the truncated factorisation); in another model every factor,
+/// and a factor of ones over each variable in none (so that summing it out counts its states).
+/// `eliminate` receives the variables taking part that are neither kept nor fixed.
+/// `table_of(f)` gives factor f as a shared factor (made by model_factor<S>, or kept).
+template <Semiring S, GraphicalModel M, class TableOf>
+[[nodiscard]] std::vector<shared_factor<S>> evidence_factors(const M& model, std::span<const variable_id> keep,
                                                              const evidence_set& observed,
                                                              std::vector<variable_id>& eliminate, TableOf&& table_of) {
-  const auto relevant = relevant_set(network, keep, observed);
-
-  std::vector<std::ptrdiff_t> fixed(network.size(), -1);
+  std::vector<bool> relevant;
+  if constexpr (DirectedModel<M>) {
+    relevant = relevant_set(model, keep, observed);
+  } else {
+    relevant.assign(model.size(), true);
+  }
+  std::vector<std::ptrdiff_t> fixed(model.size(), -1);
   for (const auto& o : observed.hard) fixed[o.variable.value()] = static_cast<std::ptrdiff_t>(o.state.value());
   for (const auto& o : observed.intervened) fixed[o.variable.value()] = static_cast<std::ptrdiff_t>(o.state.value());
 
   std::vector<shared_factor<S>> factors;
-  eliminate.clear();
-  for (std::size_t i = 0; i < network.size(); ++i) {
-    if (!relevant[i]) continue;
-    const variable_id node(static_cast<variable_id::rep>(i));
-    if (observed.intervenes(node)) continue;
-    shared_factor<S> table = table_of(node);
+  std::vector<bool> covered(model.size(), DirectedModel<M>);
+  for (std::size_t f = 0; f < model.factor_count(); ++f) {
+    if constexpr (DirectedModel<M>) {
+      const variable_id node(static_cast<variable_id::rep>(f));
+      if (!relevant[f] || observed.intervenes(node)) continue;
+    }
+    shared_factor<S> table = table_of(f);
     const auto scope = table->scope();  // a copy: reducing replaces the table
     for (auto id : scope) {
+      covered[id.value()] = true;
       if (fixed[id.value()] >= 0) {
         table = std::make_shared<const factor_of<S>>(table->reduce(id, static_cast<std::size_t>(fixed[id.value()])));
       }
     }
     factors.push_back(std::move(table));
-    const bool kept = std::find(keep.begin(), keep.end(), node) != keep.end();
-    if (!kept && fixed[i] < 0) eliminate.push_back(node);
+  }
+  eliminate.clear();
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    if (!relevant[i] || fixed[i] >= 0) continue;
+    const variable_id node(static_cast<variable_id::rep>(i));
+    if (!covered[i]) {
+      const auto card = model.variables()[i].cardinality();
+      factors.push_back(std::make_shared<const factor_of<S>>(std::vector<variable_id>{node},
+                                                             std::vector<std::size_t>{card},
+                                                             std::vector<typename S::value_type>(card, S::one())));
+    }
+    if (std::find(keep.begin(), keep.end(), node) == keep.end()) eliminate.push_back(node);
   }
   for (const auto& l : observed.soft) {
     std::vector<typename S::value_type> weights;
@@ -125,9 +142,9 @@ template <Semiring S>
 }
 
 /// The product of `factors` over `scope`, the cardinalities from `network`.
-template <Semiring S>
+template <Semiring S, GraphicalModel M>
 [[nodiscard]] factor_of<S> product_over(const std::vector<shared_factor<S>>& factors,
-                                        std::span<const variable_id> scope, const bayesian_network& network) {
+                                        std::span<const variable_id> scope, const M& network) {
   std::vector<std::size_t> cards;
   for (auto id : scope) cards.push_back(network.variables()[id.value()].cardinality());
   return product_over<S>(factors, scope, cards);
@@ -190,9 +207,9 @@ template <class Factor>
 
 /// The unnormalized joint of `query` (in that order) with the evidence, in semiring S; its
 /// ⊕-total is P(evidence) for sum-product. Query and evidence variables must be distinct.
-template <Semiring S, class TableOf>
-[[nodiscard]] factor_of<S> joint_in(const bayesian_network& network, std::span<const variable_id> query,
-                                    const evidence_set& observed, elimination_heuristic heuristic, TableOf&& table_of) {
+template <Semiring S, GraphicalModel M, class TableOf>
+[[nodiscard]] factor_of<S> joint_in(const M& network, std::span<const variable_id> query, const evidence_set& observed,
+                                    elimination_heuristic heuristic, TableOf&& table_of) {
   std::vector<variable_id> eliminate;
   auto factors = detail::evidence_factors<S>(network, query, observed, eliminate, table_of);
   for (auto variable : elimination_order(factors, std::move(eliminate), heuristic)) {
@@ -201,12 +218,11 @@ template <Semiring S, class TableOf>
   return detail::product_over<S>(factors, query, network);
 }
 
-template <Semiring S>
-[[nodiscard]] factor_of<S> joint_in(const bayesian_network& network, std::span<const variable_id> query,
-                                    const evidence_set& observed,
+template <Semiring S, GraphicalModel M>
+[[nodiscard]] factor_of<S> joint_in(const M& network, std::span<const variable_id> query, const evidence_set& observed,
                                     elimination_heuristic heuristic = elimination_heuristic::min_fill) {
-  return joint_in<S>(network, query, observed, heuristic, [&](variable_id node) {
-    return std::make_shared<const factor_of<S>>(detail::table_factor<S>(network, node));
+  return joint_in<S>(network, query, observed, heuristic, [&](std::size_t f) {
+    return std::make_shared<const factor_of<S>>(detail::model_factor<S>(network, f));
   });
 }
 
@@ -221,9 +237,9 @@ template <Semiring S>
 /// semiring Max, with Max's sum counterpart for the summing. Returns the states and the value
 /// max P(variables, evidence). Ties: the lowest state of each variable, settled from the last
 /// eliminated back.
-template <Semiring Max, class TableOf>
+template <Semiring Max, GraphicalModel M, class TableOf>
 requires(Max::idempotent) [[nodiscard]] std::pair<std::vector<std::size_t>, typename Max::value_type> maximum_in(
-    const bayesian_network& network, std::span<const variable_id> variables, const evidence_set& observed,
+    const M& network, std::span<const variable_id> variables, const evidence_set& observed,
     elimination_heuristic heuristic, TableOf&& table_of) {
   // The sums run in the same representation as the maxima: probabilities or logarithms.
   using Sum = std::conditional_t<stores_logarithms<Max>, log_sum_product<typename Max::value_type>,
@@ -258,12 +274,12 @@ requires(Max::idempotent) [[nodiscard]] std::pair<std::vector<std::size_t>, type
   return {std::move(states), value};
 }
 
-template <Semiring Max>
+template <Semiring Max, GraphicalModel M>
 requires(Max::idempotent) [[nodiscard]] std::pair<std::vector<std::size_t>, typename Max::value_type> maximum_in(
-    const bayesian_network& network, std::span<const variable_id> variables, const evidence_set& observed,
+    const M& network, std::span<const variable_id> variables, const evidence_set& observed,
     elimination_heuristic heuristic = elimination_heuristic::min_fill) {
-  return maximum_in<Max>(network, variables, observed, heuristic, [&](variable_id node) {
-    return std::make_shared<const factor_of<Max>>(detail::table_factor<Max>(network, node));
+  return maximum_in<Max>(network, variables, observed, heuristic, [&](std::size_t f) {
+    return std::make_shared<const factor_of<Max>>(detail::model_factor<Max>(network, f));
   });
 }
 
@@ -306,7 +322,7 @@ class variable_elimination {
             detail::table_factor<S>(*network_, variable_id(static_cast<variable_id::rep>(i)))));
       }
     }
-    return [&kept](variable_id node) { return kept[node.value()]; };
+    return [&kept](std::size_t f) { return kept[f]; };
   }
 
   template <Semiring S>

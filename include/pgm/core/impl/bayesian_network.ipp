@@ -2,6 +2,9 @@
 // The definitions of pgm/core/bayesian_network.hpp: inline in a header-only build, compiled once into libpgm
 // under PGM_SEPARATE_COMPILATION (pgm/core/compilation.hpp).
 
+#include <optional>
+#include <string>
+
 #include "pgm/core/bayesian_network.hpp"
 
 namespace pgm {
@@ -94,6 +97,21 @@ PGM_DECL void bayesian_network::check_table(variable_id node, const table_type& 
                         "' differently from the network");
     }
   }
+}
+
+PGM_DECL factor_table bayesian_network::factor(std::size_t f) const {
+  const auto& stored = tables_.at(f);
+  if (stored.is_sparse() && stored.size() > max_table_cells) {
+    throw table_too_large("the table of '" + stored.child().name() +
+                          "' is stored sparse, and as a factor it would have " + std::to_string(stored.size()) +
+                          " cells, more than pgm's limit of " + std::to_string(max_table_cells) + " (docs/limits.md)");
+  }
+  const auto densified = stored.is_sparse() ? std::optional(stored.dense()) : std::nullopt;
+  const auto& table = densified ? *densified : stored;
+  std::vector<std::size_t> cards = table.parent_radix().radices();
+  cards.push_back(table.child_cardinality());
+  return factor_table(factor_scope(f), std::move(cards),
+                      std::vector<double>(table.values().begin(), table.values().end()));
 }
 
 }  // namespace pgm

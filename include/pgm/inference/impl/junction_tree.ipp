@@ -6,13 +6,15 @@
 
 namespace pgm {
 
-PGM_DECL junction_tree::junction_tree(const bayesian_network& network, const junction_tree_options& options) {
-  const auto cards = cardinalities_of(network);
-  cardinalities_ = cards;
-  const auto triangulated = greedy_elimination(moral_graph(network), cards, options.heuristic);
-  build_cliques(triangulated, cards);
+PGM_DECL junction_tree::junction_tree(std::vector<std::size_t> cardinalities,
+                                      const std::vector<std::vector<variable_id>>& scopes,
+                                      const junction_tree_options& options)
+    : cardinalities_(std::move(cardinalities)) {
+  const auto triangulated = searched_elimination(interaction_graph_of(cardinalities_.size(), scopes), cardinalities_,
+                                                 options.heuristic, options.search);
+  build_cliques(triangulated, cardinalities_);
   check_size(options.max_cells);
-  assign_families(network);
+  assign_factors(scopes);
   root_and_number();
 }
 
@@ -137,28 +139,36 @@ PGM_DECL void junction_tree::check_size(std::size_t max_cells) {
   }
 }
 
-PGM_DECL void junction_tree::assign_families(const bayesian_network& network) {
-  const auto n = network.size();
+PGM_DECL void junction_tree::assign_factors(const std::vector<std::vector<variable_id>>& scopes) {
+  // A model of no variables still has its constant factors: they go to one empty clique.
+  if (cliques_.empty()) cliques_.emplace_back();
+  const auto n = cardinalities_.size();
   std::vector<std::vector<std::size_t>> holding(n);
   for (std::size_t c = 0; c < cliques_.size(); ++c) {
     for (auto v : cliques_[c].variables) holding[v.value()].push_back(c);
   }
-  home_.resize(n);
-  family_clique_.resize(n);
   auto smaller = [&](std::size_t a, std::size_t b) { return cliques_[a].cells < cliques_[b].cells; };
+  home_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const auto& candidates = holding[i];
-    PGM_ASSERT(!candidates.empty(), "every variable is in a clique");
-    home_[i] = *std::min_element(candidates.begin(), candidates.end(), smaller);
-    const auto parents = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
+    PGM_ASSERT(!holding[i].empty(), "every variable is in a clique");
+    home_[i] = *std::min_element(holding[i].begin(), holding[i].end(), smaller);
+  }
+  factor_clique_.resize(scopes.size());
+  for (std::size_t f = 0; f < scopes.size(); ++f) {
+    const auto& scope = scopes[f];
+    if (scope.empty()) {
+      factor_clique_[f] = 0;
+      continue;
+    }
+    // The smallest clique holding the scope, among those holding its first variable.
     std::size_t best = cliques_.size();
-    for (auto c : candidates) {
-      const bool holds = std::all_of(parents.begin(), parents.end(),
-                                     [&](variable_id p) { return position(c, p) < cliques_[c].variables.size(); });
+    for (auto c : holding[scope.front().value()]) {
+      const bool holds = std::all_of(scope.begin(), scope.end(),
+                                     [&](variable_id v) { return position(c, v) < cliques_[c].variables.size(); });
       if (holds && (best == cliques_.size() || smaller(c, best))) best = c;
     }
-    PGM_ASSERT(best < cliques_.size(), "a moral graph's family lies in one clique");
-    family_clique_[i] = best;
+    PGM_ASSERT(best < cliques_.size(), "a triangulated graph's factor scope lies in one clique");
+    factor_clique_[f] = best;
   }
 }
 

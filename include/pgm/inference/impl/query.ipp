@@ -40,20 +40,20 @@ PGM_DECL variable_id node_of(const bayesian_network& network, std::string_view n
 
 namespace pgm::detail {
 
-PGM_DECL std::string describe(const bayesian_network& network, const evidence_set& observed) {
+PGM_DECL std::string describe(const std::vector<variable>& variables, const evidence_set& observed) {
   std::string text;
   for (const auto& o : observed.intervened) {
-    const auto& v = network.variables()[o.variable.value()];
+    const auto& v = variables[o.variable.value()];
     text += (text.empty() ? "do(" : ", do(") + v.name() + "=" + v.states()[o.state.value()] + ")";
   }
   for (const auto& o : observed.hard) {
-    const auto& v = network.variables()[o.variable.value()];
+    const auto& v = variables[o.variable.value()];
     text += (text.empty() ? "" : ", ") + v.name() + "=" + v.states()[o.state.value()];
   }
   for (const auto& l : observed.soft) {
     std::vector<std::string> weights;
     for (double w : l.weights) weights.push_back(detail::format_short(w));
-    text += (text.empty() ? "" : ", ") + network.variables()[l.variable.value()].name() + "~" + join(weights, ":");
+    text += (text.empty() ? "" : ", ") + variables[l.variable.value()].name() + "~" + join(weights, ":");
   }
   return text;
 }

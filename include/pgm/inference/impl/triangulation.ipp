@@ -22,11 +22,18 @@ PGM_DECL interaction_graph moral_graph(const bayesian_network& network) {
   return graph;
 }
 
-PGM_DECL std::vector<std::size_t> cardinalities_of(const bayesian_network& network) {
-  std::vector<std::size_t> cards;
-  cards.reserve(network.size());
-  for (const auto& v : network.variables()) cards.push_back(v.cardinality());
-  return cards;
+PGM_DECL interaction_graph interaction_graph_of(std::size_t n, std::span<const std::vector<variable_id>> scopes) {
+  interaction_graph graph(n);
+  for (const auto& scope : scopes) {
+    for (std::size_t a = 0; a < scope.size(); ++a) {
+      for (std::size_t b = a + 1; b < scope.size(); ++b) {
+        const auto u = scope[a].value();
+        const auto w = scope[b].value();
+        if (!boost::edge(u, w, graph).second) boost::add_edge(u, w, graph);
+      }
+    }
+  }
+  return graph;
 }
 
 }  // namespace pgm

@@ -1,0 +1,160 @@
+// pgm solve: the UAI competitions' four tasks (PR, MAR, MAP, MMAP) on a model, written in the
+// competition's result format (pgm/inference/solve.hpp, pgm/io/uai.hpp).
+
+#include "pgm/inference/solve.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "cli/common.hpp"
+#include "pgm/core/file.hpp"
+#include "pgm/core/text.hpp"
+#include "pgm/io/network_file.hpp"
+#include "pgm/io/uai.hpp"
+
+namespace pgm::cli {
+namespace {
+
+struct solve_arguments {
+  std::string model;
+  std::string task;
+  std::string evidence;
+  std::size_t evidence_sample = 0;
+  std::string query;
+  std::string engine = "auto";
+  std::string heuristic = "min-fill";
+  std::uint64_t memory_limit = 4096;
+  std::size_t restarts = solve_options{}.search.restarts;
+  std::uint64_t seed = solve_options{}.search.seed;
+  std::string out;
+};
+
+bool is_uai(const std::filesystem::path& path) {
+  auto name = path.filename().string();
+  if (name.ends_with(".gz")) name.resize(name.size() - 3);
+  return name.ends_with(".uai");
+}
+
+evidence_set evidence_of(const solve_arguments& args, const markov_network& model) {
+  evidence_set observed;
+  if (args.evidence.empty()) return observed;
+  const auto samples = parse_uai_evidence(read_model_text(args.evidence), args.evidence, model);
+  if (args.evidence_sample >= samples.size()) {
+    throw data_error("'" + args.evidence + "' holds " + std::to_string(samples.size()) + " evidence sample" +
+                     (samples.size() == 1 ? "" : "s") + ", so --evidence-sample " +
+                     std::to_string(args.evidence_sample) + " does not exist (they are numbered from 0)");
+  }
+  if (samples.size() > 1) {
+    note("'" + args.evidence + "' holds " + std::to_string(samples.size()) + " evidence samples; this answers sample " +
+         std::to_string(args.evidence_sample) + " (--evidence-sample)");
+  }
+  for (const auto& [variable, state] : samples[args.evidence_sample]) {
+    observed.hard.push_back({variable, state_index(static_cast<state_index::rep>(state))});
+  }
+  return observed;
+}
+
+template <GraphicalModel M>
+std::string solve(const M& model, const markov_network& ids, const solve_arguments& args, solve_report& report) {
+  const auto observed = evidence_of(args, ids);
+  solve_options options;
+  options.engine = parse_solve_engine(args.engine);
+  options.memory_limit_bytes = static_cast<std::size_t>(args.memory_limit) << 20;
+  options.heuristic = parse_elimination_heuristic(args.heuristic);
+  options.search = {.restarts = args.restarts, .seed = args.seed};
+  if (args.task == "PR") {
+    return uai_pr_text(log_partition(model, observed, options, &report) / std::numbers::ln10);
+  }
+  if (args.task == "MAR") return uai_mar_text(all_marginals(model, observed, options, &report));
+  if (args.task == "MAP") {
+    const auto states = most_probable_assignment(model, observed, options, &report);
+    return uai_assignment_text("MAP", states);
+  }
+  const auto query = parse_uai_query(read_model_text(args.query), args.query, ids);
+  const auto states = marginal_map(model, query, observed, options, &report);
+  return uai_assignment_text("MMAP", states);
+}
+
+void run_solve(const solve_arguments& args) {
+  if (args.task == "MMAP" && args.query.empty()) {
+    throw error("--task MMAP needs --query: the file of the query variables (.query)");
+  }
+  if (args.task != "MMAP" && !args.query.empty()) {
+    throw error("--query names the variables of MMAP; --task " + args.task + " takes none");
+  }
+  pgm::check_output_path(args.out);
+  const auto started = std::chrono::steady_clock::now();
+  solve_report report;
+  std::string text;
+  if (is_uai(args.model)) {
+    const auto file = read_uai(args.model);
+    text = solve(file.model, file.model, args, report);
+  } else {
+    // Another format holds a Bayesian network; its UAI numbering is its node order.
+    const auto network = read_network_file(args.model);
+    const markov_network ids(network.variables(), {});
+    text = solve(network, ids, args, report);
+  }
+  pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
+  const std::chrono::duration<double> took = std::chrono::steady_clock::now() - started;
+  std::cerr << "pgm: solve: " << args.task << " by " << report.engine << ", exact, in "
+            << (report.log_space ? "logarithms" : "probabilities") << "; junction tree of " << report.total_cells
+            << " cells, largest table " << report.largest_table_cells << " cells; "
+            << text::format_short(took.count(), 3) << " s\n";
+  summary_stream(args.out) << "wrote " << args.task << " of " << args.model << " to " << args.out << '\n';
+}
+
+}  // namespace
+
+void add_solve_command(CLI::App& app) {
+  auto args = std::make_shared<solve_arguments>();
+  auto* cmd = app.add_subcommand(
+      "solve",
+      "Solve one of the UAI competitions' tasks on a model and write the answer in the competition's format: PR "
+      "(log10 of the partition function, P(evidence) for a Bayesian network), MAR (every variable's marginal), MAP "
+      "(the most probable assignment) or MMAP (the most probable assignment of the query variables, the rest summed "
+      "out). Exact, by a junction tree or variable elimination.\nExample: pgm solve --model Grids_11.uai --evidence "
+      "Grids_11.uai.evid --task MAR --out Grids_11.uai.MAR");
+  cmd->add_option("--model", args->model,
+                  "The model: a .uai file (MARKOV or BAYES, .uai.gz read compressed) or a Bayesian network in " +
+                      network_file_kinds())
+      ->required();
+  cmd->add_option("--task", args->task, "PR, MAR, MAP or MMAP")
+      ->required()
+      ->check(CLI::IsMember({"PR", "MAR", "MAP", "MMAP"}));
+  cmd->add_option("--evidence", args->evidence,
+                  "A .evid file: the 2014 one-line form (k, then k pairs of variable and state) or the older form "
+                  "(a number of samples, then each)");
+  cmd->add_option("--evidence-sample", args->evidence_sample,
+                  "Which sample of an older multi-sample .evid file to answer, from 0 (default 0)")
+      ->check(whole_number(0, 1'000'000));
+  cmd->add_option("--query", args->query, "A .query file: the query variables of MMAP");
+  cmd->add_option("--engine", args->engine, "jt (junction tree), ve (variable elimination) or auto (jt)")
+      ->check(CLI::IsMember(known_solve_engines()));
+  cmd->add_option("--memory-limit", args->memory_limit,
+                  "MiB the exact engines' tables may take, checked before any is allocated (default 4096, the "
+                  "competition's budget)")
+      ->check(whole_number(1, std::uint64_t{1} << 24));
+  cmd->add_option("--heuristic", args->heuristic,
+                  "The greedy elimination order's cost: min-fill (fewest new edges, default), min-degree or "
+                  "min-weight (smallest table)")
+      ->check(CLI::IsMember(known_elimination_heuristics()));
+  cmd->add_option("--order-restarts", args->restarts,
+                  "Greedy elimination orders tried after the first, ties broken at random, the smallest "
+                  "junction tree kept (default " +
+                      std::to_string(args->restarts) + ")")
+      ->check(whole_number(0, 100'000));
+  cmd->add_option("--seed", args->seed, "The seed of the order search's restarts (default 1): one seed, one order")
+      ->check(whole_number(0, std::numeric_limits<std::uint64_t>::max()));
+  cmd->add_option("--out", args->out, "The result file to write, atomically")->required();
+  cmd->callback([args] { run_solve(*args); });
+}
+
+}  // namespace pgm::cli

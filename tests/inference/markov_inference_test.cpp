@@ -1,0 +1,212 @@
+// The four tasks (pgm/inference/solve.hpp) on random Markov networks against brute force, on
+// Bayesian networks against the engines, in log space where Z overflows a double, and the limits.
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numeric>
+#include <vector>
+
+#include "pgm/core/graphical_model.hpp"
+#include "pgm/inference/junction_tree_engine.hpp"
+#include "pgm/inference/solve.hpp"
+#include "pgm/io/bif.hpp"
+#include "support/random_markov_network.hpp"
+#include "support/random_network.hpp"
+
+namespace pgm {
+namespace markov_inference_test {
+
+using ::testing::HasSubstr;
+
+evidence_set hard_evidence(const markov_network& model, std::uint64_t seed, std::vector<long>& fixed) {
+  fixed.assign(model.size(), -1);
+  evidence_set observed;
+  std::mt19937_64 engine(seed);
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    if (engine() % 4 != 0) continue;
+    const auto state = engine() % model.variables()[i].cardinality();
+    fixed[i] = static_cast<long>(state);
+    observed.hard.push_back(
+        {variable_id(static_cast<variable_id::rep>(i)), state_index(static_cast<state_index::rep>(state))});
+  }
+  return observed;
+}
+
+solve_options with_engine(solve_engine engine) {
+  solve_options options;
+  options.engine = engine;
+  return options;
+}
+
+// Relative to the size of ln Z, as a double holds it.
+double log_tolerance(double log_z) { return 1e-12 * std::max(1.0, std::abs(log_z)); }
+
+TEST(markov_inference_test, every_task_equals_brute_force_on_random_models) {
+  std::size_t impossible = 0;
+  std::size_t checked = 0;
+  for (std::uint64_t seed = 1; seed <= 60; ++seed) {
+    testing::random_markov_options shape;
+    shape.variables = 3 + seed % 5;
+    shape.factors = 2 + seed % 7;
+    shape.zero_chance = seed % 3 == 0 ? 0.3 : 0.05;
+    const auto model = testing::random_markov_network(seed, shape);
+    std::vector<long> fixed;
+    const auto observed = hard_evidence(model, seed * 7919, fixed);
+    const auto truth = testing::brute_force(model, fixed);
+    for (const auto engine : {solve_engine::jt, solve_engine::ve}) {
+      SCOPED_TRACE("seed " + std::to_string(seed) + ", engine " + std::string(to_string(engine)));
+      const auto options = with_engine(engine);
+      const double log_z = log_partition(model, observed, options);
+      if (truth.log_z == -INFINITY) {
+        ++impossible;
+        EXPECT_EQ(log_z, -INFINITY);
+        EXPECT_THROW(static_cast<void>(all_marginals(model, observed, options)), impossible_evidence);
+        EXPECT_THROW(static_cast<void>(most_probable_assignment(model, observed, options)), impossible_evidence);
+        continue;
+      }
+      ++checked;
+      EXPECT_NEAR(log_z, truth.log_z, log_tolerance(truth.log_z));
+      const auto marginals = all_marginals(model, observed, options);
+      ASSERT_EQ(marginals.size(), model.size());
+      for (std::size_t i = 0; i < model.size(); ++i) {
+        ASSERT_EQ(marginals[i].size(), truth.marginals[i].size());
+        for (std::size_t s = 0; s < marginals[i].size(); ++s)
+          EXPECT_NEAR(marginals[i][s], truth.marginals[i][s], 1e-12);
+      }
+      const auto map = most_probable_assignment(model, observed, options);
+      EXPECT_NEAR(testing::log_value(model, map), truth.log_max, log_tolerance(truth.log_max));
+      for (std::size_t i = 0; i < model.size(); ++i) {
+        if (fixed[i] >= 0) {
+          EXPECT_EQ(map[i], static_cast<std::size_t>(fixed[i]));
+        }
+      }
+      std::vector<variable_id> query;
+      for (std::size_t i = 0; i < model.size(); i += 2) query.push_back(variable_id(static_cast<variable_id::rep>(i)));
+      const auto mmap = marginal_map(model, query, observed, options);
+      const auto best = testing::brute_force_marginal_map(model, query, fixed);
+      EXPECT_NEAR(testing::brute_force_query_value(model, query, mmap, fixed), best, log_tolerance(best));
+    }
+  }
+  // The property is tested on both kinds of evidence.
+  EXPECT_GT(checked, 80U);
+  EXPECT_GT(impossible, 0U);
+}
+
+TEST(markov_inference_test, a_partition_function_beyond_a_double_is_exact_in_log_space) {
+  testing::random_markov_options shape;
+  shape.variables = 6;
+  shape.factors = 40;
+  shape.zero_chance = 0.0;
+  shape.scale = 150.0;  // factors of e^±150, forty of them: Z far past e^709
+  const auto model = testing::random_markov_network(3, shape);
+  const std::vector<long> fixed(model.size(), -1);
+  const auto truth = testing::brute_force(model, fixed);
+  ASSERT_GT(truth.log_z, std::log(std::numeric_limits<double>::max()));
+  solve_report report;
+  EXPECT_NEAR(log_partition(model, {}, {}, &report), truth.log_z, log_tolerance(truth.log_z));
+  EXPECT_TRUE(report.log_space);
+  const auto marginals = all_marginals(model, {}, {});
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    for (std::size_t s = 0; s < marginals[i].size(); ++s) EXPECT_NEAR(marginals[i][s], truth.marginals[i][s], 1e-12);
+  }
+  EXPECT_NEAR(testing::log_value(model, most_probable_assignment(model, {}, {})), truth.log_max,
+              log_tolerance(truth.log_max));
+}
+
+TEST(markov_inference_test, a_variable_in_no_factor_is_uniform_and_counts_in_z) {
+  const markov_network model({variable("a", {"0", "1"}), variable("b", {"0", "1", "2"})},
+                             {factor_table({variable_id(0)}, {2}, {1.0, 3.0})});
+  for (const auto engine : {solve_engine::jt, solve_engine::ve}) {
+    EXPECT_NEAR(log_partition(model, {}, with_engine(engine)), std::log(4.0 * 3.0), 1e-15);
+    const auto marginals = all_marginals(model, {}, with_engine(engine));
+    EXPECT_NEAR(marginals[0][1], 0.75, 1e-15);
+    EXPECT_NEAR(marginals[1][2], 1.0 / 3.0, 1e-15);
+  }
+}
+
+TEST(markov_inference_test, a_bayesian_network_answers_as_its_engines_do) {
+  const auto network = read_bif(std::string(PGM_NETWORKS_DIR) + "/asia.bif");
+  static_assert(GraphicalModel<bayesian_network>);
+  evidence_set observed;
+  observed.hard.push_back({network.id("xray"), network.at("xray").state("yes")});
+  observed.hard.push_back({network.id("smoke"), network.at("smoke").state("no")});
+  junction_tree_engine reference(network);
+  reference.set_evidence(observed);
+  EXPECT_NEAR(log_partition(network, observed), reference.log_probability_of_evidence(), 1e-14);
+  const auto marginals = all_marginals(network, observed);
+  for (std::size_t i = 0; i < network.size(); ++i) {
+    const variable_id id(static_cast<variable_id::rep>(i));
+    if (observed.fixes(id)) continue;
+    const variable_id one[] = {id};
+    const auto expected = reference.joint(one);
+    for (std::size_t s = 0; s < marginals[i].size(); ++s)
+      EXPECT_NEAR(marginals[i][s], expected.table.values()[s], 1e-14);
+  }
+  const auto map = most_probable_assignment(network, observed);
+  const auto mpe = reference.mpe({});
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < network.size(); ++i) {
+    const variable_id id(static_cast<variable_id::rep>(i));
+    if (!observed.fixes(id)) {
+      EXPECT_EQ(map[i], mpe.states[k++].value());
+    }
+  }
+}
+
+TEST(markov_inference_test, a_tree_past_the_memory_limit_is_refused_before_it_is_built) {
+  testing::random_markov_options shape;
+  shape.variables = 14;
+  shape.factors = 30;
+  shape.min_states = 4;
+  const auto model = testing::random_markov_network(5, shape);
+  solve_options options;
+  options.memory_limit_bytes = 1024;
+  try {
+    static_cast<void>(log_partition(model, {}, options));
+    FAIL() << "expected memory_limit_exceeded";
+  } catch (const memory_limit_exceeded& e) {
+    EXPECT_THAT(e.what(), HasSubstr("cells"));
+    EXPECT_THAT(e.what(), HasSubstr("largest table"));
+    EXPECT_THAT(e.what(), HasSubstr("memory limit of 0 MiB"));
+  }
+  std::vector<variable_id> query{variable_id(0), variable_id(1)};
+  EXPECT_THROW(static_cast<void>(marginal_map(model, query, {}, options)), memory_limit_exceeded);
+}
+
+TEST(markov_inference_test, the_order_search_is_seeded_and_never_worse_than_greedy) {
+  testing::random_markov_options shape;
+  shape.variables = 30;
+  shape.factors = 45;
+  shape.max_arity = 3;
+  const auto model = testing::random_markov_network(11, shape);
+  const auto cards = cardinalities_of(model);
+  const auto graph = interaction_graph_of(model.size(), scopes_of(model));
+  const auto greedy = greedy_elimination(graph, cards, elimination_heuristic::min_fill);
+  const auto searched =
+      searched_elimination(graph, cards, elimination_heuristic::min_fill, {.restarts = 20, .seed = 7});
+  const auto again = searched_elimination(graph, cards, elimination_heuristic::min_fill, {.restarts = 20, .seed = 7});
+  EXPECT_LE(elimination_cells(searched, cards), elimination_cells(greedy, cards));
+  EXPECT_EQ(searched.order, again.order);
+  // Every order eliminates every variable once.
+  auto sorted = searched.order;
+  std::sort(sorted.begin(), sorted.end());
+  std::vector<std::size_t> all(model.size());
+  std::iota(all.begin(), all.end(), 0);
+  EXPECT_EQ(sorted, all);
+}
+
+TEST(markov_inference_test, engines_parse_their_names) {
+  EXPECT_EQ(parse_solve_engine("jt"), solve_engine::jt);
+  EXPECT_EQ(parse_elimination_heuristic("min-weight"), elimination_heuristic::min_weight);
+  try {
+    static_cast<void>(parse_solve_engine("jtt"));
+    FAIL();
+  } catch (const unknown_name& e) {
+    EXPECT_THAT(e.what(), HasSubstr("unknown engine 'jtt' (known: auto, jt, ve)"));
+  }
+}
+
+}  // namespace markov_inference_test
+}  // namespace pgm
