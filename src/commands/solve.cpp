@@ -34,6 +34,10 @@ struct solve_arguments {
   std::size_t restarts = solve_options{}.search.restarts;
   std::uint64_t seed = solve_options{}.search.seed;
   std::string out;
+  std::string schedule = "residual";
+  double damping = 0.0;
+  double tolerance = 1e-9;
+  std::size_t iterations = 1000;
 };
 
 bool is_uai(const std::filesystem::path& path) {
@@ -68,6 +72,10 @@ std::string solve(const M& model, const markov_network& ids, const solve_argumen
   options.engine = parse_solve_engine(args.engine);
   options.memory_limit_bytes = static_cast<std::size_t>(args.memory_limit) << 20;
   options.heuristic = parse_elimination_heuristic(args.heuristic);
+  options.bp = {.schedule = parse_bp_schedule(args.schedule),
+                .damping = args.damping,
+                .tolerance = args.tolerance,
+                .max_iterations = args.iterations};
   options.search = {.restarts = args.restarts, .seed = args.seed};
   if (args.task == "PR") {
     return uai_pr_text(log_partition(model, observed, options, &report) / std::numbers::ln10);
@@ -104,10 +112,16 @@ void run_solve(const solve_arguments& args) {
   }
   pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
   const std::chrono::duration<double> took = std::chrono::steady_clock::now() - started;
-  std::cerr << "pgm: solve: " << args.task << " by " << report.engine << ", exact, in "
-            << (report.log_space ? "logarithms" : "probabilities") << "; junction tree of " << report.total_cells
-            << " cells, largest table " << report.largest_table_cells << " cells; "
-            << text::format_short(took.count(), 3) << " s\n";
+  if (!report.note.empty()) note(report.note);
+  std::cerr << "pgm: solve: " << args.task << " by " << report.engine;
+  if (report.exact) {
+    std::cerr << ", exact, in " << (report.log_space ? "logarithms" : "probabilities") << "; junction tree of "
+              << report.total_cells << " cells, largest table " << report.largest_table_cells << " cells";
+  } else {
+    std::cerr << ", approximate, " << (report.converged ? "converged" : "not converged") << " after "
+              << report.iterations << " iterations (last change " << text::format_short(report.residual, 3) << ")";
+  }
+  std::cerr << "; " << text::format_short(took.count(), 3) << " s\n";
   summary_stream(args.out) << "wrote " << args.task << " of " << args.model << " to " << args.out << '\n';
 }
 
@@ -136,8 +150,21 @@ void add_solve_command(CLI::App& app) {
                   "Which sample of an older multi-sample .evid file to answer, from 0 (default 0)")
       ->check(whole_number(0, 1'000'000));
   cmd->add_option("--query", args->query, "A .query file: the query variables of MMAP");
-  cmd->add_option("--engine", args->engine, "jt (junction tree), ve (variable elimination) or auto (jt)")
+  cmd->add_option("--engine", args->engine,
+                  "jt (junction tree), ve (variable elimination), bp (loopy belief propagation: PR and MAR, "
+                  "approximate) or auto (jt when its tree fits in --memory-limit, else bp; the default)")
       ->check(CLI::IsMember(known_solve_engines()));
+  cmd->add_option("--schedule", args->schedule,
+                  "bp's schedule: residual (the factor whose messages would change most first, the default) or "
+                  "parallel (all at once)")
+      ->check(CLI::IsMember(known_bp_schedules()));
+  cmd->add_option("--damping", args->damping, "bp's damping, from 0 (none, the default) to below 1")
+      ->check(number_between(0.0, 1.0, false, true));
+  cmd->add_option("--tolerance", args->tolerance,
+                  "bp stops when no message would change a probability by more than this (default 1e-9)")
+      ->check(number_between(0.0, 1.0, true, false));
+  cmd->add_option("--iterations", args->iterations, "bp's iteration limit (default 1000)")
+      ->check(whole_number(1, 1'000'000));
   cmd->add_option("--memory-limit", args->memory_limit,
                   "MiB the exact engines' tables may take, checked before any is allocated (default 4096, the "
                   "competition's budget)")

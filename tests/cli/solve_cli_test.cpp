@@ -42,7 +42,8 @@ TEST_F(solve_cli_test, help_names_the_options) {
   const auto r = run("solve --help");
   EXPECT_EQ(r.code, 0);
   for (const char* option : {"--model", "--task", "--evidence", "--evidence-sample", "--query", "--engine",
-                             "--heuristic", "--order-restarts", "--seed", "--memory-limit", "--out"}) {
+                             "--heuristic", "--order-restarts", "--seed", "--schedule", "--damping", "--tolerance",
+                             "--iterations", "--memory-limit", "--out"}) {
     EXPECT_THAT(r.out, HasSubstr(option));
   }
 }
@@ -120,11 +121,18 @@ TEST_F(solve_cli_test, a_model_past_the_memory_limit_is_refused_naming_the_sizes
     }
   }
   std::ofstream(dir_ / "grid.uai") << grid << tables;
-  const auto r = run("solve --model " + (dir_ / "grid.uai").string() + " --task PR --memory-limit 1 --out " + out());
+  const auto r =
+      run("solve --model " + (dir_ / "grid.uai").string() + " --task PR --engine jt --memory-limit 1 --out " + out());
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err, HasSubstr("more than the memory limit of 1 MiB"));
   EXPECT_THAT(r.err, Not(HasSubstr("hint")));
   EXPECT_FALSE(std::filesystem::exists(out()));
+  const auto automatic =
+      run("solve --model " + (dir_ / "grid.uai").string() + " --task MAR --memory-limit 1 --out " + out());
+  EXPECT_EQ(automatic.code, 0) << automatic.err;
+  EXPECT_THAT(automatic.err, HasSubstr("auto chose bp"));
+  EXPECT_THAT(automatic.err, HasSubstr("MAR by bp, approximate"));
+  EXPECT_THAT(answer(), StartsWith("MAR\n144 2 "));
   const auto fits = run("solve --model " + (dir_ / "grid.uai").string() + " --task PR --out " + out());
   EXPECT_EQ(fits.code, 0) << fits.err;
   EXPECT_THAT(answer(), StartsWith("PR\n"));

@@ -113,12 +113,21 @@ TEST(uai_problems_test, problems_past_the_memory_limit_are_refused_naming_the_si
   for (const auto& [task, name] : too_large) {
     SCOPED_TRACE(name);
     const auto p = load(task, name);
+    solve_options exact;
+    exact.engine = solve_engine::jt;
     try {
-      static_cast<void>(log_partition(p.file.model, p.observed));
+      static_cast<void>(log_partition(p.file.model, p.observed, exact));
       FAIL() << "expected a refusal";
     } catch (const memory_limit_exceeded& e) {
       EXPECT_THAT(e.what(), HasSubstr("more than the memory limit of 4096 MiB"));
     }
+    // auto answers them approximately, and says so.
+    solve_report report;
+    const double log_z = log_partition(p.file.model, p.observed, {}, &report);
+    EXPECT_EQ(report.engine, "bp");
+    EXPECT_FALSE(report.exact);
+    EXPECT_THAT(report.note, HasSubstr("auto chose bp"));
+    EXPECT_TRUE(std::isfinite(log_z));
   }
   const auto p = load("MMAP", "Segmentation_13.uai");
   const auto query = parse_uai_query(read_model_text(p.path + ".query"), p.path, p.file.model);

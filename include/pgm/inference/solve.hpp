@@ -14,6 +14,9 @@
 /// MMAP, whose sums must come before its maxima, is eliminated in a constrained order); `ve`
 /// eliminates afresh for each answer. Both predict the size of their tables from the
 /// triangulation before allocating any, and refuse past `memory_limit_bytes`, naming both.
+/// `bp`, loopy belief propagation (belief_propagation.hpp), answers PR (the Bethe estimate) and
+/// MAR approximately on any model; `auto` is `jt` when its tree fits in memory, else `bp`, and
+/// the report says which ran, whether it is exact, and whether bp converged.
 ///
 /// Why log space when it is needed, and only then: a model's values need not be probabilities, so
 /// Z may be 10^300 and beyond (the competition's Grids) or a product may underflow on the way to a
@@ -35,6 +38,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/core/graphical_model.hpp"
 #include "pgm/core/unknown_name.hpp"
+#include "pgm/inference/belief_propagation.hpp"
 #include "pgm/inference/exact.hpp"
 #include "pgm/inference/factor.hpp"
 #include "pgm/inference/junction_tree.hpp"
@@ -47,9 +51,10 @@
 namespace pgm {
 
 /// The exact engines the tasks run on.
-enum class solve_engine { automatic, jt, ve };
+enum class solve_engine { automatic, jt, ve, bp };
 
-inline constexpr std::array all_solve_engines{solve_engine::automatic, solve_engine::jt, solve_engine::ve};
+inline constexpr std::array all_solve_engines{solve_engine::automatic, solve_engine::jt, solve_engine::ve,
+                                              solve_engine::bp};
 
 [[nodiscard]] constexpr std::string_view to_string(solve_engine engine) noexcept {
   switch (engine) {
@@ -59,11 +64,13 @@ inline constexpr std::array all_solve_engines{solve_engine::automatic, solve_eng
       return "jt";
     case solve_engine::ve:
       return "ve";
+    case solve_engine::bp:
+      return "bp";
   }
   return "?";
 }
 
-/// "auto", "jt" or "ve"; throws unknown_name otherwise.
+/// "auto", "jt", "ve" or "bp"; throws unknown_name otherwise.
 [[nodiscard]] inline solve_engine parse_solve_engine(std::string_view text) {
   return parse_choice("engine", text, all_solve_engines);
 }
@@ -77,6 +84,8 @@ struct solve_options {
   order_search search{.restarts = 32, .seed = 1};
   /// The competition's budget: 4 GiB.
   std::size_t memory_limit_bytes = std::size_t{4096} << 20;
+  /// What `bp` runs with.
+  bp_options bp;
 };
 
 /// How an answer was computed, for the user to read.
@@ -89,6 +98,12 @@ struct solve_report {
   /// The triangulation's largest table and all its tables together, in cells.
   std::size_t largest_table_cells = 0;
   std::size_t total_cells = 0;
+  /// For bp: whether it converged, after how many iterations, and its last residual.
+  bool converged = true;
+  std::size_t iterations = 0;
+  double residual = 0.0;
+  /// Why auto chose the engine it ran, when it was not jt.
+  std::string note;
 };
 
 namespace detail {
@@ -121,11 +136,13 @@ template <GraphicalModel M>
   return true;
 }
 
-/// The junction tree of `model` within the memory limit; throws table_too_large naming the
-/// tree's size, its largest table and the limit.
+/// The junction tree of `model` within the memory limit; throws memory_limit_exceeded naming the
+/// tree's size, its largest table and the limit. Nothing for the bp engine, nor for auto past the
+/// limit where bp can answer (`bp_answers`), with the report's note saying why.
 template <GraphicalModel M>
 [[nodiscard]] std::shared_ptr<const junction_tree> tree_within(const M& model, const solve_options& options,
-                                                               solve_report& report) {
+                                                               solve_report& report, bool bp_answers = true) {
+  if (options.engine == solve_engine::bp) return nullptr;
   const auto cells = options.memory_limit_bytes / bytes_per_tree_cell;
   // Compiled without a bound first: the triangulation only lists cliques, it allocates no table.
   auto tree = std::make_shared<const junction_tree>(
@@ -133,12 +150,18 @@ template <GraphicalModel M>
   report.largest_table_cells = tree->largest_clique_cells();
   report.total_cells = tree->total_cells();
   if (tree->total_cells() > cells) {
+    if (options.engine == solve_engine::automatic && bp_answers) {
+      report.note = "auto chose bp: the junction tree needs " + std::to_string(tree->total_cells()) +
+                    " cells, more than the memory limit of " + std::to_string(options.memory_limit_bytes >> 20) +
+                    " MiB holds";
+      return nullptr;
+    }
     throw memory_limit_exceeded(
         "exact inference needs a junction tree of " + std::to_string(tree->total_cells()) + " cells (" +
         std::to_string(tree->total_cells() / (std::size_t{1} << 20) * bytes_per_tree_cell) +
         " MiB; its largest table " + std::to_string(tree->largest_clique_cells()) +
         " cells), more than the memory limit of " + std::to_string(options.memory_limit_bytes >> 20) +
-        " MiB; raise the limit, search longer for an elimination order, or use an approximate engine");
+        " MiB; raise the limit, search longer for an elimination order, or use an approximate engine (bp)");
   }
   return tree;
 }
@@ -197,6 +220,20 @@ void check_marginal_map_size(const M& model, std::span<const variable_id> query,
   }
 }
 
+/// Runs bp and says so in the report.
+template <GraphicalModel M>
+[[nodiscard]] bp_result approximate(const M& model, const evidence_set& observed, const solve_options& options,
+                                    solve_report& report) {
+  auto result = belief_propagation(model, observed, options.bp);
+  report.engine = "bp";
+  report.exact = false;
+  report.log_space = true;
+  report.converged = result.converged;
+  report.iterations = result.iterations;
+  report.residual = result.residual;
+  return result;
+}
+
 template <Semiring S>
 [[nodiscard]] double natural_log_of(typename S::value_type value) {
   if constexpr (stores_logarithms<S>) {
@@ -244,6 +281,13 @@ template <GraphicalModel M>
   solve_report local;
   auto& r = report ? *report : local;
   const auto tree = detail::tree_within(model, options, r);
+  if (!tree) {
+    try {
+      return detail::approximate(model, observed, options, r).log_partition;
+    } catch (const impossible_evidence&) {
+      return -std::numeric_limits<double>::infinity();
+    }
+  }
   return detail::in_fitting_semiring<false>(model, r, [&]<Semiring S>() {
     if (options.engine == solve_engine::ve) {
       r.engine = "ve";
@@ -271,6 +315,7 @@ template <GraphicalModel M>
     const variable_id id(static_cast<variable_id::rep>(i));
     if (!observed.fixes(id)) free.push_back(id);
   }
+  if (!tree) return detail::approximate(model, observed, options, r).marginals;
   detail::in_fitting_semiring<false>(model, r, [&]<Semiring S>() {
     using value_type = typename S::value_type;
     if (options.engine == solve_engine::ve) {
@@ -316,7 +361,10 @@ template <GraphicalModel M>
                                                                 solve_report* report = nullptr) {
   solve_report local;
   auto& r = report ? *report : local;
-  const auto tree = detail::tree_within(model, options, r);
+  if (options.engine == solve_engine::bp) {
+    throw model_error("bp answers PR and MAR; the most probable assignment needs jt or ve");
+  }
+  const auto tree = detail::tree_within(model, options, r, false);
   return detail::in_fitting_semiring<true>(model, r, [&]<Semiring S>() {
     std::vector<std::size_t> states(model.size(), 0);
     if (options.engine == solve_engine::ve) {
@@ -352,6 +400,9 @@ template <GraphicalModel M>
                                                     solve_report* report = nullptr) {
   solve_report local;
   auto& r = report ? *report : local;
+  if (options.engine == solve_engine::bp) {
+    throw model_error("bp answers PR and MAR; marginal MAP needs jt or ve");
+  }
   detail::check_marginal_map_size(model, query, observed, options, r);
   r.engine = "ve";
   std::vector<variable_id> free;
