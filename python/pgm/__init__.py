@@ -18,6 +18,7 @@ from ._checks import _assignment, _flag, _names, _path, _real, _text, _whole
 from ._core import Error
 from . import _checks
 from ._inference import ENGINES, InferenceEngine
+from ._markov import MarkovNetwork
 
 __version__ = _core.__version__
 
@@ -36,6 +37,7 @@ __all__ = [
     "fit",
     "from_pgmpy",
     "learn_structure",
+    "MarkovNetwork",
     "mpe",
     "predict",
     "prevent",
@@ -304,12 +306,23 @@ def _graphviz(text, kind):
 
 
 def read_network(path):
-    """Reads a network from a .bif, .xml (XMLBIF), .net (Hugin) or .json file, as the `pgm` program does."""
-    return Network(_core.read_network(_path(path, "path")))
+    """Reads a network from a .bif, .xml (XMLBIF), .net (Hugin), .json or .uai file, as the `pgm`
+    program does; a .uai file that declares MARKOV is a pgm.MarkovNetwork."""
+    path = _path(path, "path")
+    name = os.fspath(path).lower()
+    if name.endswith(".uai") or name.endswith(".uai.gz"):
+        kind, handle = _core.read_uai(path)
+        return MarkovNetwork(handle, None) if kind == "markov" else Network(handle)
+    return Network(_core.read_network(path))
 
 
 def from_pgmpy(model):
-    """A Network with the variables, states and tables of a pgmpy model."""
+    """A Network with the variables, states and tables of a pgmpy Bayesian network, or a
+    MarkovNetwork with the factors of a pgmpy MarkovNetwork or FactorGraph."""
+    if type(model).__name__ in ("MarkovNetwork", "FactorGraph"):
+        from ._markov import markov_from_pgmpy
+
+        return markov_from_pgmpy(model)
     from ._pgmpy import from_pgmpy as convert
 
     return convert(model)

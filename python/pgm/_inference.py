@@ -25,13 +25,21 @@ ENGINES = ("auto", "jt", "ve", "lw", "gibbs")
 
 
 class InferenceEngine:
-    """Queries on one network, compiled once.
+    """Queries on one network, compiled once (a pgm.MarkovNetwork is answered by its own
+    engines: "auto", "jt", "ve" or "bp", with log_partition_function, marginal, marginals and mpe).
 
     engine: "auto" (the junction tree unless it is too large, then likelihood weighting),
     "jt", "ve", "lw" or "gibbs"; samples, seed, burn_in and threads set the sampling engines
     (the same numbers for a seed, whatever the threads). Evidence stays until replaced:
     set_evidence({variable: state}) for observed states, set_soft_evidence({variable: [weight
     per state]}) for likelihoods."""
+
+    def __new__(cls, network, engine="auto", **settings):
+        from ._markov import MarkovInference, MarkovNetwork
+
+        if isinstance(network, MarkovNetwork):
+            return MarkovInference(network, engine)
+        return super().__new__(cls)
 
     def __init__(self, network, engine="auto", *, samples=100_000, seed=1, burn_in=1_000, threads=0):
         _network(network)
@@ -127,6 +135,10 @@ class InferenceEngine:
         return math.exp(self._engine.log_probability_of_evidence())
 
     def log_probability_of_evidence(self):
+        return self._engine.log_probability_of_evidence()
+
+    def log_partition_function(self):
+        """ln Z given the evidence: for a Bayesian network, ln P(evidence)."""
         return self._engine.log_probability_of_evidence()
 
     def __repr__(self):

@@ -19,7 +19,7 @@ def test_the_heat_map_example_runs_as_written(tmp_path, monkeypatch):
 
 def test_the_two_stack_transfer_runs_as_written(capsys):
     blocks = python_blocks("docs/python.md")
-    assert len(blocks) == 3
+    assert len(blocks) == 4
     names = {}
     exec(compile(blocks[1], "docs/python.md", "exec"), names)
     printed = capsys.readouterr().out.splitlines()
@@ -30,3 +30,16 @@ def test_the_two_stack_transfer_runs_as_written(capsys):
     assert set(names["advice"]["suggestion"]) == {"xOff2", "yOff2"}
     assert names["minimal"].notes == ["'onTop2' gets the minimal prior from 'onTop1' with w = 5"]
     assert isinstance(names["minimal"], pgm.Network)
+
+
+def test_the_markov_network_example_runs_as_written(capsys):
+    import math
+
+    blocks = python_blocks("docs/python.md")
+    names = {"pgm": pgm}
+    exec(compile(blocks[3], "docs/python.md", "exec"), names)
+    printed = capsys.readouterr().out.splitlines()
+    assert float(printed[0]) == round(math.log(44), 6)
+    assert printed[1] == str([round(4 / 34, 6), round(30 / 34, 6)])
+    assert printed[2] == "{'a': '1', 'b': '1', 'c': '1'}"
+    assert float(printed[3]) == round(math.log(34), 6)

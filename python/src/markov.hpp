@@ -1,0 +1,12 @@
+#pragma once
+// pgm._core's Markov networks: the model a pgm.MarkovNetwork wraps, the four UAI tasks on it,
+// and reading a .uai file as whichever model it declares.
+
+#include <pybind11/pybind11.h>
+
+namespace pgm::python {
+
+/// Adds the class MarkovNetwork and the function read_uai to the module.
+void add_markov(pybind11::module_& module);
+
+}  // namespace pgm::python
