@@ -6,11 +6,14 @@
 
 #include <cmath>
 #include <numeric>
+#include <thread>
 #include <vector>
 
 #include "pgm/core/graphical_model.hpp"
 #include "pgm/inference/junction_tree_engine.hpp"
+#include "pgm/inference/propagation.hpp"
 #include "pgm/inference/solve.hpp"
+#include "pgm/inference/variable_elimination.hpp"
 #include "pgm/io/bif.hpp"
 #include "support/random_markov_network.hpp"
 #include "support/random_network.hpp"
@@ -207,6 +210,70 @@ TEST(markov_inference_test, engines_parse_their_names) {
   } catch (const unknown_name& e) {
     EXPECT_THAT(e.what(), HasSubstr("unknown engine 'jtt' (known: auto, jt, ve, bp)"));
   }
+}
+
+// A user's semiring through both exact engines: the tropical (min, +) semiring of docs/extending.md.
+struct min_sum {
+  using value_type = double;
+  static constexpr bool idempotent = true;
+  static constexpr double zero() noexcept { return std::numeric_limits<double>::infinity(); }
+  static constexpr double one() noexcept { return 0.0; }
+  static constexpr double plus(double a, double b) noexcept { return std::min(a, b); }
+  static constexpr double times(double a, double b) noexcept { return a + b; }
+  static double from_probability(double p) noexcept { return -std::log(p); }
+  static double to_probability(double cost) noexcept { return std::exp(-cost); }
+};
+static_assert(Semiring<min_sum>);
+
+TEST(markov_inference_test, a_users_semiring_runs_through_elimination_and_the_junction_tree) {
+  for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+    const auto model = testing::random_markov_network(seed);
+    auto tree = std::make_shared<const junction_tree>(model);
+    propagation<min_sum> by_tree(tree, model);
+    for (std::size_t i = 0; i < model.size(); ++i) {
+      const variable_id x[] = {variable_id(static_cast<variable_id::rep>(i))};
+      const auto by_elimination = joint_in<min_sum>(model, x, {});
+      const auto from_tree = by_tree.marginal(x[0]);
+      for (std::size_t s = 0; s < model.variables()[i].cardinality(); ++s) {
+        std::vector<long> fixed(model.size(), -1);
+        fixed[i] = static_cast<long>(s);
+        const double best = -testing::brute_force(model, fixed).log_max;  // the lowest cost
+        if (std::isinf(best)) {
+          EXPECT_TRUE(std::isinf(by_elimination.values()[s]));
+          EXPECT_TRUE(std::isinf(from_tree[s]));
+          continue;
+        }
+        EXPECT_NEAR(by_elimination.values()[s], best, 1e-12 * std::max(1.0, std::abs(best)));
+        EXPECT_NEAR(from_tree[s], best, 1e-12 * std::max(1.0, std::abs(best)));
+      }
+    }
+  }
+}
+
+TEST(markov_inference_test, variable_elimination_answers_two_threads_at_once) {
+  const auto network = read_bif(std::string(PGM_NETWORKS_DIR) + "/child.bif");
+  variable_elimination engine(network);
+  std::vector<std::vector<double>> alone(network.size());
+  for (std::size_t i = 0; i < network.size(); ++i) {
+    const variable_id one[] = {variable_id(static_cast<variable_id::rep>(i))};
+    const auto answer = variable_elimination(network).joint(one);
+    alone[i].assign(answer.table.values().begin(), answer.table.values().end());
+  }
+  // Both threads fill the engine's table cache on first use, then read it.
+  std::vector<std::vector<double>> first(network.size()), second(network.size());
+  auto ask = [&](std::vector<std::vector<double>>& into) {
+    for (std::size_t i = 0; i < network.size(); ++i) {
+      const variable_id one[] = {variable_id(static_cast<variable_id::rep>(i))};
+      const auto answer = engine.joint(one);
+      into[i].assign(answer.table.values().begin(), answer.table.values().end());
+    }
+  };
+  std::thread a(ask, std::ref(first));
+  std::thread b(ask, std::ref(second));
+  a.join();
+  b.join();
+  EXPECT_EQ(first, alone);
+  EXPECT_EQ(second, alone);
 }
 
 }  // namespace markov_inference_test

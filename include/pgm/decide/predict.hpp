@@ -15,6 +15,7 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/decide/assignment.hpp"
+#include "pgm/inference/evidence_scope.hpp"
 #include "pgm/inference/inference_engine.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 
@@ -85,21 +86,13 @@ template <InferenceEngine Engine>
       sum += table(state_index(static_cast<state_index::rep>(s)), column);
     return table(state, column) / sum;
   }
-  const evidence_set before = engine.evidence();
-  engine.set_evidence({observed, {}});
+  const evidence_scope scope(engine, {observed, {}});
   const variable_id query_ids[] = {target};
-  posterior answer;
   try {
-    answer = engine.joint(query_ids);
+    return engine.joint(query_ids).table.values()[state.value()];
   } catch (const impossible_evidence&) {
-    engine.set_evidence(before);
     throw impossible_evidence("the assignment has probability 0 under the network");
-  } catch (...) {
-    engine.set_evidence(before);
-    throw;
   }
-  engine.set_evidence(before);
-  return answer.table.values()[state.value()];
 }
 
 /// The same with variable elimination on `network`.

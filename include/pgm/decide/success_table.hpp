@@ -15,6 +15,7 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/inference/evidence_scope.hpp"
 #include "pgm/inference/inference_engine.hpp"
 #include "pgm/inference/query.hpp"
 #include "pgm/inference/variable_elimination.hpp"
@@ -51,16 +52,11 @@ template <InferenceEngine Engine>
 
   auto query_ids = ids;
   query_ids.push_back(target);
-  const evidence_set before = engine.evidence();
-  engine.set_evidence({{observed.begin(), observed.end()}, {}});
   posterior joint;
-  try {
+  {
+    const evidence_scope scope(engine, {{observed.begin(), observed.end()}, {}});
     joint = engine.joint(query_ids);
-  } catch (...) {
-    engine.set_evidence(before);
-    throw;
   }
-  engine.set_evidence(before);
   // The success variable is last in the joint, so each run of J values is one configuration.
   const auto j = own.child_cardinality();
   std::vector<double> values(joint.table.values().begin(), joint.table.values().end());
@@ -118,7 +114,7 @@ template <InferenceEngine Engine>
   const cpt<double> shape(own.child(), parents);
   const auto j = own.child_cardinality();
   std::vector<double> values(shape.size(), 1.0 / static_cast<double>(j));
-  const evidence_set before = engine.evidence();
+  evidence_scope scope(engine);
   std::vector<std::size_t> codes(given.size(), 0);
   std::vector<std::size_t> set_cards;
   std::size_t settings = 1;
@@ -126,45 +122,39 @@ template <InferenceEngine Engine>
     set_cards.push_back(parents[k].cardinality());
     settings *= set_cards.back();
   }
-  try {
-    for (std::size_t c = 0; c < settings; ++c) {
-      evidence_set scenario{{observed.begin(), observed.end()}, {}, {}};
-      std::size_t rem = c;
-      for (std::size_t i = set_positions.size(); i-- > 0;) {
-        const auto k = set_positions[i];
-        codes[k] = rem % set_cards[i];
-        rem /= set_cards[i];
-        scenario.intervened.push_back({network.id(given[k]), state_index(static_cast<state_index::rep>(codes[k]))});
+  for (std::size_t c = 0; c < settings; ++c) {
+    evidence_set scenario{{observed.begin(), observed.end()}, {}, {}};
+    std::size_t rem = c;
+    for (std::size_t i = set_positions.size(); i-- > 0;) {
+      const auto k = set_positions[i];
+      codes[k] = rem % set_cards[i];
+      rem /= set_cards[i];
+      scenario.intervened.push_back({network.id(given[k]), state_index(static_cast<state_index::rep>(codes[k]))});
+    }
+    scope.replace(std::move(scenario));
+    posterior joint;
+    try {
+      joint = query(engine, rest);
+    } catch (const impossible_evidence&) {
+      continue;  // the observations cannot happen under this setting: every column uniform
+    }
+    // The joint runs over the non-controllable parents (in `given` order), the success last.
+    const auto cells = joint.table.size() / j;
+    for (std::size_t g = 0; g < cells; ++g) {
+      std::size_t grem = g;
+      for (std::size_t k = given.size(); k-- > 0;) {
+        if (is_controllable(given[k])) continue;
+        codes[k] = grem % parents[k].cardinality();
+        grem /= parents[k].cardinality();
       }
-      engine.set_evidence(std::move(scenario));
-      posterior joint;
-      try {
-        joint = query(engine, rest);
-      } catch (const impossible_evidence&) {
-        continue;  // the observations cannot happen under this setting: every column uniform
-      }
-      // The joint runs over the non-controllable parents (in `given` order), the success last.
-      const auto cells = joint.table.size() / j;
-      for (std::size_t g = 0; g < cells; ++g) {
-        std::size_t grem = g;
-        for (std::size_t k = given.size(); k-- > 0;) {
-          if (is_controllable(given[k])) continue;
-          codes[k] = grem % parents[k].cardinality();
-          grem /= parents[k].cardinality();
-        }
-        const auto u = shape.configuration(codes).value();
-        double sum = 0.0;
-        for (std::size_t x = 0; x < j; ++x) sum += joint.table.values()[g * j + x];
-        for (std::size_t x = 0; x < j; ++x) {
-          values[u * j + x] = sum > 0.0 ? joint.table.values()[g * j + x] / sum : 1.0 / static_cast<double>(j);
-        }
+      const auto u = shape.configuration(codes).value();
+      double sum = 0.0;
+      for (std::size_t x = 0; x < j; ++x) sum += joint.table.values()[g * j + x];
+      for (std::size_t x = 0; x < j; ++x) {
+        values[u * j + x] = sum > 0.0 ? joint.table.values()[g * j + x] / sum : 1.0 / static_cast<double>(j);
       }
     }
-  } catch (...) {
-    engine.set_evidence(before);
-    throw;
   }
-  engine.set_evidence(before);
   return cpt<double>(own.child(), std::move(parents), std::move(values));
 }
 

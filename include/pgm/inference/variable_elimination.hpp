@@ -17,6 +17,7 @@
 #include <cstddef>
 #include <initializer_list>
 #include <memory>
+#include <mutex>
 #include <span>
 #include <string>
 #include <string_view>
@@ -288,7 +289,8 @@ struct variable_elimination_options {
 };
 
 /// The variable elimination engine: holds the network and the evidence; every query eliminates
-/// afresh. `network` must outlive the engine.
+/// afresh. `network` must outlive the engine. Its const members (joint, mpe, P(evidence)) may be
+/// called from several threads at once; set_evidence may not run beside them.
 class variable_elimination {
  public:
   explicit variable_elimination(const bayesian_network& network, variable_elimination_options options = {})
@@ -312,9 +314,11 @@ class variable_elimination {
  private:
   [[nodiscard]] PGM_DECL std::vector<variable_id> unobserved() const;
 
-  /// Every node's table as a factor in S, made once per semiring on first use.
+  /// Every node's table as a factor in S, made once per semiring on first use, under a lock:
+  /// two threads may query one engine through its const members.
   template <Semiring S>
   [[nodiscard]] auto tables() const {
+    const std::lock_guard lock(*tables_mutex_);
     auto& kept = std::get<kept_tables<S>>(tables_).factors;
     if (kept.empty()) {
       for (std::size_t i = 0; i < network_->size(); ++i) {
@@ -336,6 +340,8 @@ class variable_elimination {
   mutable std::tuple<kept_tables<sum_product<double>>, kept_tables<log_sum_product<double>>,
                      kept_tables<max_product<double>>, kept_tables<log_max_product<double>>>
       tables_;
+  /// Shared by copies, which share the tables' factors too.
+  std::shared_ptr<std::mutex> tables_mutex_ = std::make_shared<std::mutex>();
 };
 
 /// P(query | evidence) by name. Throws model_error for an unknown variable or state, a
