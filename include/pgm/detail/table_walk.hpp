@@ -6,11 +6,15 @@
 // (`fold_onto`). Both walk the big table in order with an odometer that carries the small
 // table's index along, the last variable in a tight inner loop; no index is ever decoded.
 
+#include <algorithm>
+#include <cmath>
+#include <concepts>
 #include <cstddef>
 #include <span>
 #include <vector>
 
 #include "pgm/core/assert.hpp"
+#include "pgm/inference/semiring.hpp"
 
 namespace pgm::detail {
 
@@ -53,10 +57,26 @@ inline void multiply_into(std::span<V> big, std::span<const std::size_t> cards, 
 }
 
 /// small[j] ⊕= big[i] over big's table; `small` starts as it is given (S::zero() to marginalize).
+/// In logarithms, log-sum-exp in two passes: each target's largest value first, then one exp per
+/// value shifted by it, and one log per target (not an exp and a log1p per value).
 template <class S, class V>
 inline void fold_onto(std::span<const V> big, std::span<const std::size_t> cards, std::span<const std::size_t> strides,
                       std::span<V> small) {
-  walk_table(cards, strides, [&](std::size_t i, std::size_t j) { small[j] = S::plus(small[j], big[i]); });
+  if constexpr (std::same_as<S, log_sum_product<V>>) {
+    std::vector<V> top(small.begin(), small.end());
+    walk_table(cards, strides, [&](std::size_t i, std::size_t j) { top[j] = std::max(top[j], big[i]); });
+    std::vector<V> sum(small.size(), V{0});
+    for (std::size_t j = 0; j < small.size(); ++j) {
+      if (small[j] != S::zero()) sum[j] = std::exp(small[j] - top[j]);
+    }
+    walk_table(cards, strides, [&](std::size_t i, std::size_t j) {
+      if (big[i] != S::zero()) sum[j] += std::exp(big[i] - top[j]);
+    });
+    for (std::size_t j = 0; j < small.size(); ++j)
+      small[j] = top[j] == S::zero() ? S::zero() : top[j] + std::log(sum[j]);
+  } else {
+    walk_table(cards, strides, [&](std::size_t i, std::size_t j) { small[j] = S::plus(small[j], big[i]); });
+  }
 }
 
 }  // namespace pgm::detail

@@ -16,6 +16,7 @@
 /// is the two-pass propagation, and entering or retracting evidence recompiles nothing.
 
 #include <algorithm>
+#include <concepts>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -436,14 +437,13 @@ class propagation {
   /// them all its messages from one pass over its table.
   const std::vector<value_type>& fold_for_group(std::size_t c, std::size_t g) {
     const auto& q = tree_->cliques()[c];
-    inputs_.assign(1, potential_version_[c]);
-    for (std::size_t h = 0; h < q.groups.size(); ++h) {
-      if (h == g) continue;
-      for (auto k : q.groups[h]) inputs_.push_back(stored(message_into(c, q.edges[k])).version);
-    }
+    // Folds made all at once may divide by g's own messages (fold_all_groups): they depend on
+    // every message into c, and are kept while none changes.
+    const bool all_at_once = q.groups.size() >= fold_all_from && all_messages_in(c);
+    inputs_of(c, all_at_once ? q.groups.size() : g, inputs_);
     auto& kept = group_folds_[c][g];
     if (kept.valid && kept.inputs == inputs_) return kept.values;
-    if (q.groups.size() >= fold_all_from && all_messages_in(c)) {
+    if (all_at_once) {
       fold_all_groups(c);
       return kept.values;
     }
@@ -479,21 +479,52 @@ class propagation {
     return product;
   }
 
-  /// Every group fold of clique c at once (fold_for_group), every message into c known.
+  /// The versions of ψ_c and of the messages into c of every group but `skip` (none skipped
+  /// when it is past the last group).
+  void inputs_of(std::size_t c, std::size_t skip, std::vector<std::uint64_t>& inputs) {
+    const auto& q = tree_->cliques()[c];
+    inputs.assign(1, potential_version_[c]);
+    for (std::size_t h = 0; h < q.groups.size(); ++h) {
+      if (h == skip) continue;
+      for (auto k : q.groups[h]) inputs.push_back(stored(message_into(c, q.edges[k])).version);
+    }
+  }
+
+  /// Every group fold of clique c at once (fold_for_group), every message into c known: in
+  /// logarithms as Hugin does, the belief folded onto each separator with the group's own
+  /// messages taken out again (one product and G folds); otherwise by divide and conquer.
   void fold_all_groups(std::size_t c) {
     const auto& q = tree_->cliques()[c];
     std::vector<std::vector<value_type>> products(q.groups.size());
     for (std::size_t g = 0; g < q.groups.size(); ++g) products[g] = group_product(c, g);
-    std::vector<value_type> table = potential(c);
-    fold_range(c, 0, q.groups.size(), table, products);
+    if constexpr (std::same_as<S, log_sum_product<value_type>>) {
+      divide_out(c, products);
+    } else {
+      std::vector<value_type> table = potential(c);
+      fold_range(c, 0, q.groups.size(), table, products);
+    }
     for (std::size_t g = 0; g < q.groups.size(); ++g) {
       auto& kept = group_folds_[c][g];
-      kept.inputs.assign(1, potential_version_[c]);
-      for (std::size_t h = 0; h < q.groups.size(); ++h) {
-        if (h == g) continue;
-        for (auto k : q.groups[h]) kept.inputs.push_back(stored(message_into(c, q.edges[k])).version);
-      }
+      inputs_of(c, q.groups.size(), kept.inputs);
       kept.valid = true;
+    }
+  }
+
+  /// Hugin's division in logarithms, where it loses nothing: each group's fold is the belief's
+  /// fold onto its separator minus the group's messages; where they are −∞ (a zero), so is the
+  /// fold (0/0 = 0: the group's side gives those states weight 0, whatever comes back to it).
+  void divide_out(std::size_t c, const std::vector<std::vector<value_type>>& products) {
+    const auto& q = tree_->cliques()[c];
+    const auto belief = product_at(c, q.edges.size());
+    for (std::size_t g = 0; g < q.groups.size(); ++g) {
+      const auto k = q.groups[g].front();
+      auto& values = group_folds_[c][g].values;
+      values.assign(tree_->edges()[q.edges[k]].cells, S::zero());
+      detail::fold_onto<S, value_type>(std::span<const value_type>(belief), q.cardinalities, q.strides[k],
+                                       std::span<value_type>(values));
+      for (std::size_t s = 0; s < values.size(); ++s) {
+        values[s] = products[g][s] == S::zero() ? S::zero() : values[s] - products[g][s];
+      }
     }
   }
 
