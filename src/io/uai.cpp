@@ -138,7 +138,19 @@ uai_model parse_uai(std::string_view text, const std::string& source) {
   const auto n = in.count("the number of variables", 0, most_declared);
   std::vector<std::size_t> cards;
   cards.reserve(std::min(n, text.size() / 2));
-  for (std::size_t v = 0; v < n; ++v) cards.push_back(in.count("a cardinality", 1, max_table_cells));
+  // Each state is a labelled object: a variable's states are at most a table's cells, and the
+  // states of all variables at most what the file's bytes could give values for (or 2^16).
+  const std::size_t most_states = std::max<std::size_t>(std::size_t{1} << 16, text.size());
+  std::size_t states = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    cards.push_back(in.count("a cardinality", 1, max_table_cells));
+    states += cards.back();
+    if (states > most_states) {
+      in.fail("the variables have more than " + std::to_string(most_states) +
+              " states in all, more than pgm reads from a UAI file of " + std::to_string(text.size()) +
+              " bytes (at most 65536 or the file's size; docs/limits.md)");
+    }
+  }
   const auto m = in.count("the number of factors", 0, most_declared);
   if (result.kind == uai_kind::bayes && m != n) {
     in.fail("a BAYES file has one table per variable: expected " + std::to_string(n) + " factors, found " +

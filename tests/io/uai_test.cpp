@@ -115,6 +115,10 @@ TEST(uai_test, errors_name_the_line_the_column_and_what_was_expected) {
   EXPECT_THAT(error_of("MARKOV\n1\n2\n1\n1 0\n2\n1 1 1\n"), HasSubstr("m.uai:7:5: expected the end of the file"));
   EXPECT_THAT(error_of("BAYES\n2\n2 2\n1\n"), HasSubstr("a BAYES file has one table per variable"));
   EXPECT_THAT(error_of(""), HasSubstr("m.uai:1:1: expected MARKOV or BAYES, found the end of the file"));
+  // A short file declaring millions of states is refused before they are made (docs/limits.md).
+  EXPECT_THAT(error_of("MARKOV\n3\n2 9996832 26\n0\n"),
+              HasSubstr("m.uai:3:3: the variables have more than 65536 states in all, more than pgm reads from a UAI "
+                        "file of 24 bytes"));
 }
 
 TEST(uai_test, a_bayes_file_must_hold_distributions) {

@@ -50,7 +50,7 @@
 
 namespace pgm {
 
-/// The exact engines the tasks run on.
+/// The engines the tasks run on: exact (jt, ve) or approximate (bp), or auto.
 enum class solve_engine { automatic, jt, ve, bp };
 
 inline constexpr std::array all_solve_engines{solve_engine::automatic, solve_engine::jt, solve_engine::ve,
@@ -90,7 +90,7 @@ struct solve_options {
 
 /// How an answer was computed, for the user to read.
 struct solve_report {
-  /// The engine that answered ("jt", "ve").
+  /// The engine that answered ("jt", "ve", "bp").
   std::string engine;
   bool exact = true;
   /// Whether the work ran in logarithms (see the file comment).
