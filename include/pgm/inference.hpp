@@ -8,6 +8,7 @@
 #include "pgm/inference/evidence_scope.hpp"
 #include "pgm/inference/exact.hpp"
 #include "pgm/inference/factor.hpp"
+#include "pgm/inference/factor_gibbs.hpp"
 #include "pgm/inference/gibbs_sampling.hpp"
 #include "pgm/inference/inference_engine.hpp"
 #include "pgm/inference/junction_tree.hpp"

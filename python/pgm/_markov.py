@@ -1,7 +1,7 @@
 """Markov networks for Python: pgm.MarkovNetwork holds named variables and any non-negative factors
 over them (a factor graph, as the UAI competitions' MARKOV files and pgmpy's MarkovNetwork), and
 answers the competition's tasks exactly by a junction tree or variable elimination, or
-approximately by loopy belief propagation. Factors are NumPy arrays with one axis per variable
+approximately by loopy belief propagation or Gibbs sampling (marginals). Factors are NumPy arrays with one axis per variable
 of their scope, in scope order."""
 
 import math
@@ -12,7 +12,7 @@ import pandas as pd
 from . import _core
 from ._checks import _evidence
 
-SOLVE_ENGINES = ("auto", "jt", "ve", "bp")
+SOLVE_ENGINES = ("auto", "jt", "ve", "bp", "gibbs")
 
 
 def _engine_name(engine):

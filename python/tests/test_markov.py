@@ -53,6 +53,9 @@ def test_a_model_from_factors_answers_as_brute_force():
     assert model.log_partition_function({"c": "1"}) == pytest.approx(math.log(z_c), abs=1e-12)
     assert model.marginals({"c": "1"})["b"].to_numpy() == pytest.approx(marginals_c["b"], abs=1e-12)
     assert model.map() == {"a": "1", "b": "1", "c": "1"}
+    sampled = model.marginals(engine="gibbs")  # 10,000 sweeps: within a few hundredths
+    for name, series in sampled.items():
+        assert series.to_numpy() == pytest.approx(marginals[name], abs=0.03)
 
 
 def test_read_network_reads_a_markov_uai_file_and_writes_it_back(tmp_path):
@@ -94,6 +97,8 @@ def test_bad_input_is_an_error_naming_it(tmp_path):
         pgm.MarkovNetwork({"a": ["0", "1"]}, [(("z",), [1.0, 1.0])])
     with pytest.raises(pgm.Error, match="unknown engine"):
         chain().marginals(engine="lw")
+    with pytest.raises(pgm.Error, match="gibbs answers MAR"):
+        chain().log_partition_function(engine="gibbs")
     with pytest.raises(pgm.Error, match="has probability 0"):
         pgm.MarkovNetwork({"a": ["0", "1"]}, [(("a",), [0.0, 1.0])]).marginals({"a": "0"})
     (tmp_path / "bad.uai").write_text("MARKOV\n1\n2\n1\n1 0\n3\n1 2 3\n")

@@ -38,6 +38,8 @@ struct solve_arguments {
   double damping = 0.0;
   double tolerance = 1e-9;
   std::size_t iterations = 1000;
+  std::size_t sweeps = 10'000;
+  std::size_t burn_in = 1'000;
 };
 
 bool is_uai(const std::filesystem::path& path) {
@@ -77,6 +79,7 @@ std::string solve(const M& model, const markov_network& ids, const solve_argumen
                 .tolerance = args.tolerance,
                 .max_iterations = args.iterations};
   options.search = {.restarts = args.restarts, .seed = args.seed};
+  options.gibbs = {.sweeps = args.sweeps, .burn_in = args.burn_in, .seed = args.seed};
   if (args.task == "PR") {
     return uai_pr_text(log_partition(model, observed, options, &report) / std::numbers::ln10);
   }
@@ -117,6 +120,8 @@ void run_solve(const solve_arguments& args) {
   if (report.exact) {
     std::cerr << ", exact, in " << (report.log_space ? "logarithms" : "probabilities") << "; junction tree of "
               << report.total_cells << " cells, largest table " << report.largest_table_cells << " cells";
+  } else if (report.engine == "gibbs") {
+    std::cerr << ", approximate, " << report.iterations << " sweeps";
   } else {
     std::cerr << ", approximate, " << (report.converged ? "converged" : "not converged") << " after "
               << report.iterations << " iterations (last change " << text::format_short(report.residual, 3) << ")";
@@ -152,7 +157,8 @@ void add_solve_command(CLI::App& app) {
   cmd->add_option("--query", args->query, "A .query file: the query variables of MMAP");
   cmd->add_option("--engine", args->engine,
                   "jt (junction tree), ve (variable elimination), bp (loopy belief propagation: PR and MAR, "
-                  "approximate) or auto (jt when its tree fits in --memory-limit, else bp; the default)")
+                  "approximate), gibbs (Gibbs sampling: MAR) or auto (jt when its tree fits in --memory-limit, else "
+                  "bp; the default)")
       ->check(CLI::IsMember(known_solve_engines()));
   cmd->add_option("--schedule", args->schedule,
                   "bp's schedule: residual (the factor whose messages would change most first, the default) or "
@@ -165,6 +171,10 @@ void add_solve_command(CLI::App& app) {
       ->check(number_between(0.0, 1.0, true, false));
   cmd->add_option("--iterations", args->iterations, "bp's iteration limit (default 1000)")
       ->check(whole_number(1, 1'000'000));
+  cmd->add_option("--sweeps", args->sweeps, "gibbs's sweeps kept after the burn-in (default 10000)")
+      ->check(whole_number(1, 100'000'000));
+  cmd->add_option("--burn-in", args->burn_in, "gibbs's sweeps left out first (default 1000)")
+      ->check(whole_number(0, 100'000'000));
   cmd->add_option("--memory-limit", args->memory_limit,
                   "MiB the exact engines' tables may take, checked before any is allocated (default 4096, the "
                   "competition's budget)")
@@ -178,7 +188,8 @@ void add_solve_command(CLI::App& app) {
                   "junction tree kept (default " +
                       std::to_string(args->restarts) + ")")
       ->check(whole_number(0, 100'000));
-  cmd->add_option("--seed", args->seed, "The seed of the order search's restarts (default 1): one seed, one order")
+  cmd->add_option("--seed", args->seed,
+                  "The seed of the order search's restarts and of gibbs's chain (default 1): one seed, one answer")
       ->check(whole_number(0, std::numeric_limits<std::uint64_t>::max()));
   cmd->add_option("--out", args->out, "The result file to write, atomically")->required();
   cmd->callback([args] { run_solve(*args); });

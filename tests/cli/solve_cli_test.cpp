@@ -43,7 +43,7 @@ TEST_F(solve_cli_test, help_names_the_options) {
   EXPECT_EQ(r.code, 0);
   for (const char* option : {"--model", "--task", "--evidence", "--evidence-sample", "--query", "--engine",
                              "--heuristic", "--order-restarts", "--seed", "--schedule", "--damping", "--tolerance",
-                             "--iterations", "--memory-limit", "--out"}) {
+                             "--iterations", "--sweeps", "--burn-in", "--memory-limit", "--out"}) {
     EXPECT_THAT(r.out, HasSubstr(option));
   }
 }

@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "pgm/inference/factor_gibbs.hpp"
 #include "pgm/inference/solve.hpp"
 #include "support/random_markov_network.hpp"
 
@@ -151,7 +152,7 @@ TEST(belief_propagation_test, solve_runs_bp_by_name_and_auto_past_the_memory_lim
   EXPECT_TRUE(report.converged);
   EXPECT_NEAR(log_z, log_partition(model, {}), 1e-9);
   EXPECT_THAT([&] { static_cast<void>(most_probable_assignment(model, {}, options)); },
-              ::testing::ThrowsMessage<model_error>(HasSubstr("bp answers PR and MAR")));
+              ::testing::ThrowsMessage<model_error>(HasSubstr("bp answers MAR (bp PR too)")));
 
   options.engine = solve_engine::automatic;
   options.memory_limit_bytes = 16;  // no tree fits
@@ -161,6 +162,56 @@ TEST(belief_propagation_test, solve_runs_bp_by_name_and_auto_past_the_memory_lim
   EXPECT_THAT(automatic.note, HasSubstr("auto chose bp"));
   EXPECT_EQ(marginals.size(), model.size());
   EXPECT_THROW(static_cast<void>(most_probable_assignment(model, {}, options)), memory_limit_exceeded);
+}
+
+// Gibbs sampling on a Markov network (pgm/inference/factor_gibbs.hpp): close to the exact
+// marginals with positive factors, the same numbers for a seed, and honest about zeros.
+TEST(factor_gibbs_test, estimates_the_exact_marginals_and_repeats_for_a_seed) {
+  testing::random_markov_options shape;
+  shape.variables = 6;
+  shape.factors = 8;
+  shape.max_arity = 3;
+  shape.zero_chance = 0.0;
+  shape.scale = 1.0;
+  const auto model = testing::random_markov_network(21, shape);
+  std::vector<long> fixed(model.size(), -1);
+  fixed[2] = 1;
+  evidence_set observed;
+  observed.hard.push_back({variable_id(2), state_index(1)});
+  const auto truth = testing::brute_force(model, fixed);
+  factor_gibbs_options options;
+  options.sweeps = 40'000;
+  options.seed = 7;
+  const auto sampled = factor_gibbs(model, observed, options);
+  EXPECT_EQ(sampled.stuck_draws, 0U);
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    for (std::size_t s = 0; s < truth.marginals[i].size(); ++s) {
+      EXPECT_NEAR(sampled.marginals[i][s], truth.marginals[i][s], 0.02) << "variable " << i << ", state " << s;
+    }
+  }
+  EXPECT_EQ(factor_gibbs(model, observed, options).marginals, sampled.marginals);
+  options.seed = 8;
+  EXPECT_NE(factor_gibbs(model, observed, options).marginals, sampled.marginals);
+  // As solve's engine: MAR only.
+  solve_options solve;
+  solve.engine = solve_engine::gibbs;
+  solve_report report;
+  static_cast<void>(all_marginals(model, observed, solve, &report));
+  EXPECT_EQ(report.engine, "gibbs");
+  EXPECT_FALSE(report.exact);
+  EXPECT_THROW(static_cast<void>(log_partition(model, observed, solve)), model_error);
+}
+
+TEST(factor_gibbs_test, a_conditional_with_no_positive_state_is_counted) {
+  // a and b must differ and must be equal: no state has weight, every draw is stuck.
+  const markov_network model({variable("a", {"0", "1"}), variable("b", {"0", "1"})},
+                             {factor_table({variable_id(0), variable_id(1)}, {2, 2}, {0, 1, 1, 0}),
+                              factor_table({variable_id(0), variable_id(1)}, {2, 2}, {1, 0, 0, 1})});
+  factor_gibbs_options options;
+  options.sweeps = 10;
+  options.burn_in = 0;
+  const auto sampled = factor_gibbs(model, {}, options);
+  EXPECT_EQ(sampled.stuck_draws, 20U);
 }
 
 }  // namespace belief_propagation_test

@@ -208,7 +208,7 @@ TEST(markov_inference_test, engines_parse_their_names) {
     static_cast<void>(parse_solve_engine("jtt"));
     FAIL();
   } catch (const unknown_name& e) {
-    EXPECT_THAT(e.what(), HasSubstr("unknown engine 'jtt' (known: auto, jt, ve, bp)"));
+    EXPECT_THAT(e.what(), HasSubstr("unknown engine 'jtt' (known: auto, jt, ve, bp, gibbs)"));
   }
 }
 

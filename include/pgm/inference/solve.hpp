@@ -15,8 +15,9 @@
 /// eliminates afresh for each answer. Both predict the size of their tables from the
 /// triangulation before allocating any, and refuse past `memory_limit_bytes`, naming both.
 /// `bp`, loopy belief propagation (belief_propagation.hpp), answers PR (the Bethe estimate) and
-/// MAR approximately on any model; `auto` is `jt` when its tree fits in memory, else `bp`, and
-/// the report says which ran, whether it is exact, and whether bp converged.
+/// MAR approximately on any model, and `gibbs` (factor_gibbs.hpp) MAR by sampling; `auto` is `jt`
+/// when its tree fits in memory, else `bp`, and the report says which ran, whether it is exact,
+/// and whether bp converged.
 ///
 /// Why log space when it is needed, and only then: a model's values need not be probabilities, so
 /// Z may be 10^300 and beyond (the competition's Grids) or a product may underflow on the way to a
@@ -41,6 +42,7 @@
 #include "pgm/inference/belief_propagation.hpp"
 #include "pgm/inference/exact.hpp"
 #include "pgm/inference/factor.hpp"
+#include "pgm/inference/factor_gibbs.hpp"
 #include "pgm/inference/junction_tree.hpp"
 #include "pgm/inference/propagation.hpp"
 #include "pgm/inference/query.hpp"
@@ -51,10 +53,10 @@
 namespace pgm {
 
 /// The engines the tasks run on: exact (jt, ve) or approximate (bp), or auto.
-enum class solve_engine { automatic, jt, ve, bp };
+enum class solve_engine { automatic, jt, ve, bp, gibbs };
 
 inline constexpr std::array all_solve_engines{solve_engine::automatic, solve_engine::jt, solve_engine::ve,
-                                              solve_engine::bp};
+                                              solve_engine::bp, solve_engine::gibbs};
 
 [[nodiscard]] constexpr std::string_view to_string(solve_engine engine) noexcept {
   switch (engine) {
@@ -66,11 +68,13 @@ inline constexpr std::array all_solve_engines{solve_engine::automatic, solve_eng
       return "ve";
     case solve_engine::bp:
       return "bp";
+    case solve_engine::gibbs:
+      return "gibbs";
   }
   return "?";
 }
 
-/// "auto", "jt", "ve" or "bp"; throws unknown_name otherwise.
+/// "auto", "jt", "ve", "bp" or "gibbs"; throws unknown_name otherwise.
 [[nodiscard]] inline solve_engine parse_solve_engine(std::string_view text) {
   return parse_choice("engine", text, all_solve_engines);
 }
@@ -86,6 +90,8 @@ struct solve_options {
   std::size_t memory_limit_bytes = std::size_t{4096} << 20;
   /// What `bp` runs with.
   bp_options bp;
+  /// What `gibbs` runs with.
+  factor_gibbs_options gibbs;
 };
 
 /// How an answer was computed, for the user to read.
@@ -142,7 +148,7 @@ template <GraphicalModel M>
 template <GraphicalModel M>
 [[nodiscard]] std::shared_ptr<const junction_tree> tree_within(const M& model, const solve_options& options,
                                                                solve_report& report, bool bp_answers = true) {
-  if (options.engine == solve_engine::bp) return nullptr;
+  if (options.engine == solve_engine::bp || options.engine == solve_engine::gibbs) return nullptr;
   const auto cells = options.memory_limit_bytes / bytes_per_tree_cell;
   // Compiled without a bound first: the triangulation only lists cliques, it allocates no table.
   auto tree = std::make_shared<const junction_tree>(
@@ -280,6 +286,9 @@ template <GraphicalModel M>
                                    solve_report* report = nullptr) {
   solve_report local;
   auto& r = report ? *report : local;
+  if (options.engine == solve_engine::gibbs) {
+    throw model_error("gibbs answers MAR; the partition function needs jt, ve or bp");
+  }
   const auto tree = detail::tree_within(model, options, r);
   if (!tree) {
     try {
@@ -314,6 +323,18 @@ template <GraphicalModel M>
   for (std::size_t i = 0; i < model.size(); ++i) {
     const variable_id id(static_cast<variable_id::rep>(i));
     if (!observed.fixes(id)) free.push_back(id);
+  }
+  if (options.engine == solve_engine::gibbs) {
+    auto sampled = factor_gibbs(model, observed, options.gibbs);
+    r.engine = "gibbs";
+    r.exact = false;
+    r.converged = sampled.stuck_draws == 0;
+    r.iterations = options.gibbs.sweeps;
+    if (sampled.stuck_draws > 0) {
+      r.note = std::to_string(sampled.stuck_draws) +
+               " draws met a conditional with no positive state (zeros in the factors) and were drawn uniformly";
+    }
+    return std::move(sampled.marginals);
   }
   if (!tree) return detail::approximate(model, observed, options, r).marginals;
   detail::in_fitting_semiring<false>(model, r, [&]<Semiring S>() {
@@ -361,8 +382,9 @@ template <GraphicalModel M>
                                                                 solve_report* report = nullptr) {
   solve_report local;
   auto& r = report ? *report : local;
-  if (options.engine == solve_engine::bp) {
-    throw model_error("bp answers PR and MAR; the most probable assignment needs jt or ve");
+  if (options.engine == solve_engine::bp || options.engine == solve_engine::gibbs) {
+    throw model_error(std::string(to_string(options.engine)) +
+                      " answers MAR (bp PR too); the most probable assignment needs jt or ve");
   }
   const auto tree = detail::tree_within(model, options, r, false);
   return detail::in_fitting_semiring<true>(model, r, [&]<Semiring S>() {
@@ -400,8 +422,8 @@ template <GraphicalModel M>
                                                     solve_report* report = nullptr) {
   solve_report local;
   auto& r = report ? *report : local;
-  if (options.engine == solve_engine::bp) {
-    throw model_error("bp answers PR and MAR; marginal MAP needs jt or ve");
+  if (options.engine == solve_engine::bp || options.engine == solve_engine::gibbs) {
+    throw model_error(std::string(to_string(options.engine)) + " answers MAR (bp PR too); marginal MAP needs jt or ve");
   }
   detail::check_marginal_map_size(model, query, observed, options, r);
   r.engine = "ve";
