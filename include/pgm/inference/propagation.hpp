@@ -457,9 +457,10 @@ class propagation {
     return kept.values;
   }
 
-  /// A clique with this many groups or more sends all its messages from one divide-and-conquer
-  /// pass once every message into it is known: G messages from G·log G products over its table
-  /// instead of G·G (a clique many cliques hang from, as a relational model's, sends dozens).
+  /// A clique with this many groups or more sends all its messages at once when every message
+  /// into it is known (fold_all_groups): G messages from one product and G folds, or G·log G
+  /// products, instead of G·G (a clique many cliques hang from, as a relational model's, sends
+  /// hundreds).
   static constexpr std::size_t fold_all_from = 4;
 
   [[nodiscard]] bool all_messages_in(std::size_t c) {
