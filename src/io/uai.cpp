@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <optional>
 #include <sstream>
 
@@ -112,12 +111,6 @@ std::vector<variable> numbered_variables(const std::vector<std::size_t>& cards) 
     variables.emplace_back("v" + std::to_string(v), std::move(states));
   }
   return variables;
-}
-
-std::string seventeen_digits(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
 }
 
 }  // namespace
@@ -359,13 +352,13 @@ uai_result parse_uai_result(std::string_view text, const std::string& source) {
   return result;
 }
 
-std::string uai_pr_text(double log10_partition) { return "PR\n" + seventeen_digits(log10_partition) + '\n'; }
+std::string uai_pr_text(double log10_partition) { return "PR\n" + text::format_short(log10_partition, 17) + '\n'; }
 
 std::string uai_mar_text(const std::vector<std::vector<double>>& marginals) {
   std::string out = "MAR\n" + std::to_string(marginals.size());
   for (const auto& m : marginals) {
     out += ' ' + std::to_string(m.size());
-    for (const double p : m) out += ' ' + seventeen_digits(p);
+    for (const double p : m) out += ' ' + text::format_short(p, 17);
   }
   return out + '\n';
 }

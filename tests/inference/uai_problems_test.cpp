@@ -14,6 +14,7 @@
 #include "pgm/inference/solve.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/io/uai.hpp"
+#include "support/random_markov_network.hpp"
 
 namespace pgm {
 namespace uai_problems_test {
@@ -38,17 +39,6 @@ problem load(const std::string& task, const std::string& name) {
 
 std::vector<double> published(const problem& p, const std::string& task) {
   return parse_uai_result(read_model_text(p.path + "." + task), p.path + "." + task).numbers;
-}
-
-double log_value(const markov_network& model, const std::vector<std::size_t>& states) {
-  double total = 0.0;
-  for (const auto& f : model.factors()) {
-    std::size_t index = 0;
-    for (std::size_t k = 0; k < f.scope().size(); ++k)
-      index = index * f.cardinalities()[k] + states[f.scope()[k].value()];
-    total += std::log(f.values()[index]);
-  }
-  return total;
 }
 
 std::string problem_name(const ::testing::TestParamInfo<std::string>& test) {
@@ -107,12 +97,12 @@ TEST(uai_problems_test, map_scores_at_least_the_published_assignment) {
   std::vector<std::size_t> theirs;
   for (std::size_t i = 1; i < expected.size(); ++i) theirs.push_back(static_cast<std::size_t>(expected[i]));
   ASSERT_EQ(theirs.size(), states.size());
-  EXPECT_GE(log_value(p.file.model, states), log_value(p.file.model, theirs) - 1e-9);
+  EXPECT_GE(testing::log_value(p.file.model, states), testing::log_value(p.file.model, theirs) - 1e-9);
   // And as good as any assignment one change away from it.
   for (std::size_t i = 0; i < states.size(); i += 17) {
     auto moved = states;
     moved[i] = 1 - moved[i];
-    EXPECT_GE(log_value(p.file.model, states), log_value(p.file.model, moved));
+    EXPECT_GE(testing::log_value(p.file.model, states), testing::log_value(p.file.model, moved));
   }
 }
 

@@ -103,11 +103,12 @@ template <GraphicalModel M>
           }
         }
       }
-      state[v] = starting ? static_cast<std::size_t>(
-                                std::find_if(conditional.begin(), conditional.end(), [](double p) { return p > 0.0; }) -
-                                conditional.begin()) %
-                                card
-                          : chosen;
+      if (starting) {  // the first state the factors allow, given the states set so far
+        chosen = static_cast<std::size_t>(
+            std::find_if(conditional.begin(), conditional.end(), [](double p) { return p > 0.0; }) -
+            conditional.begin());
+      }
+      state[v] = chosen;
       if (keep) {
         for (std::size_t x = 0; x < card; ++x) result.marginals[v][x] += conditional[x];
       }
