@@ -70,15 +70,15 @@ void em_iteration(benchmark::State& state) {
     benchmark::DoNotOptimize(result);
   }
   // Both engines answer the same queries: their log-likelihoods agree.
-  const double reference = one_iteration<pgm::junction_tree_engine>(rows).log_likelihood;
+  const double reference = one_iteration<pgm::junction_tree_engine<>>(rows).log_likelihood;
   if (std::abs(log_likelihood - reference) > 1e-6 * std::abs(reference)) {
     throw std::runtime_error("the engines disagree on the log-likelihood");
   }
   set_rows_processed(state, rows);
 }
 
-void em_iteration_jt(benchmark::State& state) { em_iteration<pgm::junction_tree_engine>(state); }
-void em_iteration_ve_simple(benchmark::State& state) { em_iteration<pgm::variable_elimination>(state); }
+void em_iteration_jt(benchmark::State& state) { em_iteration<pgm::junction_tree_engine<>>(state); }
+void em_iteration_ve_simple(benchmark::State& state) { em_iteration<pgm::variable_elimination<>>(state); }
 
 void em_to_convergence(benchmark::State& state) {
   const auto rows = static_cast<std::size_t>(state.range(0));

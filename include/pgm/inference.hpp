@@ -3,6 +3,7 @@
 /// Inference engines behind one seam: exact (variable elimination, junction tree) and sampling.
 /// Every header of pgm/inference/ in one include; target pgm::core.
 
+#include "pgm/inference/approximate_engines.hpp"
 #include "pgm/inference/belief_propagation.hpp"
 #include "pgm/inference/engine_registry.hpp"
 #include "pgm/inference/evidence_scope.hpp"

@@ -134,8 +134,8 @@ def test_impossible_evidence_and_unknown_names(chain, asia):
     assert e.probability_of_evidence() == 0.0
     with pytest.raises(pgm.Error, match="no variable 'lamp'"):
         pgm.InferenceEngine(asia, "jt").set_evidence({"lamp": "on"})
-    with pytest.raises(pgm.Error, match=r"unknown inference engine 'bp' \(known: auto, gibbs, jt, lw, ve\)"):
-        pgm.InferenceEngine(asia, "bp")
+    with pytest.raises(pgm.Error, match=r"unknown inference engine 'magic' \(known: auto, bp, gibbs, jt, lw, ve\)"):
+        pgm.InferenceEngine(asia, "magic")
     with pytest.raises(pgm.Error, match="2 states"):
         pgm.InferenceEngine(asia, "jt").set_soft_evidence({"lung": [0.5]})
     with pytest.raises(pgm.Error, match="does not find the most probable explanation"):

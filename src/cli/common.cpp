@@ -13,6 +13,7 @@
 #include "pgm/core/text.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/io/network_file.hpp"
+#include "pgm/io/uai.hpp"
 
 namespace pgm::cli {
 
@@ -46,6 +47,20 @@ bayesian_network read_network_file(const std::filesystem::path& path) {
   auto network = read_network(path, {.notes = &notes});
   for (const auto& line : notes) note(line);
   return network;
+}
+
+bool is_uai(const std::filesystem::path& path) {
+  auto name = path.filename().string();
+  if (name.ends_with(".gz")) name.resize(name.size() - 3);
+  return name.ends_with(".uai");
+}
+
+any_model read_any_model_file(const std::filesystem::path& path) {
+  if (is_uai(path)) {
+    auto file = read_uai(path);
+    if (file.kind == uai_kind::markov) return std::move(file.model);
+  }
+  return read_network_file(path);
 }
 
 namespace {

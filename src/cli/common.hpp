@@ -8,8 +8,10 @@
 #include <iosfwd>
 #include <string>
 #include <string_view>
+#include <variant>
 #include <vector>
 
+#include "pgm/core/markov_network.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/discretizer.hpp"
@@ -78,6 +80,16 @@ model_document read_model_file(const std::filesystem::path& path);
 
 /// A fitted network of any format, printing the reader's notes.
 bayesian_network read_network_file(const std::filesystem::path& path);
+
+/// A model of either class a file may hold.
+using any_model = std::variant<bayesian_network, markov_network>;
+
+/// Whether `path` names a UAI file (.uai, or .uai.gz read compressed).
+[[nodiscard]] bool is_uai(const std::filesystem::path& path);
+
+/// The model a file holds: the Markov network of a MARKOV .uai file, else the Bayesian network
+/// of any network format (printing the reader's notes).
+[[nodiscard]] any_model read_any_model_file(const std::filesystem::path& path);
 
 /// Accepts only a whole number in [lo, hi], so that "-5" is an error rather than 2^64 - 5.
 CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi);

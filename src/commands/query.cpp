@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "cli/common.hpp"
@@ -48,15 +49,16 @@ inference_options options_of(const query_arguments& args) {
   return options;
 }
 
-/// The engines a run uses, each made once, by name.
+/// The engines a run uses over one model (either class), each made once, by name.
+template <GraphicalModel M>
 class engines {
  public:
-  engines(const bayesian_network& network, inference_options options) : network_(network), options_(options) {}
+  engines(std::shared_ptr<const M> model, inference_options options) : model_(std::move(model)), options_(options) {}
 
   any_inference_engine& get(const std::string& name) {
     auto it = made_.find(name);
     if (it == made_.end()) {
-      it = made_.emplace(name, make_engine(name, network_, options_)).first;
+      it = made_.emplace(name, make_engine(name, model_, options_)).first;
       // "auto" says when it could not be exact; the output names the engine either way.
       if (it->second.name() != "jt" && !it->second.note().empty()) note(it->second.note());
     }
@@ -64,25 +66,26 @@ class engines {
   }
 
  private:
-  const bayesian_network& network_;
+  std::shared_ptr<const M> model_;
   inference_options options_;
   std::map<std::string, any_inference_engine, std::less<>> made_;
 };
 
 /// Answers the --queries file into `out`, all of it or (on the first failure) nothing.
-void answer_batch(const query_arguments& args, const bayesian_network& network, std::ostream& out,
+template <GraphicalModel M>
+void answer_batch(const query_arguments& args, const std::shared_ptr<const M>& model, std::ostream& out,
                   const posterior_table_options& table) {
   const auto text = pgm::read_file(args.queries);
   const auto requests = parse_query_batch(text, args.queries);
-  engines made(network, options_of(args));
+  engines<M> made(model, options_of(args));
   std::ostringstream buffer;
   bool header = true;
   std::size_t impossible = 0;
   for (const auto& request : requests) {
     try {
       auto& engine = made.get(request.engine.empty() ? args.engine : request.engine);
-      engine.set_evidence(resolve_evidence(network, request.observed, request.soft, request.intervened));
-      const auto ids = resolve_query(network, request.query, engine.evidence());
+      engine.set_evidence(resolve_evidence(*model, request.observed, request.soft, request.intervened));
+      const auto ids = resolve_query(*model, request.query, engine.evidence());
       try {
         write_query_record(buffer, request, engine.joint(ids), table, header);
       } catch (const impossible_evidence& e) {
@@ -121,16 +124,14 @@ void run_query(const query_arguments& args) {
   const auto set = parse_intervention(args.intervene);
   const auto variables = args.query ? parse_query_variables(*args.query) : std::vector<std::string>{};
   if (!args.out.empty()) pgm::check_output_path(args.out);
-  const auto network = read_network_file(args.model);
-
-  const auto write = [&](std::ostream& out) {
+  const auto write = [&]<GraphicalModel M>(std::ostream& out, std::shared_ptr<const M> model) {
     if (!args.queries.empty()) {
-      answer_batch(args, network, out, table);
+      answer_batch(args, model, out, table);
       return;
     }
-    engines made(network, options_of(args));
+    engines<M> made(model, options_of(args));
     auto& engine = made.get(args.engine);
-    engine.set_evidence(resolve_evidence(network, observed, soft, set));
+    engine.set_evidence(resolve_evidence(*model, observed, soft, set));
     if (args.all) {
       write_marginals_table(out, marginals(engine), observed, table, soft, set);
     } else if (args.mpe) {
@@ -142,7 +143,8 @@ void run_query(const query_arguments& args) {
   };
   // Everything is computed before anything is written, so a failure leaves no partial output.
   std::ostringstream buffer;
-  write(buffer);
+  auto model = read_any_model_file(args.model);
+  std::visit([&]<GraphicalModel M>(M& held) { write(buffer, std::make_shared<const M>(std::move(held))); }, model);
   if (args.out.empty()) {
     std::cout << buffer.str();
   } else {
@@ -161,8 +163,10 @@ void add_query_command(CLI::App& app) {
       "sampling.\nExamples:\n  pgm query --model sachs.bif --query Akt,Erk --evidence PKA=HIGH --digits 17 "
       "--format json\n  pgm query --model alarm.bif --all --evidence HR=HIGH --soft BP=0.2:0.3:0.5\n  pgm query "
       "--model alarm.bif --mpe --evidence HR=HIGH\n  pgm query --model alarm.bif --query HR --do CVP=LOW\n  pgm query "
-      "--model pathfinder.bif --queries queries.csv");
-  cmd->add_option("--model", args->model, "The network: " + network_file_kinds())->required();
+      "--model pathfinder.bif --queries queries.csv\n  pgm query --model Grids_11.uai --all --engine jt\nA MARKOV .uai "
+      "file is a Markov network: every engine but lw serves it, and --do is refused (interventions need a DAG).");
+  cmd->add_option("--model", args->model, "The model: " + network_file_kinds() + "; a MARKOV .uai is a Markov network")
+      ->required();
   cmd->add_option("--query", args->query,
                   "Query variables, e.g. \"X\" or \"X,Y\" (joint distribution; with --mpe, the variables whose most "
                   "probable states are wanted, the others summed out)");
@@ -182,8 +186,9 @@ void add_query_command(CLI::App& app) {
                   "P(x | evidence) is multiplied by its weight");
   const auto names = engine_registry::instance().names();
   cmd->add_option("--engine", args->engine,
-                  "Inference engine: jt (junction tree), ve (variable elimination), lw (likelihood weighting), "
-                  "gibbs (Gibbs sampling), or auto (jt unless its tree is too large, then lw; it says which)")
+                  "Inference engine: jt (junction tree), ve (variable elimination), bp (loopy belief propagation), lw "
+                  "(likelihood weighting), gibbs (Gibbs sampling), or auto (jt unless its tree is too large, then lw, "
+                  "or bp for a Markov network; it says which)")
       ->check(CLI::IsMember(names))
       ->capture_default_str();
   cmd->add_option("--samples", args->samples, "Samples for lw and gibbs")

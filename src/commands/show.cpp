@@ -5,6 +5,7 @@
 #include <iostream>
 #include <span>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "cli/common.hpp"
@@ -104,7 +105,87 @@ void print_table(const cpt<double>& table, int digits, std::ostream& out) {
   print_column(table.rest());
 }
 
+/// A factor as a table: one row per configuration of its scope but the last variable, one
+/// column per state of the last.
+void print_factor(std::size_t f, const factor_table& table, const std::vector<variable>& variables, int digits,
+                  std::ostream& out) {
+  const auto& scope = table.scope();
+  out << "factor " << f << " over (";
+  for (std::size_t k = 0; k < scope.size(); ++k) out << (k ? ", " : "") << variables[scope[k].value()].name();
+  out << ")\n";
+  if (scope.empty()) {
+    out << "  " << text::format_short(table.values().front()) << '\n';
+    return;
+  }
+  const auto& last = variables[scope.back().value()];
+  std::vector<std::size_t> widths;
+  for (std::size_t k = 0; k + 1 < scope.size(); ++k) {
+    const auto& v = variables[scope[k].value()];
+    std::size_t w = v.name().size();
+    for (const auto& state : v.states()) w = std::max(w, state.size());
+    widths.push_back(w);
+  }
+  std::vector<std::string> cells;
+  std::size_t number_width = 0;
+  char buffer[64];
+  for (const double value : table.values()) {
+    std::snprintf(buffer, sizeof buffer, "%.*g", std::max(digits, 1), value);
+    cells.emplace_back(buffer);
+    number_width = std::max(number_width, cells.back().size());
+  }
+  std::vector<std::size_t> state_widths;
+  for (const auto& state : last.states()) state_widths.push_back(std::max(number_width, state.size()));
+  out << "  ";
+  for (std::size_t k = 0; k < widths.size(); ++k) out << pad(variables[scope[k].value()].name(), widths[k]) << "  ";
+  out << (widths.empty() ? "" : "| ");
+  for (std::size_t x = 0; x < state_widths.size(); ++x)
+    out << (x ? "  " : "") << pad(last.states()[x], state_widths[x], true);
+  out << '\n';
+  const auto rows = table.values().size() / last.cardinality();
+  std::vector<std::size_t> codes(widths.size(), 0);
+  for (std::size_t row = 0; row < rows; ++row) {
+    out << "  ";
+    for (std::size_t k = 0; k < widths.size(); ++k) {
+      out << pad(variables[scope[k].value()].states()[codes[k]], widths[k]) << "  ";
+    }
+    out << (widths.empty() ? "" : "| ");
+    for (std::size_t x = 0; x < last.cardinality(); ++x) {
+      out << (x ? "  " : "") << pad(cells[row * last.cardinality() + x], state_widths[x], true);
+    }
+    out << '\n';
+    for (std::size_t k = widths.size(); k-- > 0;) {  // the next configuration, the last fastest
+      if (++codes[k] < table.cardinalities()[k]) break;
+      codes[k] = 0;
+    }
+  }
+}
+
+void show_markov(const show_arguments& args, const markov_network& model) {
+  auto& out = std::cout;
+  variable_id only{};
+  if (!args.variable.empty()) only = model.id(args.variable);  // unknown names fail here
+  std::size_t cells = 0;
+  for (const auto& f : model.factors()) cells += f.values().size();
+  out << args.model << ": a Markov network of " << model.size() << " variables, " << model.factor_count()
+      << " factors, " << cells << " values\n\nvariables\n";
+  for (const auto& v : model.variables()) {
+    if (args.variable.empty() || v.name() == args.variable) print_variable(v, out);
+  }
+  for (std::size_t f = 0; f < model.factor_count(); ++f) {
+    const auto& scope = model.factor_scope(f);
+    if (!args.variable.empty() && std::find(scope.begin(), scope.end(), only) == scope.end()) continue;
+    out << '\n';
+    print_factor(f, model.factor(f), model.variables(), args.digits, out);
+  }
+}
+
 void run_show(const show_arguments& args) {
+  if (is_uai(args.model)) {
+    if (auto read = read_any_model_file(args.model); std::holds_alternative<markov_network>(read)) {
+      show_markov(args, std::get<markov_network>(read));
+      return;
+    }
+  }
   auto document = read_model_file(args.model);
   auto& structure = document.structure;
   auto& tables = document.tables;
@@ -138,10 +219,17 @@ void run_show(const show_arguments& args) {
 
 void add_show_command(CLI::App& app) {
   auto args = std::make_shared<show_arguments>();
-  auto* cmd = app.add_subcommand("show", "Print a network's variables and tables");
-  cmd->add_option("model", args->model, "Network or structure file (" + network_file_kinds() + ")")->required();
-  cmd->add_option("--variable", args->variable, "Show only this variable and its table");
-  cmd->add_option("--digits", args->digits, "Decimals of the probabilities")
+  auto* cmd = app.add_subcommand(
+      "show",
+      "Print a model's variables and tables (a Markov network's factors)\nExamples:\n  pgm show alarm.bif "
+      "--variable HR\n  pgm show Grids_11.uai --variable 0");
+  cmd->add_option("model", args->model,
+                  "Network or structure file (" + network_file_kinds() + "; a MARKOV .uai is a Markov network)")
+      ->required();
+  cmd->add_option("--variable", args->variable,
+                  "Show only this variable and its table (in a Markov network, the factors that hold it)");
+  cmd->add_option("--digits", args->digits,
+                  "Decimals of the probabilities (significant digits of a Markov network's factor values)")
       ->check(CLI::Range(0, 17))
       ->capture_default_str();
   cmd->callback([args] { run_show(*args); });

@@ -42,12 +42,6 @@ struct solve_arguments {
   std::size_t burn_in = 1'000;
 };
 
-bool is_uai(const std::filesystem::path& path) {
-  auto name = path.filename().string();
-  if (name.ends_with(".gz")) name.resize(name.size() - 3);
-  return name.ends_with(".uai");
-}
-
 evidence_set evidence_of(const solve_arguments& args, const markov_network& model) {
   evidence_set observed;
   if (args.evidence.empty()) return observed;

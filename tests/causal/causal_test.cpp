@@ -151,7 +151,7 @@ class unaware_engine {
   [[nodiscard]] double log_probability_of_evidence() { return inner_.log_probability_of_evidence(); }
 
  private:
-  variable_elimination inner_;
+  variable_elimination<> inner_;
 };
 static_assert(InferenceEngine<unaware_engine> && !detail::HandlesInterventions<unaware_engine>);
 

@@ -189,7 +189,7 @@ TEST_F(query_cli_test, bad_input_is_one_line_and_no_file) {
                  "has 3 weights, but 'grass' has 2 states", out);
   expect_failure("query " + model() + " --query rain --soft grass=1:x" + with_out, "the weight 'x'", out);
   expect_failure("query " + model() + " --query rain --soft grass=0:0" + with_out, "every state weight 0", out);
-  const auto engine = run("query " + model() + " --query rain --engine bp");
+  const auto engine = run("query " + model() + " --query rain --engine magic");
   EXPECT_EQ(engine.code, 2);
   EXPECT_THAT(engine.err, HasSubstr("--engine"));
   const auto two = run("query " + model() + " --query rain --all");

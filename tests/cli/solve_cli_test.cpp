@@ -138,5 +138,29 @@ TEST_F(solve_cli_test, a_model_past_the_memory_limit_is_refused_naming_the_sizes
   EXPECT_THAT(answer(), StartsWith("PR\n"));
 }
 
+TEST_F(solve_cli_test, query_and_show_read_a_markov_network) {
+  // P(b | c=1) ∝ (4·1, 6·5); P(c=1) = Z(c=1)/Z = 34/44.
+  for (const char* engine : {"jt", "ve", "auto"}) {
+    const auto r = run("query " + model() + " --query v1 --evidence v2=1 --format json --digits 17 --engine " + engine);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("\"evidence_probability\": 0.77272727272727"));
+    EXPECT_THAT(r.out, HasSubstr("\"probability\": 0.11764705882352"));
+  }
+  const auto bp = run("query " + model() + " --all --engine bp --digits 17");
+  ASSERT_EQ(bp.code, 0) << bp.err;
+  EXPECT_THAT(bp.out, HasSubstr("v1,1,0.81818181818181"));  // 36/44: the chain is a tree, bp is exact
+  const auto surgery = run("query " + model() + " --query v1 --do v2=1");
+  EXPECT_EQ(surgery.code, 1);
+  EXPECT_THAT(surgery.err, HasSubstr("this model is a Markov network"));
+  const auto weighting = run("query " + model() + " --query v1 --engine lw");
+  EXPECT_EQ(weighting.code, 1);
+  EXPECT_THAT(weighting.err, HasSubstr("'lw' does not serve a Markov network"));
+  const auto shown = run("show " + (dir_ / "chain.uai").string() + " --variable v2");
+  ASSERT_EQ(shown.code, 0) << shown.err;
+  EXPECT_THAT(shown.out, HasSubstr("a Markov network of 3 variables, 2 factors, 8 values"));
+  EXPECT_THAT(shown.out, HasSubstr("factor 1 over (v1, v2)\n  v1  | 0  1\n  0   | 1  1\n  1   | 1  5\n"));
+  EXPECT_THAT(shown.out, Not(HasSubstr("factor 0")));
+}
+
 }  // namespace
 }  // namespace pgm::solve_cli_tests

@@ -32,7 +32,7 @@ expect(scenario_file "Glass-To-Mug, Mean-Difference over 3 repetitions\n" "\\|D\
        "\n0\t${number}\t${number}\n" "\n1000\t${number}\t${number}\n")
 expect(parameter_prior "mle: P\\(inside=1 \\| centre\\) = ${number}, P\\(inside=1 \\| corner\\) = ${number}\n"
        "centred: P\\(inside=1 \\| centre\\) = ${number}")
-expect(inference_engine "engines: auto enumerate gibbs jt lw ve\n"
+expect(inference_engine "engines: auto bp enumerate gibbs jt lw ve\n"
        "enumerate: P\\(rain=yes \\| grass=wet\\) = 0.413086, P\\(grass=wet\\) = 0.43618\n"
        "jt: P\\(rain=yes \\| grass=wet\\) = 0.413086, P\\(grass=wet\\) = 0.43618\n")
 expect(network_format "formats: bif xmlbif net json uai fg\n" "files: .bif, .xml, .net, .json, .uai or .fg\n"

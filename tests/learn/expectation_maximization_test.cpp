@@ -160,7 +160,7 @@ TEST(expectation_maximization, equals_an_em_by_enumeration_from_the_same_start) 
     // The same with variable elimination answering the E-step, and from an explicit start.
     options.start = &start;
     expect_tables_near(
-        expectation_maximization<variable_elimination>(truth.structure(), data, fitting, options).network, expected,
+        expectation_maximization<variable_elimination<>>(truth.structure(), data, fitting, options).network, expected,
         1e-9);
   }
 }

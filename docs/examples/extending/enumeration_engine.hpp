@@ -1,14 +1,16 @@
 // A brute-force inference engine (enumeration_engine.cpp): what pgm::InferenceEngine asks for.
 #pragma once
 
+#include <memory>
 #include <pgm/inference/engine_registry.hpp>
 #include <span>
 #include <string_view>
 
 class enumeration_engine {
  public:
-  // The registry builds engines from a network and the options of `pgm query`.
-  enumeration_engine(const pgm::bayesian_network& network, const pgm::inference_options&) : network_(&network) {}
+  // The registry builds engines from a shared network and the options of `pgm query`.
+  enumeration_engine(std::shared_ptr<const pgm::bayesian_network> network, const pgm::inference_options&)
+      : network_(std::move(network)) {}
 
   [[nodiscard]] std::string_view name() const { return "enumerate"; }
   [[nodiscard]] const pgm::bayesian_network& network() const { return *network_; }
@@ -20,7 +22,7 @@ class enumeration_engine {
   [[nodiscard]] double log_probability_of_evidence();
 
  private:
-  const pgm::bayesian_network* network_;
+  std::shared_ptr<const pgm::bayesian_network> network_;
   pgm::evidence_set evidence_;
 };
 

@@ -17,6 +17,7 @@
 
 #include <concepts>
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <string_view>
 #include <vector>
@@ -73,6 +74,14 @@ template <GraphicalModel M>
   } else {
     return "Markov network";
   }
+}
+
+/// A model lent to an engine without a copy. The engine shares no ownership, so the model must
+/// outlive it (the caller's promise, as with a std::span): for an engine made and dropped
+/// within the scope that holds the model. Engines given the model itself keep their own copy.
+template <GraphicalModel M>
+[[nodiscard]] std::shared_ptr<const M> borrowed(const M& model) noexcept {
+  return std::shared_ptr<const M>(std::shared_ptr<const M>(), &model);
 }
 
 static_assert(DirectedModel<bayesian_network>);

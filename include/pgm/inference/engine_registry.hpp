@@ -1,18 +1,31 @@
 #pragma once
 /// \file
 /// Engines by name, for the `pgm` program, the Python package and code that picks one at run
-/// time: `make_engine("jt", network, options)` gives an `any_inference_engine`. The built-in
-/// names are ve, jt, lw, gibbs and auto; a user's engine joins with one line in its own
-/// translation unit (linked as an object file, as for transfer strategies):
+/// time: `make_engine("jt", model, options)` gives an `any_inference_engine` over a Bayesian
+/// network or a Markov network. The built-in names:
+///
+/// | name | Bayesian network | Markov network |
+/// |---|---|---|
+/// | ve, jt | exact | exact |
+/// | bp | loopy belief propagation | loopy belief propagation |
+/// | lw | likelihood weighting | — (needs a DAG) |
+/// | gibbs | Gibbs sampling (the network's) | Gibbs sampling on the factors |
+/// | auto | jt, else lw | jt, else bp |
+///
+/// A user's engine joins with one line in its own translation unit (linked as an object file,
+/// as for transfer strategies):
 ///
 ///     static const pgm::register_engine<my_engine> registered("mine");
 ///
 /// where `my_engine` models InferenceEngine and is constructible from
-/// (const bayesian_network&, const inference_options&).
+/// (std::shared_ptr<const M>, const inference_options&) or (const M&, const inference_options&)
+/// for M = bayesian_network, markov_network or both: it serves the model classes it can be
+/// built from. The engine the registry makes keeps the model alive, so one holding a reference
+/// to it is safe.
 ///
 /// "auto" is exact unless exact is out of reach: the junction tree when it compiles within
-/// `inference_options::max_junction_tree_cells`, otherwise likelihood weighting; the engine's
-/// name() is the one chosen and note() says why.
+/// `inference_options::max_junction_tree_cells`, otherwise likelihood weighting (bp for a Markov
+/// network); the engine's name() is the one chosen and note() says why.
 
 #include <functional>
 #include <memory>
@@ -25,9 +38,14 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/graphical_model.hpp"
+#include "pgm/core/markov_network.hpp"
 #include "pgm/core/unknown_name.hpp"
 #include "pgm/detail/named_registry.hpp"
 #include "pgm/detail/text.hpp"
+#include "pgm/inference/approximate_engines.hpp"
+#include "pgm/inference/belief_propagation.hpp"
+#include "pgm/inference/factor_gibbs.hpp"
 #include "pgm/inference/gibbs_sampling.hpp"
 #include "pgm/inference/inference_engine.hpp"
 #include "pgm/inference/junction_tree_engine.hpp"
@@ -44,21 +62,55 @@ struct inference_options {
   /// "auto" compiles a junction tree up to this many cells, and "jt" refuses beyond it.
   std::size_t max_junction_tree_cells = std::size_t{1} << 27;
   sampling_options sampling;
+  bp_options bp;
 };
 
-/// Any engine, type-erased; it models MpeEngine itself (mpe throws model_error for an engine
-/// that has none).
+/// Any engine over any model, type-erased; it models MpeEngine itself (mpe throws model_error
+/// for an engine that has none).
 class any_inference_engine {
+  struct interface;
+
  public:
   template <InferenceEngine E>
   requires(!std::same_as<E, any_inference_engine>) explicit any_inference_engine(E engine, std::string note = {})
-      : self_(std::make_unique<model<E>>(std::move(engine))), note_(std::move(note)) {}
+      : self_(std::make_unique<holder<E>>(std::move(engine))), view_(self_.get()), note_(std::move(note)) {}
+
+  any_inference_engine(any_inference_engine&& other) noexcept
+      : self_(std::move(other.self_)),
+        view_(self_.get()),
+        note_(std::move(other.note_)),
+        kept_(std::move(other.kept_)) {}
+  any_inference_engine& operator=(any_inference_engine&& other) noexcept {
+    self_ = std::move(other.self_);
+    view_ = model_view(self_.get());
+    note_ = std::move(other.note_);
+    kept_ = std::move(other.kept_);
+    return *this;
+  }
+
+  /// The named variables of the model inside, and which class of model it is.
+  class model_view {
+   public:
+    [[nodiscard]] const std::vector<variable>& variables() const { return self_->variables(); }
+    [[nodiscard]] std::size_t size() const { return variables().size(); }
+    /// Throws model_error naming an unknown variable and the known ones.
+    [[nodiscard]] variable_id id(std::string_view name) const { return self_->id(name); }
+    /// "Bayesian network" or "Markov network".
+    [[nodiscard]] std::string_view kind() const { return self_->kind(); }
+
+   private:
+    friend class any_inference_engine;
+    explicit model_view(const interface* self) : self_(self) {}
+    const interface* self_;
+  };
 
   /// Interventions pass through; set_evidence refuses them for an engine that does not read them.
   static constexpr bool handles_interventions = true;
   [[nodiscard]] std::string_view name() const { return self_->name(); }
   /// Whether the engine inside reads interventions.
   [[nodiscard]] bool reads_interventions() const { return self_->reads_interventions(); }
+  [[nodiscard]] const model_view& model() const noexcept { return view_; }
+  /// The Bayesian network inside; model_error when the model is another kind.
   [[nodiscard]] const bayesian_network& network() const { return self_->network(); }
   [[nodiscard]] const evidence_set& evidence() const { return self_->evidence(); }
   void set_evidence(evidence_set observed) { self_->set_evidence(std::move(observed)); }
@@ -70,10 +122,19 @@ class any_inference_engine {
   /// Why "auto" chose this engine; empty for an engine asked for by name.
   [[nodiscard]] const std::string& note() const noexcept { return note_; }
 
+  /// Says why this engine was chosen (what "auto" does).
+  void set_note(std::string note) { note_ = std::move(note); }
+
+  /// Keeps `owner` (the model an engine refers to) alive as long as this engine.
+  void keep(std::shared_ptr<const void> owner) { kept_ = std::move(owner); }
+
  private:
   struct interface {
     virtual ~interface() = default;
     [[nodiscard]] virtual std::string_view name() const = 0;
+    [[nodiscard]] virtual const std::vector<variable>& variables() const = 0;
+    [[nodiscard]] virtual variable_id id(std::string_view name) const = 0;
+    [[nodiscard]] virtual std::string_view kind() const = 0;
     [[nodiscard]] virtual const bayesian_network& network() const = 0;
     [[nodiscard]] virtual const evidence_set& evidence() const = 0;
     virtual void set_evidence(evidence_set observed) = 0;
@@ -86,14 +147,38 @@ class any_inference_engine {
   };
 
   template <InferenceEngine E>
-  struct model final : interface {
-    explicit model(E e) : engine(std::move(e)) {}
+  struct holder final : interface {
+    using model_type = std::remove_cvref_t<decltype(detail::model_of(std::declval<const E&>()))>;
+
+    explicit holder(E e) : engine(std::move(e)) {}
     std::string_view name() const override { return engine.name(); }
-    const bayesian_network& network() const override { return engine.network(); }
+    const std::vector<variable>& variables() const override { return detail::model_of(engine).variables(); }
+    variable_id id(std::string_view name) const override { return node_of(detail::model_of(engine), name); }
+    std::string_view kind() const override {
+      if constexpr (GraphicalModel<model_type>) {
+        return model_kind<model_type>();
+      } else {
+        return detail::model_of(engine).kind();
+      }
+    }
+    const bayesian_network& network() const override {
+      if constexpr (std::same_as<model_type, bayesian_network>) {
+        return detail::model_of(engine);
+      } else if constexpr (requires { detail::model_of(engine).network(); }) {
+        return detail::model_of(engine).network();
+      } else {
+        throw model_error("the engine '" + std::string(engine.name()) + "' holds a " + std::string(kind()) +
+                          ", not a Bayesian network");
+      }
+    }
     const evidence_set& evidence() const override { return engine.evidence(); }
     void set_evidence(evidence_set observed) override {
       if (!detail::HandlesInterventions<E> && !observed.intervened.empty()) {
-        throw model_error("the engine '" + std::string(engine.name()) + "' does not handle interventions (do)");
+        throw model_error("the engine '" + std::string(engine.name()) + "' does not handle interventions (do)" +
+                          (kind() == model_kind<bayesian_network>()
+                               ? std::string()
+                               : "; interventions cut a variable from its parents in a DAG, and this model is a " +
+                                     std::string(kind())));
       }
       engine.set_evidence(std::move(observed));
     }
@@ -116,78 +201,122 @@ class any_inference_engine {
   };
 
   std::unique_ptr<interface> self_;
+  model_view view_;
   std::string note_;
+  std::shared_ptr<const void> kept_;
 };
 
 static_assert(MpeEngine<any_inference_engine>);
-static_assert(MpeEngine<variable_elimination> && MpeEngine<junction_tree_engine>);
+static_assert(MpeEngine<variable_elimination<>> && MpeEngine<junction_tree_engine<>>);
+static_assert(MpeEngine<variable_elimination<markov_network>> && MpeEngine<junction_tree_engine<markov_network>>);
 static_assert(InferenceEngine<likelihood_weighting> && InferenceEngine<gibbs_sampling>);
+static_assert(InferenceEngine<belief_propagation_engine<markov_network>> &&
+              InferenceEngine<factor_gibbs_engine<markov_network>>);
 
-/// Builds an engine for a network with the given settings.
-using engine_factory = std::function<any_inference_engine(const bayesian_network&, const inference_options&)>;
+/// Builds an engine for a model of class M with the given settings.
+template <GraphicalModel M>
+using engine_factory_for = std::function<any_inference_engine(std::shared_ptr<const M>, const inference_options&)>;
+
+/// How one engine is built for each model class it serves (empty for a class it does not).
+struct engine_factory {
+  engine_factory_for<bayesian_network> for_network;
+  engine_factory_for<markov_network> for_markov;
+
+  template <GraphicalModel M>
+  [[nodiscard]] const engine_factory_for<M>& of() const noexcept {
+    if constexpr (std::same_as<M, bayesian_network>) {
+      return for_network;
+    } else {
+      return for_markov;
+    }
+  }
+};
+
+namespace detail {
+
+/// A factory for E over models of class M when E can be built from one, else an empty one.
+template <class E, GraphicalModel M>
+[[nodiscard]] engine_factory_for<M> factory_of() {
+  if constexpr (std::constructible_from<E, std::shared_ptr<const M>, const inference_options&>) {
+    return [](std::shared_ptr<const M> model, const inference_options& options) {
+      return any_inference_engine(E(std::move(model), options));
+    };
+  } else if constexpr (std::constructible_from<E, const M&, const inference_options&>) {
+    // The engine may hold a reference to the model: the erased engine keeps it alive.
+    return [](std::shared_ptr<const M> model, const inference_options& options) {
+      any_inference_engine engine(E(*model, options));
+      engine.keep(std::move(model));
+      return engine;
+    };
+  } else {
+    return {};
+  }
+}
+
+}  // namespace detail
 
 class engine_registry {
  public:
   /// The program-wide registry, holding the built-in engines from the start.
-  [[nodiscard]] static engine_registry& instance() {
-    static engine_registry registry = [] {
-      engine_registry r;
-      r.add("ve", [](const bayesian_network& network, const inference_options& options) {
-        return any_inference_engine(variable_elimination(network, {options.heuristic}));
-      });
-      r.add("jt", [](const bayesian_network& network, const inference_options& options) {
-        return any_inference_engine(
-            junction_tree_engine(network, {options.heuristic, options.max_junction_tree_cells}));
-      });
-      r.add("lw", [](const bayesian_network& network, const inference_options& options) {
-        return any_inference_engine(likelihood_weighting(network, options.sampling));
-      });
-      r.add("gibbs", [](const bayesian_network& network, const inference_options& options) {
-        return any_inference_engine(gibbs_sampling(network, options.sampling));
-      });
-      r.add("auto", [](const bayesian_network& network, const inference_options& options) {
-        try {
-          return any_inference_engine(
-              junction_tree_engine(network, {options.heuristic, options.max_junction_tree_cells}),
-              "auto chose jt: the junction tree fits within " + std::to_string(options.max_junction_tree_cells) +
-                  " cells");
-        } catch (const table_too_large& e) {
-          return any_inference_engine(likelihood_weighting(network, options.sampling),
-                                      std::string("auto chose lw (likelihood weighting): ") + e.what());
-        }
-      });
-      return r;
-    }();
-    return registry;
-  }
+  [[nodiscard]] PGM_DECL static engine_registry& instance();
 
   /// Adds an engine under `name`; a second engine of the same name is an error.
   void add(std::string name, engine_factory factory) { factories_.add(std::move(name), std::move(factory)); }
 
-  /// The engine of that name for `network`; unknown_name otherwise.
-  [[nodiscard]] PGM_DECL any_inference_engine make(std::string_view name, const bayesian_network& network,
-                                                   const inference_options& options = {}) const;
+  /// The engine of that name over `model` (shared, not copied); unknown_name for an unknown
+  /// name, model_error for an engine that does not serve this class of model.
+  template <GraphicalModel M>
+  [[nodiscard]] any_inference_engine make(std::string_view name, std::shared_ptr<const M> model,
+                                          const inference_options& options = {}) const {
+    const auto factory = factories_.find(name);
+    if (!factory) throw unknown_name("inference engine", std::string(name), names());
+    const auto& build = factory->template of<M>();
+    if (!build) throw model_error(refusal(name, model_kind<M>()));
+    return build(std::move(model), options);
+  }
+
+  /// The same over a copy of `model`.
+  template <GraphicalModel M>
+  [[nodiscard]] any_inference_engine make(std::string_view name, const M& model,
+                                          const inference_options& options = {}) const {
+    return make(name, std::make_shared<const M>(model), options);
+  }
 
   [[nodiscard]] std::vector<std::string> names() const { return factories_.names(); }
 
+  /// The engines that serve a model of class M.
+  template <GraphicalModel M>
+  [[nodiscard]] std::vector<std::string> names_for() const {
+    std::vector<std::string> result;
+    for (const auto& name : names()) {
+      if (factories_.find(name)->template of<M>()) result.push_back(name);
+    }
+    return result;
+  }
+
  private:
+  [[nodiscard]] PGM_DECL std::string refusal(std::string_view name, std::string_view kind) const;
+
   detail::named_registry<engine_factory> factories_{"inference engine"};
 };
 
-/// An engine by name from the program-wide registry.
-[[nodiscard]] inline any_inference_engine make_engine(std::string_view name, const bayesian_network& network,
-                                                      const inference_options& options = {}) {
-  return engine_registry::instance().make(name, network, options);
+/// An engine by name from the program-wide registry, over a copy of `model` or sharing it.
+template <class Model>
+[[nodiscard]] any_inference_engine make_engine(std::string_view name, Model&& model,
+                                               const inference_options& options = {}) {
+  return engine_registry::instance().make(name, std::forward<Model>(model), options);
 }
 
 /// Registers an engine type when the program starts: `static const register_engine<E> r("name");`.
 template <InferenceEngine E>
-requires std::constructible_from<E, const bayesian_network&, const inference_options&>
 struct register_engine {
   explicit register_engine(std::string name) {
-    engine_registry::instance().add(std::move(name), [](const bayesian_network& network, const inference_options& o) {
-      return any_inference_engine(E(network, o));
-    });
+    engine_factory factory{detail::factory_of<E, bayesian_network>(), detail::factory_of<E, markov_network>()};
+    if (!factory.for_network && !factory.for_markov) {
+      throw model_error("the engine '" + name +
+                        "' can be built from neither a Bayesian nor a Markov network (with inference_options)");
+    }
+    engine_registry::instance().add(std::move(name), std::move(factory));
   }
 };
 

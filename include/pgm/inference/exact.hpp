@@ -11,6 +11,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -77,6 +78,40 @@ template <Semiring S, GraphicalModel M>
 /// its ratios would be rough; an infinite one has lost them all).
 [[nodiscard]] inline bool well_represented(double p) noexcept {
   return p >= std::numeric_limits<double>::min() && p <= std::numeric_limits<double>::max();
+}
+
+/// The variables `observed` does not fix, in id order.
+template <GraphicalModel M>
+[[nodiscard]] std::vector<variable_id> unobserved(const M& model, const evidence_set& observed) {
+  std::vector<variable_id> ids;
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    const variable_id id(static_cast<variable_id::rep>(i));
+    if (!observed.fixes(id)) ids.push_back(id);
+  }
+  return ids;
+}
+
+/// Interventions are graph surgery on a DAG: refused for any other model.
+template <GraphicalModel M>
+void check_interventions_allowed(const evidence_set& observed, std::string_view engine) {
+  if constexpr (!DirectedModel<M>) {
+    if (!observed.intervened.empty()) {
+      throw model_error("the engine '" + std::string(engine) + "' cannot intervene (do) on a " +
+                        std::string(model_kind<M>()) + ": interventions cut a variable from its parents in a DAG");
+    }
+  }
+}
+
+/// A Markov network's answers computed from Π φ, divided by its partition function Z (given as
+/// ln Z): P(evidence) = Z(e)/Z, P(x, e) = Π φ(x, e)/Z.
+inline void divide_by_partition(posterior& result, double log_partition) {
+  result.log_evidence_probability -= log_partition;
+  result.evidence_probability = std::exp(result.log_evidence_probability);
+}
+
+inline void divide_by_partition(mpe_result& result, double log_partition) {
+  result.log_joint_probability -= log_partition;
+  result.joint_probability = std::exp(result.log_joint_probability);
 }
 
 /// P(query | evidence) from `joint_in<S>()`, an unnormalized joint over `query` computed in

@@ -1,11 +1,13 @@
 #pragma once
 /// \file
-/// The `InferenceEngine` concept: what an engine must do for pgm to use it — hold evidence by id
+/// The `InferenceEngine` concept: what an engine must do for pgm to use it — give its model
+/// (`model()`, any GraphicalModel, or `network()`, a Bayesian network), hold evidence by id
 /// and answer a joint query by id with a `posterior`, with P(evidence). An engine that also
 /// finds the most probable explanation models `MpeEngine`; one that answers many marginals
 /// better than one by one offers `marginals(ids)`. The built-in engines: `variable_elimination`
-/// ("ve"), `junction_tree_engine` ("jt"), `likelihood_weighting` ("lw"), `gibbs_sampling`
-/// ("gibbs"); `engine_registry.hpp` picks them by name.
+/// ("ve") and `junction_tree_engine` ("jt") over any model, `belief_propagation_engine` ("bp"),
+/// `likelihood_weighting` ("lw") and `gibbs_sampling` ("gibbs") over a Bayesian network,
+/// `factor_gibbs_engine` ("gibbs") over another; `engine_registry.hpp` picks them by name.
 ///
 /// The free functions below speak names (variables, states) for any engine, so a user's engine
 /// needs nothing but the concept.
@@ -17,16 +19,27 @@
 #include <vector>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/graphical_model.hpp"
 #include "pgm/inference/query.hpp"
 
 namespace pgm {
 
 namespace detail {
 
+/// The model an engine answers over: its model() when it has one, else its network().
+template <class E>
+[[nodiscard]] const auto& model_of(const E& engine) {
+  if constexpr (requires { engine.model(); }) {
+    return engine.model();
+  } else {
+    return engine.network();
+  }
+}
+
 template <class E>
 concept NamedEngine = requires(const E& engine) {
   { engine.name() } -> std::convertible_to<std::string_view>;
-  { engine.network() } -> std::same_as<const bayesian_network&>;
+  { model_of(engine) } -> HasNamedVariables;
 };
 
 template <class E>
@@ -92,7 +105,7 @@ template <InferenceEngine E>
 /// refused). Throws model_error for interventions on an engine that does not handle them.
 template <InferenceEngine E>
 void set_evidence(E& engine, const evidence& hard, const soft_evidence& soft = {}, const intervention& set = {}) {
-  auto observed = resolve_evidence(engine.network(), hard, soft, set);
+  auto observed = resolve_evidence(detail::model_of(engine), hard, soft, set);
   if constexpr (!detail::HandlesInterventions<E>) {
     if (!observed.intervened.empty()) {
       throw model_error("the engine '" + std::string(engine.name()) + "' does not handle interventions (do)");
@@ -104,7 +117,7 @@ void set_evidence(E& engine, const evidence& hard, const soft_evidence& soft = {
 /// P(variables | the engine's evidence), the joint over the variables in the order given.
 template <InferenceEngine E>
 [[nodiscard]] posterior query(E& engine, std::span<const std::string> variables) {
-  return engine.joint(resolve_query(engine.network(), variables, engine.evidence()));
+  return engine.joint(resolve_query(detail::model_of(engine), variables, engine.evidence()));
 }
 
 /// P(variable | the engine's evidence).
@@ -118,7 +131,7 @@ template <InferenceEngine E>
 template <InferenceEngine E>
 [[nodiscard]] std::vector<posterior> marginals(E& engine) {
   std::vector<variable_id> nodes;
-  for (std::size_t i = 0; i < engine.network().size(); ++i) {
+  for (std::size_t i = 0; i < detail::model_of(engine).size(); ++i) {
     const variable_id id(static_cast<variable_id::rep>(i));
     if (!engine.evidence().fixes(id)) nodes.push_back(id);
   }
@@ -130,7 +143,7 @@ template <InferenceEngine E>
 template <MpeEngine E>
 [[nodiscard]] mpe_result most_probable(E& engine, std::span<const std::string> variables = {}) {
   if (variables.empty()) return engine.mpe({});
-  return engine.mpe(resolve_query(engine.network(), variables, engine.evidence()));
+  return engine.mpe(resolve_query(detail::model_of(engine), variables, engine.evidence()));
 }
 
 }  // namespace pgm

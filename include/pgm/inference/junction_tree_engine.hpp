@@ -17,16 +17,22 @@
 /// in which the evidence separates the d-separated parts) has fewer cells than that work by a
 /// wide margin, the engine eliminates that part instead, as variable elimination does, and keeps
 /// its messages for later. A second query under the same evidence counts the work as shared, so
-/// repeated queries propagate.
+/// repeated queries propagate. A Markov network has no barren part: its queries propagate.
+///
+/// Any model: the engine owns or shares it, as variable_elimination does (pgm::borrowed lends
+/// one). Unlike variable_elimination, it is not for two threads at once: its queries keep
+/// messages.
 
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -41,33 +47,57 @@
 
 namespace pgm {
 
+template <GraphicalModel M = bayesian_network>
 class junction_tree_engine {
  public:
-  /// Compiles `network` (which must outlive the engine). Throws table_too_large when the tree
-  /// exceeds options.max_cells.
-  explicit junction_tree_engine(const bayesian_network& network, const junction_tree_options& options = {})
-      : network_(&network), tree_(std::make_shared<const junction_tree>(network, options)), options_(options) {}
+  using model_type = M;
 
-  static constexpr bool handles_interventions = true;
+  /// Compiles `model` (a copy). Throws table_too_large when the tree exceeds options.max_cells.
+  explicit junction_tree_engine(M model, const junction_tree_options& options = {})
+      : junction_tree_engine(std::make_shared<const M>(std::move(model)), options) {}
+  explicit junction_tree_engine(std::shared_ptr<const M> model, const junction_tree_options& options = {})
+      : model_(checked(std::move(model))),
+        tree_(std::make_shared<const junction_tree>(*model_, options)),
+        options_(options) {}
+
+  static constexpr bool handles_interventions = DirectedModel<M>;
   [[nodiscard]] std::string_view name() const noexcept { return "jt"; }
-  [[nodiscard]] const bayesian_network& network() const noexcept { return *network_; }
+  [[nodiscard]] const M& model() const noexcept { return *model_; }
+  [[nodiscard]] const M& network() const noexcept requires DirectedModel<M> { return *model_; }
   [[nodiscard]] const junction_tree& tree() const noexcept { return *tree_; }
   [[nodiscard]] const evidence_set& evidence() const noexcept { return evidence_; }
 
   /// Replaces the evidence: hard and soft, entered or retracted, nothing recompiled.
-  PGM_DECL void set_evidence(evidence_set observed);
+  void set_evidence(evidence_set observed) {
+    detail::check_interventions_allowed<M>(observed, name());
+    evidence_ = std::move(observed);
+    ++version_;
+    queries_since_evidence_ = 0;
+  }
 
-  [[nodiscard]] PGM_DECL posterior joint(std::span<const variable_id> query);
+  [[nodiscard]] posterior joint(std::span<const variable_id> query);
 
   /// The marginal of each of `nodes`: after the first, each costs a fold of a kept belief.
-  [[nodiscard]] PGM_DECL std::vector<posterior> marginals(std::span<const variable_id> nodes);
+  [[nodiscard]] std::vector<posterior> marginals(std::span<const variable_id> nodes);
 
-  [[nodiscard]] double log_probability_of_evidence() {
-    return detail::exact_log_evidence([&]<Semiring S>() { return in<S>().total(); });
+  [[nodiscard]] double log_probability_of_evidence() { return log_total() - log_partition(); }
+
+  /// ln Z, the logarithm of the model's partition function without evidence (0 for a Bayesian
+  /// network), propagated once on first need.
+  [[nodiscard]] double log_partition() {
+    if constexpr (DirectedModel<M>) {
+      return 0.0;
+    } else {
+      if (!log_partition_) {
+        log_partition_ =
+            detail::exact_log_evidence([&]<Semiring S>() { return propagation<S>(tree_, *model_).total(); });
+      }
+      return *log_partition_;
+    }
   }
 
   /// The most probable joint state of `variables` (every unobserved variable when empty).
-  [[nodiscard]] PGM_DECL mpe_result mpe(std::span<const variable_id> variables = {});
+  [[nodiscard]] mpe_result mpe(std::span<const variable_id> variables = {});
 
  private:
   /// Variable elimination costs more per cell than propagation (it builds its tables afresh,
@@ -76,18 +106,28 @@ class junction_tree_engine {
   /// (alarm and hailfinder propagate, insurance and pathfinder eliminate).
   static constexpr std::size_t elimination_cell_cost = 24;
 
+  static std::shared_ptr<const M> checked(std::shared_ptr<const M> model) {
+    if (!model) throw model_error("the junction tree engine was given no model");
+    return model;
+  }
+
+  /// ln P(e) in a Bayesian network, ln Z(e) in another model.
+  [[nodiscard]] double log_total() {
+    return detail::exact_log_evidence([&]<Semiring S>() { return in<S>().total(); });
+  }
+
   /// The cells of the tables in the relevant part of a query: the ancestors of the query and
   /// evidence variables (the rest is barren).
-  [[nodiscard]] PGM_DECL std::size_t relevant_cells(std::span<const variable_id> query) const;
+  [[nodiscard]] std::size_t relevant_cells(std::span<const variable_id> query) const requires DirectedModel<M>;
 
   /// Whether eliminating the query's relevant part is cheaper than the messages it needs.
-  [[nodiscard]] PGM_DECL bool eliminating_pays(std::span<const variable_id> query);
+  [[nodiscard]] bool eliminating_pays(std::span<const variable_id> query);
 
   /// Whether eliminating each node's relevant part in turn is cheaper than the propagation to
   /// all their homes.
-  [[nodiscard]] PGM_DECL bool eliminating_each_pays(std::span<const variable_id> nodes);
+  [[nodiscard]] bool eliminating_each_pays(std::span<const variable_id> nodes);
 
-  PGM_DECL variable_elimination& elimination();
+  variable_elimination<M>& elimination();
 
   template <Semiring S>
   struct slot {
@@ -99,7 +139,7 @@ class junction_tree_engine {
   template <Semiring S>
   propagation<S>& in() {
     auto& s = std::get<slot<S>>(propagations_);
-    if (!s.engine) s.engine = std::make_unique<propagation<S>>(tree_, *network_);
+    if (!s.engine) s.engine = std::make_unique<propagation<S>>(tree_, *model_);
     if (s.version != version_) {
       s.engine->set_evidence(evidence_);
       s.version = version_;
@@ -107,18 +147,159 @@ class junction_tree_engine {
     return *s.engine;
   }
 
-  const bayesian_network* network_;
+  std::shared_ptr<const M> model_;
   std::shared_ptr<const junction_tree> tree_;
   junction_tree_options options_;
   evidence_set evidence_;
   std::size_t version_ = 1;
   std::size_t queries_since_evidence_ = 0;
-  std::unique_ptr<variable_elimination> elimination_;
+  std::unique_ptr<variable_elimination<M>> elimination_;
   std::size_t elimination_version_ = 0;
+  std::optional<double> log_partition_;
   std::tuple<slot<sum_product<double>>, slot<log_sum_product<double>>, slot<max_product<double>>,
              slot<log_max_product<double>>>
       propagations_;
 };
+
+template <class M>
+junction_tree_engine(std::shared_ptr<M>, const junction_tree_options& = {})
+    -> junction_tree_engine<std::remove_const_t<M>>;
+
+template <GraphicalModel M>
+posterior junction_tree_engine<M>::joint(std::span<const variable_id> query) {
+  if (eliminating_pays(query)) {
+    auto result = elimination().joint(query);
+    result.engine = std::string(name());
+    return result;
+  }
+  auto result = detail::exact_posterior(*model_, query, evidence_, std::string(name()),
+                                        [&]<Semiring S>() { return in<S>().joint(query); });
+  if constexpr (!DirectedModel<M>) detail::divide_by_partition(result, log_partition());
+  return result;
+}
+
+template <GraphicalModel M>
+std::vector<posterior> junction_tree_engine<M>::marginals(std::span<const variable_id> nodes) {
+  std::vector<posterior> result;
+  result.reserve(nodes.size());
+  if (eliminating_each_pays(nodes)) {
+    // Each variable's relevant part is small (pathfinder's findings hang from one node):
+    // eliminating them one by one beats the propagation.
+    for (auto node : nodes) {
+      const variable_id one[] = {node};
+      result.push_back(elimination().joint(one));
+      result.back().engine = std::string(name());
+    }
+    return result;
+  }
+  const auto sums = in<sum_product<double>>().marginals(nodes);
+  const double ln_z = log_partition();
+  for (std::size_t i = 0; i < nodes.size(); ++i) {
+    double total = 0.0;
+    for (double v : sums[i]) total += v;
+    if (!detail::well_represented(total)) {
+      // Underflow somewhere: every marginal from log space, each on its own.
+      result.clear();
+      for (auto node : nodes) {
+        const variable_id one[] = {node};
+        result.push_back(joint(one));
+      }
+      return result;
+    }
+    posterior p;
+    p.engine = std::string(name());
+    p.variables.push_back(model_->variables()[nodes[i].value()]);
+    p.table = factor({nodes[i]}, {sums[i].size()}, sums[i]);
+    p.table.normalize();
+    p.evidence_probability = total;
+    p.log_evidence_probability = std::log(total);
+    if constexpr (!DirectedModel<M>) detail::divide_by_partition(p, ln_z);
+    result.push_back(std::move(p));
+  }
+  return result;
+}
+
+template <GraphicalModel M>
+mpe_result junction_tree_engine<M>::mpe(std::span<const variable_id> variables) {
+  const auto unobserved = detail::unobserved(*model_, evidence_);
+  std::vector<variable_id> chosen(variables.begin(), variables.end());
+  std::sort(chosen.begin(), chosen.end());
+  if (!variables.empty() && chosen != unobserved) {
+    auto result = elimination().mpe(variables);
+    result.engine = std::string(name());
+    return result;
+  }
+  auto result = detail::exact_mpe(*model_, unobserved, evidence_, log_total(), std::string(name()), [&]<Semiring S>() {
+    auto best = in<S>().maximize();
+    std::vector<std::size_t> states;
+    for (auto id : unobserved) states.push_back(best.states[id.value()]);
+    return std::pair{std::move(states), best.value};
+  });
+  if constexpr (!DirectedModel<M>) detail::divide_by_partition(result, log_partition());
+  return result;
+}
+
+template <GraphicalModel M>
+std::size_t junction_tree_engine<M>::relevant_cells(std::span<const variable_id> query) const requires
+    DirectedModel<M> {
+  const auto relevant = detail::relevant_set(*model_, query, evidence_);
+  std::size_t cells = 0;
+  for (std::size_t i = 0; i < model_->size(); ++i) {
+    if (relevant[i]) cells += model_->tables()[i].size();
+  }
+  return cells;
+}
+
+template <GraphicalModel M>
+bool junction_tree_engine<M>::eliminating_pays(std::span<const variable_id> query) {
+  const auto shared = ++queries_since_evidence_;
+  if constexpr (!DirectedModel<M>) {
+    return false;
+  } else {
+    if (!options_.prune) return false;
+    auto& sums = in<sum_product<double>>();
+    const std::size_t c[] = {sums.smallest_holding(query)};
+    if (c[0] >= tree_->cliques().size()) return false;
+    return detail::saturating_multiply(relevant_cells(query), elimination_cell_cost * shared) < sums.cost_of_beliefs(c);
+  }
+}
+
+template <GraphicalModel M>
+bool junction_tree_engine<M>::eliminating_each_pays(std::span<const variable_id> nodes) {
+  if constexpr (!DirectedModel<M>) {
+    return false;
+  } else {
+    if (!options_.prune) return false;
+    std::size_t eliminating = 0;
+    std::vector<std::size_t> homes;
+    for (auto node : nodes) {
+      const variable_id one[] = {node};
+      eliminating = detail::saturating_add(eliminating, relevant_cells(one));
+      homes.push_back(tree_->home(node));
+    }
+    std::sort(homes.begin(), homes.end());
+    homes.erase(std::unique(homes.begin(), homes.end()), homes.end());
+    return detail::saturating_multiply(eliminating, elimination_cell_cost) <
+           in<sum_product<double>>().cost_of_beliefs(homes);
+  }
+}
+
+template <GraphicalModel M>
+variable_elimination<M>& junction_tree_engine<M>::elimination() {
+  if (!elimination_) {
+    elimination_ = std::make_unique<variable_elimination<M>>(model_, variable_elimination_options{options_.heuristic});
+  }
+  if (elimination_version_ != version_) {
+    elimination_->set_evidence(evidence_);
+    elimination_version_ = version_;
+  }
+  return *elimination_;
+}
+
+#if defined(PGM_SEPARATE_COMPILATION)
+extern template class junction_tree_engine<bayesian_network>;
+extern template class junction_tree_engine<markov_network>;
+#endif
 
 }  // namespace pgm
 

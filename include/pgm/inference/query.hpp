@@ -27,6 +27,7 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/graphical_model.hpp"
 #include "pgm/core/markov_network.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/inference/factor.hpp"
@@ -135,6 +136,12 @@ struct mpe_result {
 /// The node id of `name`, throwing model_error naming an unknown one and the known ones.
 [[nodiscard]] PGM_DECL variable_id node_of(const bayesian_network& network, std::string_view name);
 
+/// The id of `name` in any other model (its id() names the known variables when it throws).
+template <detail::HasNamedVariables M>
+requires(!std::same_as<M, bayesian_network>) [[nodiscard]] variable_id node_of(const M& model, std::string_view name) {
+  return model.id(name);
+}
+
 namespace detail {
 
 /// "a=s, b=t, do(c=u)" for messages, the variables a model's.
@@ -143,6 +150,10 @@ namespace detail {
 [[nodiscard]] inline std::string describe(const bayesian_network& network, const evidence_set& observed) {
   return describe(network.variables(), observed);
 }
+
+/// `weights` as soft evidence on `v`: throws model_error for the wrong length, a negative or
+/// non-finite weight, or every weight 0.
+[[nodiscard]] PGM_DECL std::vector<double> checked_likelihood(const variable& v, const std::vector<double>& weights);
 
 [[noreturn]] inline void throw_impossible(const markov_network& model, const evidence_set& observed) {
   throw impossible_evidence("the evidence " + describe(model.variables(), observed) +
@@ -155,19 +166,55 @@ namespace detail {
 
 }  // namespace detail
 
-/// Hard and soft evidence and interventions by name resolved to ids. Throws model_error for an
-/// unknown variable or state (naming the known ones), a variable observed both ways or both
-/// observed and intervened on, or a likelihood of the wrong length, with a negative or
-/// non-finite weight, or with every weight 0.
-[[nodiscard]] PGM_DECL evidence_set resolve_evidence(const bayesian_network& network, const evidence& hard,
-                                                     const soft_evidence& soft = {}, const intervention& set = {});
+/// Hard and soft evidence and interventions by name resolved to ids, in any model. Throws
+/// model_error for an unknown variable or state (naming the known ones), a variable observed
+/// both ways or both observed and intervened on, or a likelihood of the wrong length, with a
+/// negative or non-finite weight, or with every weight 0.
+template <detail::HasNamedVariables M>
+[[nodiscard]] evidence_set resolve_evidence(const M& model, const evidence& hard, const soft_evidence& soft = {},
+                                            const intervention& set = {}) {
+  evidence_set result;
+  for (const auto& [name, state] : set) {
+    const auto id = node_of(model, name);
+    if (hard.contains(name) || soft.contains(name)) {
+      throw model_error("'" + name + "' is both intervened on and observed; do(" + name + "=" + state +
+                        ") sets it, so there is nothing to observe");
+    }
+    result.intervened.push_back({id, model.variables()[id.value()].state(state)});
+  }
+  for (const auto& [name, state] : hard) {
+    const auto id = node_of(model, name);
+    result.hard.push_back({id, model.variables()[id.value()].state(state)});
+  }
+  for (const auto& [name, weights] : soft) {
+    const auto id = node_of(model, name);
+    if (hard.contains(name)) throw model_error("'" + name + "' has both hard and soft evidence");
+    result.soft.push_back({id, detail::checked_likelihood(model.variables()[id.value()], weights)});
+  }
+  return result;
+}
 
 /// The ids of query variables by name. Throws model_error for an unknown variable, an empty
 /// list, a variable asked twice, one observed in a state or one intervened on (soft evidence on
 /// a queried variable is fine: its posterior is the prior reweighted).
-[[nodiscard]] PGM_DECL std::vector<variable_id> resolve_query(const bayesian_network& network,
-                                                              std::span<const std::string> names,
-                                                              const evidence_set& observed = {});
+template <detail::HasNamedVariables M>
+[[nodiscard]] std::vector<variable_id> resolve_query(const M& model, std::span<const std::string> names,
+                                                     const evidence_set& observed = {}) {
+  if (names.empty()) throw model_error("the query names no variable");
+  std::vector<variable_id> ids;
+  for (const auto& name : names) {
+    const auto id = node_of(model, name);
+    if (std::find(ids.begin(), ids.end(), id) != ids.end()) throw model_error("the query names '" + name + "' twice");
+    if (observed.intervenes(id)) {
+      throw model_error("'" + name +
+                        "' is intervened on, so its distribution is the point it is set to; query "
+                        "another variable");
+    }
+    if (observed.fixes(id)) throw model_error("'" + name + "' is both queried and observed");
+    ids.push_back(id);
+  }
+  return ids;
+}
 
 }  // namespace pgm
 

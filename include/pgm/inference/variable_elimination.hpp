@@ -18,10 +18,12 @@
 #include <initializer_list>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -288,42 +290,99 @@ struct variable_elimination_options {
   elimination_heuristic heuristic = elimination_heuristic::min_fill;
 };
 
-/// The variable elimination engine: holds the network and the evidence; every query eliminates
-/// afresh. `network` must outlive the engine. Its const members (joint, mpe, P(evidence)) may be
-/// called from several threads at once; set_evidence may not run beside them.
+/// The variable elimination engine over any model: holds the model and the evidence; every
+/// query eliminates afresh. It owns or shares the model: built from a model it keeps a copy,
+/// from a shared_ptr it shares it (pgm::borrowed lends one without a copy). Its const members
+/// (joint, mpe, P(evidence)) may be called from several threads at once; set_evidence may not
+/// run beside them.
+///
+/// In a Markov network P(evidence) is Z(e)/Z and a joint probability is Π φ / Z: the engine
+/// computes ln Z once, on first need. Interventions need a DAG: only a directed model takes them.
+template <GraphicalModel M = bayesian_network>
 class variable_elimination {
  public:
-  explicit variable_elimination(const bayesian_network& network, variable_elimination_options options = {})
-      : network_(&network), options_(options) {}
+  using model_type = M;
 
-  static constexpr bool handles_interventions = true;
+  explicit variable_elimination(M model, variable_elimination_options options = {})
+      : variable_elimination(std::make_shared<const M>(std::move(model)), options) {}
+  explicit variable_elimination(std::shared_ptr<const M> model, variable_elimination_options options = {})
+      : model_(std::move(model)), options_(options) {
+    if (!model_) throw model_error("variable elimination was given no model");
+  }
+
+  static constexpr bool handles_interventions = DirectedModel<M>;
   [[nodiscard]] std::string_view name() const noexcept { return "ve"; }
-  [[nodiscard]] const bayesian_network& network() const noexcept { return *network_; }
+  [[nodiscard]] const M& model() const noexcept { return *model_; }
+  [[nodiscard]] const M& network() const noexcept requires DirectedModel<M> { return *model_; }
   [[nodiscard]] const evidence_set& evidence() const noexcept { return evidence_; }
-  void set_evidence(evidence_set observed) { evidence_ = std::move(observed); }
+  void set_evidence(evidence_set observed) {
+    detail::check_interventions_allowed<M>(observed, name());
+    evidence_ = std::move(observed);
+  }
 
   /// P(query | evidence), `query` in the order wanted.
-  [[nodiscard]] PGM_DECL posterior joint(std::span<const variable_id> query) const;
+  [[nodiscard]] posterior joint(std::span<const variable_id> query) const {
+    auto result = detail::exact_posterior(*model_, query, evidence_, std::string(name()), [&]<Semiring S>() {
+      return joint_in<S>(*model_, query, evidence_, options_.heuristic, tables<S>());
+    });
+    if constexpr (!DirectedModel<M>) detail::divide_by_partition(result, log_partition());
+    return result;
+  }
 
-  [[nodiscard]] PGM_DECL double log_probability_of_evidence() const;
+  [[nodiscard]] double log_probability_of_evidence() const {
+    if constexpr (DirectedModel<M>) {
+      return log_total(evidence_);
+    } else {
+      return log_total(evidence_) - log_partition();
+    }
+  }
 
   /// The most probable joint state of `variables` (every unobserved variable when empty) given
   /// the evidence, the others summed out.
-  [[nodiscard]] PGM_DECL mpe_result mpe(std::span<const variable_id> variables = {}) const;
+  [[nodiscard]] mpe_result mpe(std::span<const variable_id> variables = {}) const {
+    const auto chosen = variables.empty() ? detail::unobserved(*model_, evidence_)
+                                          : std::vector<variable_id>(variables.begin(), variables.end());
+    auto result = detail::exact_mpe(
+        *model_, chosen, evidence_, log_total(evidence_), std::string(name()),
+        [&]<Semiring S>() { return maximum_in<S>(*model_, chosen, evidence_, options_.heuristic, tables<S>()); });
+    if constexpr (!DirectedModel<M>) detail::divide_by_partition(result, log_partition());
+    return result;
+  }
+
+  /// ln Z, the logarithm of the model's partition function without evidence (0 for a Bayesian
+  /// network), computed once.
+  [[nodiscard]] double log_partition() const {
+    if constexpr (DirectedModel<M>) {
+      return 0.0;
+    } else {
+      {
+        const std::lock_guard lock(*tables_mutex_);
+        if (*log_partition_) return **log_partition_;
+      }
+      const double value = log_total({});
+      const std::lock_guard lock(*tables_mutex_);
+      *log_partition_ = value;
+      return value;
+    }
+  }
 
  private:
-  [[nodiscard]] PGM_DECL std::vector<variable_id> unobserved() const;
+  /// ln of the ⊕-total of the model's factors with `observed` entered: ln P(e) in a Bayesian
+  /// network, ln Z(e) in another model.
+  [[nodiscard]] double log_total(const evidence_set& observed) const {
+    return detail::exact_log_evidence(
+        [&]<Semiring S>() { return total_of<S>(joint_in<S>(*model_, {}, observed, options_.heuristic, tables<S>())); });
+  }
 
-  /// Every node's table as a factor in S, made once per semiring on first use, under a lock:
-  /// two threads may query one engine through its const members.
+  /// Every factor in S, made once per semiring on first use, under a lock: two threads may
+  /// query one engine through its const members.
   template <Semiring S>
   [[nodiscard]] auto tables() const {
     const std::lock_guard lock(*tables_mutex_);
-    auto& kept = std::get<kept_tables<S>>(tables_).factors;
+    auto& kept = std::get<kept_tables<S>>(*tables_).factors;
     if (kept.empty()) {
-      for (std::size_t i = 0; i < network_->size(); ++i) {
-        kept.push_back(std::make_shared<const factor_of<S>>(
-            detail::table_factor<S>(*network_, variable_id(static_cast<variable_id::rep>(i)))));
+      for (std::size_t f = 0; f < model_->factor_count(); ++f) {
+        kept.push_back(std::make_shared<const factor_of<S>>(detail::model_factor<S>(*model_, f)));
       }
     }
     return [&kept](std::size_t f) { return kept[f]; };
@@ -333,16 +392,26 @@ class variable_elimination {
   struct kept_tables {
     std::vector<detail::shared_factor<S>> factors;
   };
+  using all_tables = std::tuple<kept_tables<sum_product<double>>, kept_tables<log_sum_product<double>>,
+                                kept_tables<max_product<double>>, kept_tables<log_max_product<double>>>;
 
-  const bayesian_network* network_;
+  std::shared_ptr<const M> model_;
   variable_elimination_options options_;
   evidence_set evidence_;
-  mutable std::tuple<kept_tables<sum_product<double>>, kept_tables<log_sum_product<double>>,
-                     kept_tables<max_product<double>>, kept_tables<log_max_product<double>>>
-      tables_;
-  /// Shared by copies, which share the tables' factors too.
+  /// Shared by copies, as the model is: they hold the same factors and the same ln Z.
+  std::shared_ptr<all_tables> tables_ = std::make_shared<all_tables>();
+  std::shared_ptr<std::optional<double>> log_partition_ = std::make_shared<std::optional<double>>();
   std::shared_ptr<std::mutex> tables_mutex_ = std::make_shared<std::mutex>();
 };
+
+template <class M>
+variable_elimination(std::shared_ptr<M>, variable_elimination_options = {})
+    -> variable_elimination<std::remove_const_t<M>>;
+
+#if defined(PGM_SEPARATE_COMPILATION)
+extern template class variable_elimination<bayesian_network>;
+extern template class variable_elimination<markov_network>;
+#endif
 
 /// P(query | evidence) by name. Throws model_error for an unknown variable or state, a
 /// variable asked twice or both asked and observed; impossible_evidence when P(evidence) = 0.

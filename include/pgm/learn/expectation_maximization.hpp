@@ -34,6 +34,7 @@
 #include <cstdint>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <random>
 #include <span>
@@ -299,7 +300,15 @@ class em_runner {
     parallel.threads = options_->threads;
     parallel.min_items_per_thread = 1;
     static_cast<void>(parallel_for(
-        blocks, parallel, [&] { return Engine(network); },
+        blocks, parallel,
+        [&] {
+          // The engines live within this step, the network beyond it: lent, not copied.
+          if constexpr (std::constructible_from<Engine, std::shared_ptr<const bayesian_network>>) {
+            return Engine(borrowed(network));
+          } else {
+            return Engine(network);
+          }
+        },
         [&](Engine& engine, item_range range) {
           for (std::size_t b = range.begin; b < range.end; ++b) {
             sums[b].counts = empty_counts(*structure_);
@@ -433,7 +442,7 @@ class em_runner {
 /// from a network; hard EM needs an MpeEngine). Throws data_error for a column whose states
 /// differ from the structure's or a row the tables give probability 0, model_error for a prior
 /// that does not fit.
-template <class Engine = junction_tree_engine>
+template <class Engine = junction_tree_engine<>>
 requires InferenceEngine<Engine> && std::constructible_from<Engine, const bayesian_network&>
 [[nodiscard]] em_result expectation_maximization(const network_structure& structure, const dataset& data,
                                                  const fit_options& fitting = {}, const em_options& options = {}) {

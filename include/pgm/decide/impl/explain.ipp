@@ -59,7 +59,7 @@ PGM_DECL explanation explain(const cpt<double>& table, std::size_t success_state
 PGM_DECL prevention_plan plan_prevention(const bayesian_network& network, const success_event& success,
                                          const assignment& planned, std::span<const std::string> controllable,
                                          const prevention_options& options, const prediction_options& prediction) {
-  variable_elimination engine(network, {prediction.heuristic});
+  variable_elimination engine(borrowed(network), {prediction.heuristic});
   return plan_prevention(engine, success, planned, controllable, options, prediction);
 }
 

@@ -74,7 +74,7 @@ namespace pgm {
 
 PGM_DECL double predict_success(const bayesian_network& network, const success_event& success,
                                 const assignment& planned, const prediction_options& options) {
-  variable_elimination engine(network, {options.heuristic});
+  variable_elimination engine(borrowed(network), {options.heuristic});
   return predict_success(engine, success, planned, options);
 }
 

@@ -9,7 +9,7 @@ namespace pgm {
 PGM_DECL cpt<double> success_table(const bayesian_network& network, std::string_view success,
                                    std::span<const std::string> given, std::span<const observation> observed,
                                    elimination_heuristic heuristic) {
-  variable_elimination engine(network, {heuristic});
+  variable_elimination engine(borrowed(network), {heuristic});
   return success_table(engine, success, given, observed);
 }
 

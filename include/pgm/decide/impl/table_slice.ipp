@@ -100,7 +100,7 @@ PGM_DECL table_slice slice_table(const bayesian_network& network, const table_sl
       }
     }
   } else {
-    junction_tree_engine engine(network);
+    junction_tree_engine engine(borrowed(network));
     const std::vector<std::string> axes{request.x, request.y};
     const auto table = success_table(engine, request.node, axes, observed);
     for (std::size_t i = 0; i < nx; ++i) {

@@ -77,6 +77,12 @@ PGM_DECL std::string format_probability(double value, int digits) {
   return format_short(value, digits);
 }
 
+/// A probability for JSON; null for one the engine could not estimate (NaN: a Gibbs chain on a
+/// Markov network has no P(evidence)).
+inline std::string json_probability(double p, const std::function<std::string(double)>& number) {
+  return std::isnan(p) ? "null" : number(p);
+}
+
 PGM_DECL std::string json_evidence(const evidence& observed, const soft_evidence& soft,
                                    const std::function<std::string(double)>& number, const intervention& set) {
   std::string text;
@@ -151,7 +157,7 @@ PGM_DECL void write_posterior_table(std::ostream& out, const posterior& p, const
       text += (k ? ", " : "") + detail::json_text(p.variables[k].name());
     }
     text += "],\n" + detail::json_evidence(observed, soft, number, set);
-    text += "  \"evidence_probability\": " + number(p.evidence_probability) + ",\n";
+    text += "  \"evidence_probability\": " + detail::json_probability(p.evidence_probability, number) + ",\n";
     if (p.evidence_probability < std::numeric_limits<double>::min()) {
       // Beyond a double: the logarithm carries it.
       text += "  \"log_evidence_probability\": " + detail::format_double(p.log_evidence_probability) + ",\n";
@@ -200,7 +206,9 @@ PGM_DECL void write_marginals_table(std::ostream& out, const std::vector<posteri
   } else {
     text += "{\n" + detail::json_evidence(observed, soft, number, set);
     if (!marginals.empty()) {
-      text += "  \"evidence_probability\": " + number(marginals.front().evidence_probability) + ",\n";
+      text +=
+          "  \"evidence_probability\": " + detail::json_probability(marginals.front().evidence_probability, number) +
+          ",\n";
       text += "  \"engine\": " + detail::json_text(marginals.front().engine) + ",\n";
     }
     const auto section = [&](const char* key, bool errors) {

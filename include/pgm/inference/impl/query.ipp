@@ -58,64 +58,23 @@ PGM_DECL std::string describe(const std::vector<variable>& variables, const evid
   return text;
 }
 
+PGM_DECL std::vector<double> checked_likelihood(const variable& v, const std::vector<double>& weights) {
+  const auto& name = v.name();
+  if (weights.size() != v.cardinality()) {
+    throw model_error("the soft evidence on '" + name + "' has " + std::to_string(weights.size()) + " weights, but '" +
+                      name + "' has " + std::to_string(v.cardinality()) + " states (" +
+                      detail::list_for_message(v.states()) + ")");
+  }
+  bool positive = false;
+  for (double w : weights) {
+    if (!std::isfinite(w) || w < 0.0) {
+      throw model_error("the soft evidence on '" + name + "' has the weight " + detail::format_double(w) +
+                        "; likelihoods are finite and not negative");
+    }
+    positive = positive || w > 0.0;
+  }
+  if (!positive) throw model_error("the soft evidence on '" + name + "' gives every state weight 0");
+  return weights;
+}
+
 }  // namespace pgm::detail
-
-namespace pgm {
-
-PGM_DECL evidence_set resolve_evidence(const bayesian_network& network, const evidence& hard, const soft_evidence& soft,
-                                       const intervention& set) {
-  evidence_set result;
-  for (const auto& [name, state] : set) {
-    const auto id = node_of(network, name);
-    if (hard.contains(name) || soft.contains(name)) {
-      throw model_error("'" + name + "' is both intervened on and observed; do(" + name + "=" + state +
-                        ") sets it, so there is nothing to observe");
-    }
-    result.intervened.push_back({id, network.at(name).state(state)});
-  }
-  for (const auto& [name, state] : hard) {
-    const auto id = node_of(network, name);
-    result.hard.push_back({id, network.at(name).state(state)});
-  }
-  for (const auto& [name, weights] : soft) {
-    const auto id = node_of(network, name);
-    const auto& v = network.at(name);
-    if (hard.contains(name)) throw model_error("'" + name + "' has both hard and soft evidence");
-    if (weights.size() != v.cardinality()) {
-      throw model_error("the soft evidence on '" + name + "' has " + std::to_string(weights.size()) +
-                        " weights, but '" + name + "' has " + std::to_string(v.cardinality()) + " states (" +
-                        detail::list_for_message(v.states()) + ")");
-    }
-    bool positive = false;
-    for (double w : weights) {
-      if (!std::isfinite(w) || w < 0.0) {
-        throw model_error("the soft evidence on '" + name + "' has the weight " + detail::format_double(w) +
-                          "; likelihoods are finite and not negative");
-      }
-      positive = positive || w > 0.0;
-    }
-    if (!positive) throw model_error("the soft evidence on '" + name + "' gives every state weight 0");
-    result.soft.push_back({id, weights});
-  }
-  return result;
-}
-
-PGM_DECL std::vector<variable_id> resolve_query(const bayesian_network& network, std::span<const std::string> names,
-                                                const evidence_set& observed) {
-  if (names.empty()) throw model_error("the query names no variable");
-  std::vector<variable_id> ids;
-  for (const auto& name : names) {
-    const auto id = node_of(network, name);
-    if (std::find(ids.begin(), ids.end(), id) != ids.end()) throw model_error("the query names '" + name + "' twice");
-    if (observed.intervenes(id)) {
-      throw model_error("'" + name +
-                        "' is intervened on, so its distribution is the point it is set to; query "
-                        "another variable");
-    }
-    if (observed.fixes(id)) throw model_error("'" + name + "' is both queried and observed");
-    ids.push_back(id);
-  }
-  return ids;
-}
-
-}  // namespace pgm

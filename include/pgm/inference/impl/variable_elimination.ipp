@@ -41,38 +41,9 @@ PGM_DECL factor joint_with_evidence(const bayesian_network& network, std::span<c
   return joint_in<sum_product<double>>(network, query, set, heuristic);
 }
 
-PGM_DECL posterior variable_elimination::joint(std::span<const variable_id> query) const {
-  return detail::exact_posterior(*network_, query, evidence_, std::string(name()), [&]<Semiring S>() {
-    return joint_in<S>(*network_, query, evidence_, options_.heuristic, tables<S>());
-  });
-}
-
-PGM_DECL double variable_elimination::log_probability_of_evidence() const {
-  return detail::exact_log_evidence([&]<Semiring S>() {
-    return total_of<S>(joint_in<S>(*network_, {}, evidence_, options_.heuristic, tables<S>()));
-  });
-}
-
-PGM_DECL mpe_result variable_elimination::mpe(std::span<const variable_id> variables) const {
-  const auto chosen = variables.empty() ? unobserved() : std::vector<variable_id>(variables.begin(), variables.end());
-  const double log_evidence = log_probability_of_evidence();
-  return detail::exact_mpe(*network_, chosen, evidence_, log_evidence, std::string(name()), [&]<Semiring S>() {
-    return maximum_in<S>(*network_, chosen, evidence_, options_.heuristic, tables<S>());
-  });
-}
-
-PGM_DECL std::vector<variable_id> variable_elimination::unobserved() const {
-  std::vector<variable_id> ids;
-  for (std::size_t i = 0; i < network_->size(); ++i) {
-    const variable_id id(static_cast<variable_id::rep>(i));
-    if (!evidence_.fixes(id)) ids.push_back(id);
-  }
-  return ids;
-}
-
 PGM_DECL posterior query(const bayesian_network& network, std::span<const std::string> variables,
                          const evidence& observed, elimination_heuristic heuristic) {
-  variable_elimination engine(network, {heuristic});
+  variable_elimination engine(borrowed(network), {heuristic});
   engine.set_evidence(resolve_evidence(network, observed));
   return engine.joint(resolve_query(network, variables, engine.evidence()));
 }
@@ -83,3 +54,10 @@ PGM_DECL posterior query(const bayesian_network& network, std::initializer_list<
 }
 
 }  // namespace pgm
+
+#if defined(PGM_SEPARATE_COMPILATION)
+namespace pgm {
+template class variable_elimination<bayesian_network>;
+template class variable_elimination<markov_network>;
+}  // namespace pgm
+#endif
