@@ -1,12 +1,25 @@
-// JSON models (pgm/io/json_model.hpp, read through the format registry) and discretizations:
-// the same bytes go to both readers.
+// JSON models (pgm/io/json_model.hpp, read through the format registry), Markov networks in the
+// same format, and discretizations: the same bytes go to every reader, and a Markov network read
+// back from what it writes is the same network.
 
 #include "pgm/io/json_model.hpp"
+
+#include <sstream>
 
 #include "network_format_harness.hpp"
 
 PGM_FUZZ_HARNESS(json_model) {
   pgm::fuzz::read_as_network_format("json", data, size);
+  const auto text = pgm::fuzz::text_of(data, size);
+  const auto markov = pgm::fuzz::outcome_of([&] { return pgm::parse_markov_json(text, "fuzz.json"); });
+  if (markov.value) {
+    const auto again = pgm::fuzz::outcome_of([&] {
+      std::ostringstream out;
+      pgm::write_markov_json(out, *markov.value);
+      return pgm::parse_markov_json(out.str(), "fuzz.json");
+    });
+    pgm::fuzz::expect_same(markov, again, "a Markov network read back from its own JSON differs");
+  }
   return pgm::fuzz::expect_value_or_error(
-      [&] { static_cast<void>(pgm::parse_discretization_json(pgm::fuzz::text_of(data, size), "fuzz.json")); });
+      [&] { static_cast<void>(pgm::parse_discretization_json(text, "fuzz.json")); });
 }

@@ -55,11 +55,19 @@ bool is_uai(const std::filesystem::path& path) {
   return name.ends_with(".uai");
 }
 
-any_model read_any_model_file(const std::filesystem::path& path) {
+std::optional<markov_network> read_markov_network_file(const std::filesystem::path& path) {
   if (is_uai(path)) {
     auto file = read_uai(path);
     if (file.kind == uai_kind::markov) return std::move(file.model);
+  } else if (find_format_of(path) == network_format("json")) {
+    const auto text = read_model_text(path);
+    if (declares_markov_network(text)) return parse_markov_json(text, path.string());
   }
+  return std::nullopt;
+}
+
+any_model read_any_model_file(const std::filesystem::path& path) {
+  if (auto markov = read_markov_network_file(path)) return std::move(*markov);
   return read_network_file(path);
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <variant>
@@ -87,8 +88,13 @@ using any_model = std::variant<bayesian_network, markov_network>;
 /// Whether `path` names a UAI file (.uai, or .uai.gz read compressed).
 [[nodiscard]] bool is_uai(const std::filesystem::path& path);
 
-/// The model a file holds: the Markov network of a MARKOV .uai file, else the Bayesian network
-/// of any network format (printing the reader's notes).
+/// The Markov network a file holds (a MARKOV .uai file, a pgm JSON model of "kind": "markov"), or
+/// nothing for a file that holds another model.
+[[nodiscard]] std::optional<markov_network> read_markov_network_file(const std::filesystem::path& path);
+
+/// The model a file holds: the Markov network of a MARKOV .uai file or of a pgm JSON model of
+/// "kind": "markov", else the Bayesian network of any network format (printing the reader's
+/// notes).
 [[nodiscard]] any_model read_any_model_file(const std::filesystem::path& path);
 
 /// Accepts only a whole number in [lo, hi], so that "-5" is an error rather than 2^64 - 5.

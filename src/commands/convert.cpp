@@ -1,5 +1,6 @@
 // pgm convert: a network from one file format to another (any of pgm/io/network_format.hpp's).
 
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -8,6 +9,7 @@
 #include "cli/common.hpp"
 #include "pgm/io/decision_model.hpp"
 #include "pgm/io/network_file.hpp"
+#include "pgm/io/uai.hpp"
 
 namespace pgm::cli {
 namespace {
@@ -19,6 +21,26 @@ struct convert_arguments {
   bool no_properties = false;
 };
 
+/// A Markov network goes to the formats that hold one: UAI (MARKOV) and pgm's JSON.
+void convert_markov_network(const convert_arguments& args, const markov_network& model, const network_format& from,
+                            const network_format& to) {
+  if (std::filesystem::path(args.out).extension() == ".gz") {
+    throw error("pgm writes models uncompressed; name the output without .gz");
+  }
+  if (to == network_format("uai")) {
+    const auto text = to_uai(model);
+    pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
+  } else if (to == network_format("json")) {
+    pgm::write_file_atomically(args.out, [&](std::ostream& out) { write_markov_json(out, model); });
+  } else {
+    throw error("'" + args.in + "' holds a Markov network, which " + std::string(name_of(to)) +
+                " cannot hold; convert it to .uai or .json");
+  }
+  summary_stream(args.out) << "converted " << args.in << " (" << name_of(from) << ", a Markov network) -> " << args.out
+                           << " (" << name_of(to) << "): " << model.size() << " variables, " << model.factor_count()
+                           << " factors\n";
+}
+
 void run_convert(const convert_arguments& args) {
   const auto from = format_to_read(args.in);
   const auto named = find_format_of(args.out);
@@ -28,6 +50,10 @@ void run_convert(const convert_arguments& args) {
     throw error("'" + args.out + "' names the " + std::string(name_of(*named)) + " format but --to says " + args.to);
   }
   pgm::check_output_path(args.out);
+  if (auto markov = read_markov_network_file(args.in)) {
+    convert_markov_network(args, *markov, from, to);
+    return;
+  }
   const auto model = read_model_file(args.in);
   const auto network = model.network();
   // The counts a network is updated from (pgm fit --keep-counts) go along: in JSON under
@@ -55,7 +81,8 @@ void run_convert(const convert_arguments& args) {
 void add_convert_command(CLI::App& app) {
   auto args = std::make_shared<convert_arguments>();
   auto* cmd = app.add_subcommand("convert", "Convert a network between " + network_format_descriptions() +
-                                                ".\nExample: pgm convert sachs.bif sachs.net");
+                                                "; a Markov network between UAI and JSON.\nExamples:\n  pgm convert "
+                                                "sachs.bif sachs.net\n  pgm convert Grids_11.uai Grids_11.json");
   cmd->add_option("in", args->in,
                   "The network to read; its extension names its format (.bif.gz and the like are read compressed)")
       ->required();

@@ -5,7 +5,6 @@
 #include <iostream>
 #include <span>
 #include <string>
-#include <variant>
 #include <vector>
 
 #include "cli/common.hpp"
@@ -180,11 +179,9 @@ void show_markov(const show_arguments& args, const markov_network& model) {
 }
 
 void run_show(const show_arguments& args) {
-  if (is_uai(args.model)) {
-    if (auto read = read_any_model_file(args.model); std::holds_alternative<markov_network>(read)) {
-      show_markov(args, std::get<markov_network>(read));
-      return;
-    }
+  if (const auto markov = read_markov_network_file(args.model)) {
+    show_markov(args, *markov);
+    return;
   }
   auto document = read_model_file(args.model);
   auto& structure = document.structure;

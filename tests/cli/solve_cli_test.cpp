@@ -160,6 +160,21 @@ TEST_F(solve_cli_test, query_and_show_read_a_markov_network) {
   EXPECT_THAT(shown.out, HasSubstr("a Markov network of 3 variables, 2 factors, 8 values"));
   EXPECT_THAT(shown.out, HasSubstr("factor 1 over (v1, v2)\n  v1  | 0  1\n  0   | 1  1\n  1   | 1  5\n"));
   EXPECT_THAT(shown.out, Not(HasSubstr("factor 0")));
+  // Through pgm's JSON and back to UAI: the same model, the same answers; BIF cannot hold it.
+  const auto json = (dir_ / "chain.json").string();
+  auto converted = run("convert " + (dir_ / "chain.uai").string() + " " + json);
+  ASSERT_EQ(converted.code, 0) << converted.err;
+  EXPECT_THAT(slurp(dir_ / "chain.json"), HasSubstr("{\"scope\": [\"v1\", \"v2\"], \"values\": [1, 1, 1, 5]}"));
+  converted = run("convert " + json + " " + (dir_ / "again.uai").string());
+  ASSERT_EQ(converted.code, 0) << converted.err;
+  EXPECT_EQ(parse_uai(slurp(dir_ / "again.uai"), "again.uai").model, parse_uai(chain, "chain.uai").model);
+  const auto from_json = run("query --model " + json + " --query v1 --evidence v2=1 --format json --digits 17");
+  ASSERT_EQ(from_json.code, 0) << from_json.err;
+  EXPECT_THAT(from_json.out, HasSubstr("\"probability\": 0.11764705882352"));
+  const auto to_bif = run("convert " + json + " " + (dir_ / "chain.bif").string());
+  EXPECT_EQ(to_bif.code, 1);
+  EXPECT_THAT(to_bif.err, HasSubstr("holds a Markov network, which bif cannot hold; convert it to .uai or .json"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "chain.bif"));
 }
 
 }  // namespace

@@ -51,11 +51,11 @@ TEST(json_model_test, unknown_keys_are_errors_naming_the_nearest_known_one) {
   };
   EXPECT_NO_THROW(
       static_cast<void>(parse_model_json(model("", R"(,"metadata":{"success":"a=1","mine":2})"), "m.json")));
-  EXPECT_THAT(
-      [&] { static_cast<void>(parse_model_json(model("", R"(,"egdes":[])"), "m.json")); },
-      ThrowsMessage<data_error>(HasSubstr("m.json: /egdes: unknown key 'egdes'; did you mean 'edges'? (the keys "
-                                          "here: format, version, variables, edges, tables, statistics, metadata, "
-                                          "learned)")));
+  EXPECT_THAT([&] { static_cast<void>(parse_model_json(model("", R"(,"egdes":[])"), "m.json")); },
+              ThrowsMessage<data_error>(
+                  HasSubstr("m.json: /egdes: unknown key 'egdes'; did you mean 'edges'? (the keys "
+                            "here: format, version, kind, variables, edges, tables, statistics, metadata, "
+                            "learned)")));
   EXPECT_THAT([&] { static_cast<void>(parse_model_json(model(R"(,"tags":{"units":"cm"})", ""), "m.json")); },
               ThrowsMessage<data_error>(HasSubstr("m.json: /variables/0/tags/units: unknown key 'units'; did you "
                                                   "mean 'unit'?")));

@@ -15,11 +15,24 @@
 ///               "values": [[0.1, 0.9], [0.8, 0.2]]}, …],  // one row per configuration
 ///   "statistics": {…}   // optional: the counts and priors (pgm/io/statistics_json.hpp)
 /// }
+///
+/// A Markov network (a factor graph) says so with "kind" and holds factors instead of edges
+/// and tables; a factor's values run over its scope's joint states, the last variable fastest:
+///
+/// {
+///   "format": "pgm-model", "version": 1, "kind": "markov",
+///   "variables": [{"name": "a", "states": ["0", "1"]}, …],
+///   "factors": [{"scope": ["a", "b"], "values": [1, 2, 3, 4]}, …]   // φ(a0 b0), φ(a0 b1), …
+/// }
 
 #include <algorithm>
+#include <charconv>
 #include <filesystem>
+#include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <ostream>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -29,6 +42,7 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
+#include "pgm/core/markov_network.hpp"
 #include "pgm/core/mixed_radix.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/discretizer.hpp"
@@ -71,6 +85,18 @@ PGM_DECL nlohmann::json variable_to_json(const variable& v);
 [[nodiscard]] inline nlohmann::json to_json(const bayesian_network& network) {
   return to_json(network.structure(), &network.tables());
 }
+
+/// Writes a Markov network as pgm's JSON model ("kind": "markov"), streamed: a factor to a line,
+/// no document built in memory first, each number the shortest text that reads back the same.
+PGM_DECL void write_markov_json(std::ostream& out, const markov_network& model);
+
+/// Whether the text of a pgm JSON model declares a Markov network ("kind": "markov"); text that
+/// is not such a model is left for its parser to name what is wrong.
+[[nodiscard]] PGM_DECL bool declares_markov_network(std::string_view text);
+
+/// A Markov network from pgm's JSON model; errors name the JSON path (an unknown variable in a
+/// scope, a variable twice in one, values of the wrong number, negative or not finite).
+[[nodiscard]] PGM_DECL markov_network parse_markov_json(std::string_view text, const std::string& source);
 
 /// The network with the counts and priors it was estimated from.
 [[nodiscard]] PGM_DECL nlohmann::json to_json(const bayesian_network& network, const fit_statistics& statistics);

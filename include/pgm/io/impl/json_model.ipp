@@ -122,14 +122,106 @@ PGM_DECL nlohmann::json to_json(const bayesian_network& network, const fit_stati
   return document;
 }
 
+PGM_DECL void write_markov_json(std::ostream& out, const markov_network& model) {
+  out << "{\n  \"format\": \"pgm-model\",\n  \"version\": 1,\n  \"kind\": \"markov\",\n  \"variables\": [";
+  const auto& variables = model.variables();
+  for (std::size_t i = 0; i < variables.size(); ++i) {
+    out << (i ? ",\n    " : "\n    ") << detail::variable_to_json(variables[i]).dump();
+  }
+  out << (variables.empty() ? "],\n" : "\n  ],\n") << "  \"factors\": [";
+  char number[32];
+  for (std::size_t f = 0; f < model.factor_count(); ++f) {
+    const auto& table = model.factor(f);
+    out << (f ? ",\n    " : "\n    ") << "{\"scope\": [";
+    for (std::size_t k = 0; k < table.scope().size(); ++k) {
+      out << (k ? ", " : "") << nlohmann::json(variables[table.scope()[k].value()].name()).dump();
+    }
+    out << "], \"values\": [";
+    for (std::size_t v = 0; v < table.values().size(); ++v) {
+      const auto written = std::to_chars(number, number + sizeof number, table.values()[v]);
+      out << (v ? ", " : "") << std::string_view(number, static_cast<std::size_t>(written.ptr - number));
+    }
+    out << "]}";
+  }
+  out << (model.factor_count() == 0 ? "]\n}\n" : "\n  ]\n}\n");
+}
+
+PGM_DECL bool declares_markov_network(std::string_view text) {
+  const auto document = nlohmann::json::parse(text, nullptr, false);
+  if (!document.is_object()) return false;
+  const auto kind = document.find("kind");
+  return kind != document.end() && kind->is_string() && kind->get<std::string>() == "markov";
+}
+
+PGM_DECL markov_network parse_markov_json(std::string_view text, const std::string& source) {
+  const detail::json_reader reader(source);
+  const auto document = reader.parse(text);
+  reader.check_format(document, "pgm-model");
+  reader.only_keys(document, "", {"format", "version", "kind", "variables", "factors", "metadata"});
+  if (reader.string(reader.member(document, "", "kind"), "/kind") != "markov") {
+    reader.fail("/kind", "expected \"markov\": this reader reads Markov networks");
+  }
+  std::vector<variable> variables;
+  const auto& vars = reader.array(reader.member(document, "", "variables"), "/variables");
+  for (std::size_t i = 0; i < vars.size(); ++i) {
+    variables.push_back(reader.read_variable(vars[i], "/variables/" + std::to_string(i)));
+  }
+  // Names to ids; two variables of one name are the model's to refuse below.
+  std::map<std::string, std::size_t, std::less<>> ids;
+  for (std::size_t i = 0; i < variables.size(); ++i) ids.emplace(variables[i].name(), i);
+  std::vector<factor_table> factors;
+  const auto& entries = reader.array(reader.member(document, "", "factors"), "/factors");
+  for (std::size_t f = 0; f < entries.size(); ++f) {
+    const auto path = "/factors/" + std::to_string(f);
+    reader.only_keys(entries[f], path, {"scope", "values"});
+    const auto names = reader.strings(reader.member(entries[f], path, "scope"), path + "/scope");
+    std::vector<variable_id> scope;
+    std::vector<std::size_t> cards;
+    for (std::size_t k = 0; k < names.size(); ++k) {
+      const auto at = ids.find(names[k]);
+      if (at == ids.end()) {
+        reader.fail(path + "/scope/" + std::to_string(k), "'" + names[k] + "' is not a variable of the model");
+      }
+      scope.push_back(variable_id(static_cast<variable_id::rep>(at->second)));
+      cards.push_back(variables[at->second].cardinality());
+    }
+    // A factor beyond pgm's limit is refused before its values are read.
+    std::size_t cells = 1;
+    for (const auto c : cards) cells = detail::saturating_multiply(cells, c);
+    if (cells > max_table_cells) {
+      reader.fail(path, "a factor of " + std::to_string(cells) + " cells is more than pgm's limit of " +
+                            std::to_string(max_table_cells) + " (docs/limits.md)");
+    }
+    const auto values = reader.numbers(reader.member(entries[f], path, "values"), path + "/values");
+    try {
+      factors.emplace_back(std::move(scope), std::move(cards), values);
+    } catch (const model_error& e) {
+      reader.fail(path, e.what());
+    }
+  }
+  try {
+    return markov_network(std::move(variables), std::move(factors));
+  } catch (const model_error& e) {
+    reader.fail("", e.what());
+  }
+}
+
 PGM_DECL model_document parse_model_json(std::string_view text, const std::string& source) {
   const detail::json_reader reader(source);
   const auto document = reader.parse(text);
   reader.check_format(document, "pgm-model");
+  if (const auto* kind = reader.optional_member(document, "kind"); kind && kind->is_string() && *kind == "markov") {
+    reader.fail("/kind",
+                "this file holds a Markov network, not a Bayesian network or structure; pgm query, "
+                "show, solve and convert read it");
+  }
   // Free for people and tools: "metadata" (io/decision_model.hpp reads its "success") and
   // "learned" (how pgm learn-structure found the structure).
   reader.only_keys(document, "",
-                   {"format", "version", "variables", "edges", "tables", "statistics", "metadata", "learned"});
+                   {"format", "version", "kind", "variables", "edges", "tables", "statistics", "metadata", "learned"});
+  if (const auto* kind = reader.optional_member(document, "kind")) {
+    if (reader.string(*kind, "/kind") != "bayesian") reader.fail("/kind", "expected \"bayesian\" or \"markov\"");
+  }
   std::vector<variable> variables;
   const auto& vars = reader.array(reader.member(document, "", "variables"), "/variables");
   for (std::size_t i = 0; i < vars.size(); ++i) {
