@@ -3,14 +3,19 @@
 
 #include "pgm/inference/solve.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <numbers>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "cli/common.hpp"
@@ -38,6 +43,7 @@ struct solve_arguments {
   double damping = 0.0;
   double tolerance = 1e-9;
   std::size_t iterations = 1000;
+  double time_limit = std::numeric_limits<double>::infinity();
   std::size_t sweeps = 10'000;
   std::size_t burn_in = 1'000;
 };
@@ -61,8 +67,56 @@ evidence_set evidence_of(const solve_arguments& args, const markov_network& mode
   return observed;
 }
 
+/// Ends the process when --time-limit passes before the answer is computed: an exact engine
+/// cannot stop half way with an answer, and nothing has been written yet. bp and gibbs are given
+/// the time left less a margin, so they stop on their own with what they have.
+class time_limit_guard {
+ public:
+  explicit time_limit_guard(double seconds) : seconds_(seconds) {
+    if (std::isfinite(seconds)) watcher_ = std::thread([this] { watch(); });
+  }
+  time_limit_guard(const time_limit_guard&) = delete;
+  time_limit_guard& operator=(const time_limit_guard&) = delete;
+  ~time_limit_guard() {
+    finished();
+    if (watcher_.joinable()) watcher_.join();
+  }
+
+  /// The answer is computed: from here on the limit no longer applies (writing it is quick).
+  void finished() {
+    const std::lock_guard lock(mutex_);
+    done_ = true;
+    done_changed_.notify_all();
+  }
+
+  /// What an engine that stops on its own may spend: the time left less a margin for the rest.
+  [[nodiscard]] double for_an_engine() const {
+    if (!std::isfinite(seconds_)) return seconds_;
+    const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - started_;
+    return std::max(0.0, 0.9 * seconds_ - spent.count());
+  }
+
+ private:
+  void watch() {
+    std::unique_lock lock(mutex_);
+    if (done_changed_.wait_for(lock, std::chrono::duration<double>(seconds_), [this] { return done_; })) return;
+    std::cerr << "pgm: error: solve did not finish within --time-limit " << text::format_short(seconds_)
+              << " s, so nothing was written; bp and gibbs stop at the limit with the answer they have (--engine bp)"
+              << std::endl;
+    std::_Exit(1);
+  }
+
+  double seconds_;
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
+  std::mutex mutex_;
+  std::condition_variable done_changed_;
+  bool done_ = false;
+  std::thread watcher_;
+};
+
 template <GraphicalModel M>
-std::string solve(const M& model, const markov_network& ids, const solve_arguments& args, solve_report& report) {
+std::string solve(const M& model, const markov_network& ids, const solve_arguments& args, solve_report& report,
+                  const time_limit_guard& limit) {
   const auto observed = evidence_of(args, ids);
   solve_options options;
   options.engine = parse_solve_engine(args.engine);
@@ -71,9 +125,11 @@ std::string solve(const M& model, const markov_network& ids, const solve_argumen
   options.bp = {.schedule = parse_bp_schedule(args.schedule),
                 .damping = args.damping,
                 .tolerance = args.tolerance,
-                .max_iterations = args.iterations};
+                .max_iterations = args.iterations,
+                .time_limit_seconds = limit.for_an_engine()};
   options.search = {.restarts = args.restarts, .seed = args.seed};
-  options.gibbs = {.sweeps = args.sweeps, .burn_in = args.burn_in, .seed = args.seed};
+  options.gibbs = {
+      .sweeps = args.sweeps, .burn_in = args.burn_in, .seed = args.seed, .time_limit_seconds = limit.for_an_engine()};
   if (args.task == "PR") {
     return uai_pr_text(log_partition(model, observed, options, &report) / std::numbers::ln10);
   }
@@ -96,17 +152,19 @@ void run_solve(const solve_arguments& args) {
   }
   pgm::check_output_path(args.out);
   const auto started = std::chrono::steady_clock::now();
+  time_limit_guard limit(args.time_limit);
   solve_report report;
   std::string text;
   if (is_uai(args.model)) {
     const auto file = read_uai(args.model);
-    text = solve(file.model, file.model, args, report);
+    text = solve(file.model, file.model, args, report, limit);
   } else {
     // Another format holds a Bayesian network; its UAI numbering is its node order.
     const auto network = read_network_file(args.model);
     const markov_network ids(network.variables(), {});
-    text = solve(network, ids, args, report);
+    text = solve(network, ids, args, report, limit);
   }
+  limit.finished();
   pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
   const std::chrono::duration<double> took = std::chrono::steady_clock::now() - started;
   if (!report.note.empty()) note(report.note);
@@ -120,6 +178,7 @@ void run_solve(const solve_arguments& args) {
     std::cerr << ", approximate, " << (report.converged ? "converged" : "not converged") << " after "
               << report.iterations << " iterations (last change " << text::format_short(report.residual, 3) << ")";
   }
+  if (report.timed_out) std::cerr << ", stopped at the time limit";
   std::cerr << "; " << text::format_short(took.count(), 3) << " s\n";
   summary_stream(args.out) << "wrote " << args.task << " of " << args.model << " to " << args.out << '\n';
 }
@@ -169,6 +228,10 @@ void add_solve_command(CLI::App& app) {
       ->check(whole_number(1, 100'000'000));
   cmd->add_option("--burn-in", args->burn_in, "gibbs's sweeps left out first (default 1000)")
       ->check(whole_number(0, 100'000'000));
+  cmd->add_option("--time-limit", args->time_limit,
+                  "Seconds the run may take: bp and gibbs stop before it with the answer they have; an exact engine "
+                  "still at work is stopped and nothing is written (default: none)")
+      ->check(number_between(0.0, std::numeric_limits<double>::infinity(), true, true));
   cmd->add_option("--memory-limit", args->memory_limit,
                   "MiB the exact engines' tables may take, checked before any is allocated (default 4096, the "
                   "competition's budget)")

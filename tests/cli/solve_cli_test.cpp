@@ -46,6 +46,7 @@ TEST_F(solve_cli_test, help_names_the_options) {
                              "--iterations", "--sweeps", "--burn-in", "--memory-limit", "--out"}) {
     EXPECT_THAT(r.out, HasSubstr(option));
   }
+  EXPECT_THAT(r.out, HasSubstr("--time-limit"));
 }
 
 TEST_F(solve_cli_test, writes_the_four_answers) {
@@ -175,6 +176,29 @@ TEST_F(solve_cli_test, query_and_show_read_a_markov_network) {
   EXPECT_EQ(to_bif.code, 1);
   EXPECT_THAT(to_bif.err, HasSubstr("holds a Markov network, which bif cannot hold; convert it to .uai or .json"));
   EXPECT_FALSE(std::filesystem::exists(dir_ / "chain.bif"));
+}
+
+TEST_F(solve_cli_test, the_time_limit_stops_bp_and_gibbs_with_an_answer_and_an_exact_engine_with_nothing) {
+  const auto grid = std::string(PGM_SOURCE_DIR) + "/tests/data/uai/MAR/Grids_11.uai";
+  // bp on a loopy grid with a tolerance it cannot reach: only the limit stops it.
+  auto r = run("solve --model " + grid +
+               " --task MAR --engine bp --tolerance 1e-300 --iterations 1000000 --time-limit 0.3 --out " + out());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("not converged"));
+  EXPECT_THAT(r.err, HasSubstr("stopped at the time limit"));
+  EXPECT_THAT(answer(), StartsWith("MAR\n100 2 "));
+  r = run("solve --model " + grid + " --task MAR --engine gibbs --sweeps 100000000 --time-limit 0.3 --out " + out());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("stopped at the time limit"));
+  // The junction tree of Grids_11 takes about half a second: a twentieth is not enough.
+  std::filesystem::remove(dir_ / "answer");
+  r = run("solve --model " + grid + " --task MAR --engine jt --time-limit 0.02 --out " + out());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("did not finish within --time-limit 0.02 s, so nothing was written"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "answer"));
+  r = run("solve " + model() + " --task PR --time-limit -1 --out " + out());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_THAT(r.err, HasSubstr("--time-limit"));
 }
 
 }  // namespace

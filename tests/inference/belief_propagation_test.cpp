@@ -123,6 +123,27 @@ TEST(belief_propagation_test, on_a_loopy_model_it_is_close_and_says_whether_it_c
   EXPECT_FALSE(cut.converged);
   EXPECT_EQ(cut.iterations, 1U);
   EXPECT_GT(cut.residual, short_run.tolerance);
+  EXPECT_FALSE(cut.timed_out);
+  // A time limit already past stops either schedule at its first look at the clock.
+  for (const auto schedule : all_bp_schedules) {
+    bp_options no_time;
+    no_time.schedule = schedule;
+    no_time.tolerance = 1e-300;
+    no_time.time_limit_seconds = 0.0;
+    const auto stopped = belief_propagation(model, {}, no_time);
+    EXPECT_TRUE(stopped.timed_out);
+    EXPECT_FALSE(stopped.converged);
+    EXPECT_LE(stopped.iterations, 1U);
+    EXPECT_EQ(stopped.marginals.size(), model.size());
+  }
+  factor_gibbs_options no_time;
+  no_time.time_limit_seconds = 0.0;
+  const auto sampled = factor_gibbs(model, {}, no_time);
+  EXPECT_TRUE(sampled.timed_out);
+  EXPECT_EQ(sampled.sweeps, 0U);
+  for (const auto& marginal : sampled.marginals) {
+    EXPECT_EQ(std::count(marginal.begin(), marginal.end(), 1.0), 1);  // the state the chain reached
+  }
 }
 
 TEST(belief_propagation_test, soft_evidence_and_interventions) {

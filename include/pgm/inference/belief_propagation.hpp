@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -55,6 +56,8 @@ struct bp_options {
   double damping = 0.0;
   double tolerance = 1e-9;
   std::size_t max_iterations = 1000;
+  /// Seconds of wall-clock time after which it stops with the beliefs it has (not converged).
+  double time_limit_seconds = std::numeric_limits<double>::infinity();
 };
 
 struct bp_result {
@@ -66,6 +69,8 @@ struct bp_result {
   std::size_t iterations = 0;
   /// The largest message change of the last iteration.
   double residual = 0.0;
+  /// Whether it stopped at options.time_limit_seconds.
+  bool timed_out = false;
 };
 
 namespace detail {

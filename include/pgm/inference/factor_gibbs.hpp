@@ -13,9 +13,11 @@
 /// the result says when a variable's conditional was all zeros, where it drew uniformly.
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include "pgm/core/graphical_model.hpp"
@@ -31,6 +33,8 @@ struct factor_gibbs_options {
   std::size_t sweeps = 10'000;
   std::size_t burn_in = 1'000;
   std::uint64_t seed = 1;
+  /// Seconds of wall-clock time after which the chain stops with the sweeps it has kept.
+  double time_limit_seconds = std::numeric_limits<double>::infinity();
 };
 
 struct factor_gibbs_result {
@@ -38,6 +42,9 @@ struct factor_gibbs_result {
   std::vector<std::vector<double>> marginals;
   /// The draws whose conditional had no positive state (drawn uniformly instead).
   std::size_t stuck_draws = 0;
+  /// The sweeps kept: options.sweeps unless the time limit stopped the chain first.
+  std::size_t sweeps = 0;
+  bool timed_out = false;
 };
 
 /// Gibbs sampling on `model` with hard and soft evidence (interventions are refused).
@@ -114,15 +121,31 @@ template <GraphicalModel M>
       }
     }
   };
+  const auto started = std::chrono::steady_clock::now();
+  const auto past_time_limit = [&] {
+    const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - started;
+    return spent.count() > options.time_limit_seconds;
+  };
   sweep(false, true);
-  for (std::size_t s = 0; s < options.burn_in; ++s) sweep(false, false);
-  for (std::size_t s = 0; s < options.sweeps; ++s) sweep(true, false);
+  for (std::size_t s = 0; s < options.burn_in && !result.timed_out; ++s) {
+    sweep(false, false);
+    result.timed_out = past_time_limit();
+  }
+  while (result.sweeps < options.sweeps && !result.timed_out) {
+    sweep(true, false);
+    ++result.sweeps;
+    result.timed_out = past_time_limit();
+  }
   for (std::size_t v = 0; v < n; ++v) {
     if (fixed[v] >= 0) {
       result.marginals[v][static_cast<std::size_t>(fixed[v])] = 1.0;
       continue;
     }
-    for (auto& p : result.marginals[v]) p /= static_cast<double>(std::max<std::size_t>(options.sweeps, 1));
+    if (result.sweeps == 0) {  // stopped before the first kept sweep: the state it reached
+      result.marginals[v][state[v]] = 1.0;
+      continue;
+    }
+    for (auto& p : result.marginals[v]) p /= static_cast<double>(result.sweeps);
   }
   return result;
 }

@@ -108,6 +108,8 @@ struct solve_report {
   bool converged = true;
   std::size_t iterations = 0;
   double residual = 0.0;
+  /// For bp and gibbs: whether the time limit stopped them (their answer is what they had).
+  bool timed_out = false;
   /// Why auto chose the engine it ran, when it was not jt.
   std::string note;
 };
@@ -237,6 +239,7 @@ template <GraphicalModel M>
   report.converged = result.converged;
   report.iterations = result.iterations;
   report.residual = result.residual;
+  report.timed_out = result.timed_out;
   return result;
 }
 
@@ -329,7 +332,8 @@ template <GraphicalModel M>
     r.engine = "gibbs";
     r.exact = false;
     r.converged = sampled.stuck_draws == 0;
-    r.iterations = options.gibbs.sweeps;
+    r.iterations = sampled.sweeps;
+    r.timed_out = sampled.timed_out;
     if (sampled.stuck_draws > 0) {
       r.note = std::to_string(sampled.stuck_draws) +
                " draws met a conditional with no positive state (zeros in the factors) and were drawn uniformly";

@@ -3,6 +3,7 @@
 // under PGM_SEPARATE_COMPILATION (pgm/core/compilation.hpp).
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -225,6 +226,15 @@ class factor_graph_messages {
     }
   }
 
+  /// The residual schedule looks at the clock once per this many updates, or per iteration
+  /// (one update per factor) when that is fewer.
+  static constexpr std::size_t time_check_updates = 256;
+
+  [[nodiscard]] bool past_time_limit() const {
+    const std::chrono::duration<double> spent = std::chrono::steady_clock::now() - started_;
+    return spent.count() > options_.time_limit_seconds;
+  }
+
   void run_parallel(bp_result& result) {
     for (result.iterations = 0; result.iterations < options_.max_iterations;) {
       for (std::size_t e = 0; e < edges_.size(); ++e) variable_to_factor(e);
@@ -235,6 +245,10 @@ class factor_graph_messages {
       result.residual = largest;
       if (largest <= options_.tolerance) {
         result.converged = true;
+        break;
+      }
+      if (past_time_limit()) {
+        result.timed_out = true;
         break;
       }
     }
@@ -268,6 +282,10 @@ class factor_graph_messages {
         break;
       }
       if (updates == budget) break;
+      if (updates % std::min(time_check_updates, m) == 0 && updates > 0 && past_time_limit()) {
+        result.timed_out = true;
+        break;
+      }
       queue.pop();
       ++updates;
       // Recomputed in place: a factor's own messages in candidate_ are those of its last
@@ -301,6 +319,7 @@ class factor_graph_messages {
   const std::vector<std::size_t>& cards_;
   const std::vector<factor_of<log_sum_product<double>>>& factors_;
   bp_options options_;
+  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
   std::vector<edge> edges_;
   std::vector<std::vector<std::size_t>> edges_of_factor_;
   std::vector<std::vector<std::size_t>> edges_of_variable_;
