@@ -33,7 +33,8 @@ TEST_F(limits_cli_test, fit_on_raw_continuous_columns_is_refused_with_a_hint_to_
 }
 
 // y under 26 binary parents: 2^26 configurations × 2 states, past the dense limit, from 2,000
-// rows. pgm fit counts it sparse; JSON keeps it so, BIF refuses it, sampling answers queries.
+// rows. pgm fit counts it sparse; JSON keeps it so, BIF refuses it, sampling answers queries, and
+// exact inference once the evidence reduces the family to what fits.
 TEST_F(limits_cli_test, a_family_past_the_dense_limit_is_fitted_sparse) {
   std::string csv = "y";
   std::string edges;
@@ -68,7 +69,20 @@ TEST_F(limits_cli_test, a_family_past_the_dense_limit_is_fitted_sparse) {
 
   const auto exact = run("query --model " + model.string() + " --query y --engine ve");
   EXPECT_EQ(exact.code, 1);
-  EXPECT_THAT(exact.err, HasSubstr("exact inference cannot hold it; the sampling engines (lw, gibbs) can"));
+  EXPECT_THAT(exact.err, HasSubstr("the table of 'y' with the evidence entered still has 134217728 cells, more than "
+                                   "pgm's limit of 16777216 (docs/limits.md): observe more of its parents, or use "
+                                   "the sampling engines (lw, gibbs)"));
+  // Every parent observed: P(y | u) is a lookup of u's column (the first row's configuration,
+  // stored, whose y is its only value seen: MLE gives it probability 1).
+  const auto row = csv.find('\n') + 1;
+  std::string first_row;
+  for (std::size_t p = 0; p < 26; ++p) {
+    first_row += (p ? ",p" : "p") + std::to_string(p) + "=" + csv[row + 2 + 2 * p];
+  }
+  const auto lookup =
+      run("query --model " + model.string() + " --query y --engine ve --digits 17 --evidence " + first_row);
+  ASSERT_EQ(lookup.code, 0) << lookup.err;
+  EXPECT_THAT(lookup.out, HasSubstr(std::string("\n") + csv[row] + ",1\n"));
   const auto sampled = run("query --model " + model.string() + " --query y --evidence p0=1 --engine lw");
   ASSERT_EQ(sampled.code, 0) << sampled.err;
   EXPECT_THAT(sampled.out, HasSubstr("y,"));

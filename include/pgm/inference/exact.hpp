@@ -17,6 +17,7 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/graphical_model.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/inference/factor.hpp"
 #include "pgm/inference/query.hpp"
 #include "pgm/inference/semiring.hpp"
@@ -53,6 +54,71 @@ template <Semiring S>
   scope.push_back(node);
   std::vector<std::size_t> cards = table.parent_radix().radices();
   cards.push_back(j);
+  return factor_of<S>(std::move(scope), std::move(cards), std::move(values));
+}
+
+/// The table of `node` as a factor in semiring S with the variables `fixed` gives a state (its
+/// entry for a variable, −1 for one not fixed) reduced away, read column by column: a sparse table
+/// is never made dense, so a family past pgm's dense limit answers once its evidence leaves few
+/// cells (P(Y | 24 observed parents) is one column). Each column is read as table_factor reads
+/// it. Throws table_too_large when the reduced factor itself is past the limit.
+template <Semiring S>
+[[nodiscard]] factor_of<S> reduced_table_factor(const bayesian_network& network, variable_id node,
+                                                std::span<const std::ptrdiff_t> fixed) {
+  const auto& table = network.table(node);
+  const auto parents = network.graph().parents(node);
+  const auto& radix = table.parent_radix();
+  const auto j = table.child_cardinality();
+  std::vector<variable_id> scope;
+  std::vector<std::size_t> cards;
+  std::vector<std::size_t> free_parents;  // positions among the parents
+  std::vector<std::size_t> codes(parents.size(), 0);
+  std::size_t cells = 1;
+  for (std::size_t k = 0; k < parents.size(); ++k) {
+    const auto state = fixed[parents[k].value()];
+    if (state >= 0) {
+      codes[k] = static_cast<std::size_t>(state);
+      continue;
+    }
+    free_parents.push_back(k);
+    scope.push_back(parents[k]);
+    cards.push_back(radix.radix(k));
+    cells = saturating_multiply(cells, radix.radix(k));
+  }
+  const auto child_state = fixed[node.value()];
+  if (child_state < 0) {
+    scope.push_back(node);
+    cards.push_back(j);
+    cells = saturating_multiply(cells, j);
+  }
+  if (cells > max_table_cells) {
+    throw table_too_large("the table of '" + table.child().name() + "' with the evidence entered still has " +
+                          std::to_string(cells) + " cells, more than pgm's limit of " +
+                          std::to_string(max_table_cells) +
+                          " (docs/limits.md): observe more of its parents, or use the sampling engines (lw, gibbs)");
+  }
+  std::vector<typename S::value_type> values;
+  values.reserve(cells);
+  std::vector<double> column(j);
+  const auto configurations = cells / (child_state < 0 ? j : 1);
+  for (std::size_t c = 0; c < configurations; ++c) {
+    const auto stored = table.column(config_index(radix.encode(codes)));
+    double sum = 0.0;
+    for (std::size_t x = 0; x < j; ++x) sum += (column[x] = static_cast<double>(stored[x]));
+    if (std::abs(sum - 1.0) > column_sum_slack && sum > 0.0) {
+      for (auto& p : column) p /= sum;
+    }
+    if (child_state < 0) {
+      for (const double p : column) values.push_back(S::from_probability(p));
+    } else {
+      values.push_back(S::from_probability(column[static_cast<std::size_t>(child_state)]));
+    }
+    for (std::size_t k = free_parents.size(); k-- > 0;) {  // the next configuration, the last fastest
+      const auto at = free_parents[k];
+      if (++codes[at] < radix.radix(at)) break;
+      codes[at] = 0;
+    }
+  }
   return factor_of<S>(std::move(scope), std::move(cards), std::move(values));
 }
 

@@ -83,6 +83,16 @@ template <Semiring S, GraphicalModel M, class TableOf>
       const variable_id node(static_cast<variable_id::rep>(f));
       if (!relevant[f] || observed.intervenes(node)) continue;
     }
+    if constexpr (DirectedModel<M>) {
+      if (model.tables()[f].is_sparse()) {
+        // Reduced as it is read: a sparse family past the dense limit is never made whole.
+        const variable_id node(static_cast<variable_id::rep>(f));
+        auto reduced = reduced_table_factor<S>(model, node, fixed);
+        for (auto id : model.factor_scope(f)) covered[id.value()] = true;
+        factors.push_back(std::make_shared<const factor_of<S>>(std::move(reduced)));
+        continue;
+      }
+    }
     shared_factor<S> table = table_of(f);
     const auto scope = table->scope();  // a copy: reducing replaces the table
     for (auto id : scope) {
@@ -375,14 +385,19 @@ class variable_elimination {
   }
 
   /// Every factor in S, made once per semiring on first use, under a lock: two threads may
-  /// query one engine through its const members.
+  /// query one engine through its const members. A sparse table is not kept: each query reads
+  /// it reduced by its evidence (detail::evidence_factors).
   template <Semiring S>
   [[nodiscard]] auto tables() const {
     const std::lock_guard lock(*tables_mutex_);
     auto& kept = std::get<kept_tables<S>>(*tables_).factors;
     if (kept.empty()) {
-      for (std::size_t f = 0; f < model_->factor_count(); ++f) {
-        kept.push_back(std::make_shared<const factor_of<S>>(detail::model_factor<S>(*model_, f)));
+      kept.resize(model_->factor_count());
+      for (std::size_t f = 0; f < kept.size(); ++f) {
+        if constexpr (DirectedModel<M>) {
+          if (model_->tables()[f].is_sparse()) continue;  // read reduced by each query's evidence
+        }
+        kept[f] = std::make_shared<const factor_of<S>>(detail::model_factor<S>(*model_, f));
       }
     }
     return [&kept](std::size_t f) { return kept[f]; };
