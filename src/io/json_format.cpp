@@ -1,5 +1,7 @@
 // pgm's JSON model as a registered format (the reader and writer are pgm/io/json_model.hpp's).
 
+#include <sstream>
+
 #include "io/builtin_formats.hpp"
 #include "pgm/io/json_model.hpp"
 
@@ -13,8 +15,12 @@ network_format_codec detail::json_format() {
                      const network_read_options&) { return parse_model_json(text, source); },
           .write =
               [](const bayesian_network& network, const network_write_options& options) {
-                return (options.statistics ? to_json(network, *options.statistics) : to_json(network)).dump(2) + "\n";
-              }};
+                std::ostringstream out;
+                write_model_json(out, network, options.statistics);
+                return out.str();
+              },
+          .write_to = [](std::ostream& out, const bayesian_network& network,
+                         const network_write_options& options) { write_model_json(out, network, options.statistics); }};
 }
 
 }  // namespace pgm

@@ -57,6 +57,10 @@ std::string to_text(const bayesian_network& network, const network_format& forma
 
 void write_network(const bayesian_network& network, const std::filesystem::path& path, const network_format& format,
                    const network_write_options& options) {
+  if (const auto& stream = format.codec().write_to) {
+    write_file_atomically(path, [&](std::ostream& out) { stream(out, network, options); });
+    return;
+  }
   const auto text = to_text(network, format, options);
   write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }

@@ -22,6 +22,23 @@ TEST(json_model_test, network_round_trip_is_exact) {
   }
 }
 
+TEST(json_model_test, the_streamed_writer_writes_what_the_document_dumps) {
+  for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+    const auto net = testing::random_network(seed, {.nodes = 1 + seed % 9, .max_parents = seed % 4});
+    std::ostringstream streamed;
+    write_model_json(streamed, net);
+    EXPECT_EQ(streamed.str(), to_json(net).dump(2) + "\n") << "seed " << seed;
+  }
+  // Tags, intervals, names that need escaping, and a network of no edges.
+  const variable odd("a\"quoted\"name\\", {"s\"1", "ü"});
+  const auto intervals = variable::intervals("x", {-1.5, 0.0, 1e-7, 2e300});
+  const auto net =
+      bayesian_network::from_tables({cpt<double>(odd, {}, {0.25, 0.75}), cpt<double>(intervals, {}, {0.1, 0.2, 0.7})});
+  std::ostringstream streamed;
+  write_model_json(streamed, net);
+  EXPECT_EQ(streamed.str(), to_json(net).dump(2) + "\n");
+}
+
 TEST(json_model_test, structure_only_with_tags_and_edges) {
   const auto x = variable::intervals("xOff1", {-3, 0, 3}, {"x-offset", "cm", "cubeUp1"});
   const network_structure s({x, variable("onTop1", {"0", "1"})}, {{"xOff1", "onTop1"}});

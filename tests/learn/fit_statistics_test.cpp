@@ -131,7 +131,12 @@ TEST(fit_statistics, survive_the_json_model_file_to_the_last_bit) {
   const auto text = csv_of_rows(sample(network, 300, 7), true);
   for (const auto& options : every_prior_kind(network)) {
     const auto fitted = fit_text(text, network.structure(), options);
-    const auto document = parse_model_json(to_json(fitted.network, *fitted.statistics).dump(2), "model.json");
+    const auto built = to_json(fitted.network, *fitted.statistics).dump(2) + "\n";
+    // The streamed writer writes the same text as the document built in memory.
+    std::ostringstream streamed;
+    write_model_json(streamed, fitted.network, &*fitted.statistics);
+    EXPECT_EQ(streamed.str(), built);
+    const auto document = parse_model_json(built, "model.json");
     ASSERT_TRUE(document.statistics.has_value());
     EXPECT_EQ(document.statistics->rows, 300.0);
     for (std::size_t i = 0; i < network.size(); ++i) {

@@ -281,6 +281,9 @@ TEST(sparse_table_test, evidence_reduces_a_family_past_the_dense_limit_before_an
 TEST(sparse_table_test, json_keeps_a_sparse_table_sparse_and_bif_writes_it_dense) {
   const auto network = sparse_network();
   const auto json = to_json(network);
+  std::ostringstream streamed;
+  write_model_json(streamed, network);
+  EXPECT_EQ(streamed.str(), json.dump(2) + "\n");
   const auto read = parse_model_json(json.dump(), "m.json").network();
   EXPECT_TRUE(read.table("y").is_sparse());
   EXPECT_EQ(read, network);

@@ -101,6 +101,12 @@ PGM_DECL void write_markov_json(std::ostream& out, const markov_network& model);
 /// The network with the counts and priors it was estimated from.
 [[nodiscard]] PGM_DECL nlohmann::json to_json(const bayesian_network& network, const fit_statistics& statistics);
 
+/// Writes the network (and its statistics, when given) as pgm's JSON model, streamed: the same
+/// text as to_json(...).dump(2) and a newline, without the document built in memory first (a
+/// table of 10⁶ stored configurations as a JSON tree takes tens of bytes a number).
+PGM_DECL void write_model_json(std::ostream& out, const bayesian_network& network,
+                               const fit_statistics* statistics = nullptr);
+
 [[nodiscard]] PGM_DECL model_document parse_model_json(std::string_view text, const std::string& source);
 
 [[nodiscard]] inline model_document read_model_json(const std::filesystem::path& path) {

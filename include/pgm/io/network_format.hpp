@@ -51,6 +51,9 @@ struct network_format_codec {
   /// The text of a fitted network; throws model_error, before anything is written, for what the
   /// format cannot hold.
   std::function<std::string(const bayesian_network&, const network_write_options&)> write;
+  /// Optional: the same text streamed to `out` as it is made, for a format whose documents may be
+  /// large (pgm's JSON); writing a file then uses it, so the text is never held whole.
+  std::function<void(std::ostream& out, const bayesian_network&, const network_write_options&)> write_to;
 };
 
 /// A registered format: a handle to its codec, compared by name.

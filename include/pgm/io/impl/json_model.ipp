@@ -72,9 +72,119 @@ PGM_DECL cpt<double> read_sparse_table(const json_reader& reader, const nlohmann
   return cpt<double>(child, std::move(parents), std::move(columns));
 }
 
+/// nlohmann's dump(2) of `value` as it would appear `depth` levels deep in a document: the same
+/// text, written straight to `out`.
+inline void write_pretty(std::ostream& out, const nlohmann::json& value, std::size_t depth) {
+  const std::string inner(2 * (depth + 1), ' ');
+  if (value.is_object() && !value.empty()) {
+    out << "{\n";
+    bool first = true;
+    for (const auto& [key, member] : value.items()) {
+      out << (first ? "" : ",\n") << inner << nlohmann::json(key).dump() << ": ";
+      write_pretty(out, member, depth + 1);
+      first = false;
+    }
+    out << '\n' << std::string(2 * depth, ' ') << '}';
+  } else if (value.is_array() && !value.empty()) {
+    out << "[\n";
+    for (std::size_t i = 0; i < value.size(); ++i) {
+      out << (i ? ",\n" : "") << inner;
+      write_pretty(out, value[i], depth + 1);
+    }
+    out << '\n' << std::string(2 * depth, ' ') << ']';
+  } else {
+    out << value.dump();
+  }
+}
+
+/// One column of probabilities as dump(2) writes an array of numbers `depth` levels deep.
+template <class Numbers>
+void write_number_array(std::ostream& out, const Numbers& numbers, std::size_t depth) {
+  if (numbers.size() == 0) {
+    out << "[]";
+    return;
+  }
+  const std::string inner(2 * (depth + 1), ' ');
+  out << "[\n";
+  for (std::size_t i = 0; i < numbers.size(); ++i) {
+    out << (i ? ",\n" : "") << inner << nlohmann::json(static_cast<double>(numbers[i])).dump();
+  }
+  out << '\n' << std::string(2 * depth, ' ') << ']';
+}
+
+/// A table entry of the "tables" array (depth 2), its keys in nlohmann's order.
+inline void write_table_json(std::ostream& out, const cpt<double>& table) {
+  nlohmann::json parents = nlohmann::json::array();
+  for (const auto& p : table.parents()) parents.push_back(p.name());
+  const std::string key(6, ' ');
+  out << "    {\n";
+  auto columns = [&](auto&& each_configuration) {
+    out << key << "\"values\": [";
+    bool first = true;
+    each_configuration([&](std::size_t u) {
+      out << (first ? "\n" : ",\n") << std::string(8, ' ');
+      write_number_array(out, table.column(config_index(u)), 4);
+      first = false;
+    });
+    out << (first ? "]" : "\n" + key + "]");
+  };
+  if (table.is_sparse()) {
+    nlohmann::json given = nlohmann::json::array();
+    for (const auto u : table.stored_configurations()) {
+      const auto codes = table.parent_codes(config_index(u));
+      nlohmann::json states = nlohmann::json::array();
+      for (std::size_t k = 0; k < codes.size(); ++k) states.push_back(table.parents()[k].states()[codes[k]]);
+      given.push_back(std::move(states));
+    }
+    out << key << "\"given\": ";
+    write_pretty(out, given, 3);
+    out << ",\n" << key << "\"parents\": ";
+    write_pretty(out, parents, 3);
+    out << ",\n" << key << "\"rest\": ";
+    write_number_array(out, table.rest(), 3);
+    out << ",\n";
+    columns([&](auto&& write) {
+      for (const auto u : table.stored_configurations()) write(u);
+    });
+  } else {
+    out << key << "\"parents\": ";
+    write_pretty(out, parents, 3);
+    out << ",\n";
+    columns([&](auto&& write) {
+      for (std::size_t u = 0; u < table.configurations(); ++u) write(u);
+    });
+  }
+  out << ",\n" << key << "\"variable\": " << nlohmann::json(table.child().name()).dump() << "\n    }";
+}
+
 }  // namespace pgm::detail
 
 namespace pgm {
+
+PGM_DECL void write_model_json(std::ostream& out, const bayesian_network& network, const fit_statistics* statistics) {
+  // The keys in nlohmann's (alphabetical) order, as to_json(...).dump(2) writes them.
+  nlohmann::json edges = nlohmann::json::array();
+  for (const auto& edge : network.structure().edges()) edges.push_back({edge.from, edge.to});
+  out << "{\n  \"edges\": ";
+  detail::write_pretty(out, edges, 1);
+  out << ",\n  \"format\": \"pgm-model\",\n";
+  if (statistics) {
+    out << "  \"statistics\": ";
+    detail::write_pretty(out, to_json(*statistics), 1);
+    out << ",\n";
+  }
+  out << "  \"tables\": [";
+  const auto& tables = network.tables();
+  for (std::size_t i = 0; i < tables.size(); ++i) {
+    out << (i ? ",\n" : "\n");
+    detail::write_table_json(out, tables[i]);
+  }
+  out << (tables.empty() ? "]" : "\n  ]") << ",\n  \"variables\": ";
+  nlohmann::json variables = nlohmann::json::array();
+  for (const auto& v : network.variables()) variables.push_back(detail::variable_to_json(v));
+  detail::write_pretty(out, variables, 1);
+  out << ",\n  \"version\": 1\n}\n";
+}
 
 PGM_DECL nlohmann::json to_json(const network_structure& structure, const std::vector<cpt<double>>* tables) {
   nlohmann::json document = {{"format", "pgm-model"}, {"version", 1}};
