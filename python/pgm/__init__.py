@@ -307,12 +307,17 @@ def _graphviz(text, kind):
 
 def read_network(path):
     """Reads a network from a .bif, .xml (XMLBIF), .net (Hugin), .json or .uai file, as the `pgm`
-    program does; a .uai file that declares MARKOV is a pgm.MarkovNetwork."""
+    program does; a .uai file that declares MARKOV, or a .json model of "kind": "markov", is a
+    pgm.MarkovNetwork."""
     path = _path(path, "path")
     name = os.fspath(path).lower()
     if name.endswith(".uai") or name.endswith(".uai.gz"):
         kind, handle = _core.read_uai(path)
         return MarkovNetwork(handle, None) if kind == "markov" else Network(handle)
+    if name.endswith(".json") or name.endswith(".json.gz"):
+        handle = _core.read_markov_json(path)
+        if handle is not None:
+            return MarkovNetwork(handle, None)
     return Network(_core.read_network(path))
 
 

@@ -61,7 +61,8 @@ class MarkovNetwork:
         return result
 
     def write(self, path):
-        """Writes the model as a MARKOV .uai file (which keeps no names: v0, v1, …), atomically."""
+        """Writes the model atomically: as pgm's JSON model (names and all) to a .json path, else
+        as a MARKOV .uai file (which keeps no names: v0, v1, …)."""
         self._model.write(str(path))
 
     def _solve(self, task, evidence, engine):

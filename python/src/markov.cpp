@@ -17,6 +17,7 @@
 #include "pgm/core/file.hpp"
 #include "pgm/core/markov_network.hpp"
 #include "pgm/inference/solve.hpp"
+#include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/io/uai.hpp"
 
@@ -108,6 +109,13 @@ py::tuple read_uai_file(const std::filesystem::path& path) {
   return py::make_tuple("markov", markov_handle{std::move(file.model)});
 }
 
+/// The Markov network of a pgm JSON model of "kind": "markov", or None for another model.
+py::object read_markov_json(const std::filesystem::path& path) {
+  const auto text = read_model_text(path);
+  if (!declares_markov_network(text)) return py::none();
+  return py::cast(markov_handle{parse_markov_json(text, path.string())});
+}
+
 }  // namespace
 
 void add_markov(py::module_& m) {
@@ -132,11 +140,16 @@ void add_markov(py::module_& m) {
                              })
       .def("write",
            [](const markov_handle& h, const std::filesystem::path& path) {
+             if (path.extension() == ".json") {
+               write_file_atomically(path, [&](std::ostream& out) { write_markov_json(out, h.model); });
+               return;
+             }
              const auto text = to_uai(h.model);
              write_file_atomically(path, [&](std::ostream& out) { out << text; });
            })
       .def("solve", &solve_task);
   m.def("read_uai", &read_uai_file);
+  m.def("read_markov_json", &read_markov_json);
 }
 
 }  // namespace pgm::python

@@ -70,6 +70,22 @@ def test_read_network_reads_a_markov_uai_file_and_writes_it_back(tmp_path):
         assert s1 == s2 and np.array_equal(v1, v2)
 
 
+def test_a_markov_network_keeps_its_names_in_json(tmp_path):
+    model = chain()
+    model.write(tmp_path / "chain.json")
+    assert '"kind": "markov"' in (tmp_path / "chain.json").read_text()
+    again = pgm.read_network(tmp_path / "chain.json")
+    assert isinstance(again, pgm.MarkovNetwork)
+    assert again.variables == ["a", "b", "c"]
+    for (s1, v1), (s2, v2) in zip(model.factors, again.factors):
+        assert s1 == s2 and np.array_equal(v1, v2)
+    assert again.log_partition_function() == pytest.approx(math.log(44.0), abs=1e-14)
+    # A Bayesian network's JSON is still a Network.
+    (tmp_path / "b.uai").write_text("BAYES\n2\n2 2\n2\n1 0\n2 0 1\n2\n0.3 0.7\n4\n0.9 0.1 0.2 0.8\n")
+    pgm.read_network(tmp_path / "b.uai").write(tmp_path / "b.json")
+    assert isinstance(pgm.read_network(tmp_path / "b.json"), pgm.Network)
+
+
 def test_a_bayes_uai_file_is_a_network(tmp_path):
     (tmp_path / "b.uai").write_text("BAYES\n2\n2 2\n2\n1 0\n2 0 1\n2\n0.3 0.7\n4\n0.9 0.1 0.2 0.8\n")
     network = pgm.read_network(tmp_path / "b.uai")
