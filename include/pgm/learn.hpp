@@ -18,6 +18,7 @@
 #include "pgm/learn/hill_climbing.hpp"
 #include "pgm/learn/independence_test.hpp"
 #include "pgm/learn/learn_structure.hpp"
+#include "pgm/learn/log_gamma_ratio.hpp"
 #include "pgm/learn/network_score.hpp"
 #include "pgm/learn/orientation.hpp"
 #include "pgm/learn/parameter_prior.hpp"

@@ -14,7 +14,7 @@ import numpy as np
 import pandas as pd
 
 from . import _core, _frame
-from ._checks import _assignment, _flag, _names, _path, _real, _text, _whole
+from ._checks import _assignment, _choice, _did_you_mean, _flag, _names, _path, _real, _seed, _text, _threads, _whole
 from ._core import Error
 from . import _checks
 from ._inference import ENGINES, InferenceEngine
@@ -140,7 +140,7 @@ class Network:
             raise Error(f"decay must be in (0, 1], got {decay}")
         names = self.variables
         columns = _frame.columns_of(data, names)
-        return Network(_core.update(self._net, columns, _frame.column_names(data), decay, _whole(threads, "threads")))
+        return Network(_core.update(self._net, columns, _frame.column_names(data), decay, _threads(threads)))
 
     def to_dot(self, success=None, controllable=None):
         """The structure as Graphviz DOT text, as `pgm draw --out NAME.dot`: the success
@@ -179,6 +179,7 @@ class Network:
             from matplotlib.figure import Figure
         except ImportError:
             raise Error("plot_table needs matplotlib (Debian: apt-get install python3-matplotlib)") from None
+        ax = _checks._axes(ax)
         if path is not None:
             path = _path(path, "path")
             kind = os.path.splitext(path)[1].lower().lstrip(".")
@@ -268,8 +269,8 @@ class Network:
         if success is None:
             success = [] if self.success is None else [self.success.split("=")[0]]
         else:
-            success = _names(success, "success")
-        controllable = [] if controllable is None else _names(controllable, "controllable")
+            success = _names(success, "success", allow_empty=True)  # []: no variable marked
+        controllable = [] if controllable is None else _names(controllable, "controllable", allow_empty=True)
         return success, controllable
 
     def to_pgmpy(self):
@@ -467,7 +468,7 @@ def fit(
         weight = 5.0
     elif isinstance(w_prior, str):
         if w_prior != "auto":
-            raise Error(f"w_prior must be a number >= 0 or 'auto', got '{w_prior}'")
+            raise Error(f"w_prior must be a number >= 0 or 'auto', got '{w_prior}'{_did_you_mean(w_prior, ['auto'])}")
         weight = None
     elif isinstance(w_prior, numbers.Real) and not isinstance(w_prior, bool):
         weight = float(w_prior)
@@ -482,7 +483,7 @@ def fit(
         None if alpha is None else _real(alpha, "alpha"),
         None if ess is None else _real(ess, "ess"),
         _text(empty, "empty"),
-        _whole(threads, "threads"),
+        _threads(threads),
         interval_edges,
         interval_file,
         handle,
@@ -501,25 +502,25 @@ def fit(
 
 def _em_arguments(missing, latent, restarts, seed, max_iterations, tolerance, hard, keep_counts):
     """missing="em"'s options for _core.fit, None for any other rule (whose EM options are
-    refused when set)."""
-    if missing not in (*_frame._MISSING, "em"):
-        raise Error(f"missing must be one of {', '.join(_frame._MISSING)}, em, got {missing!r}")
+    refused when set). The numbers are checked either way, within the bounds of `pgm fit`'s options."""
+    _choice(missing, "missing", (*_frame._MISSING, "em"), "missing-value policy")
+    tolerance = _real(tolerance, "tolerance")
+    if not tolerance >= 0:  # also NaN
+        raise Error(f"tolerance must be a number >= 0, got {tolerance}")
+    options = (
+        _whole(restarts, "restarts", 1, 1000),
+        _seed(seed),
+        _whole(max_iterations, "max_iterations", 0, 1_000_000),
+        tolerance,
+        _flag(hard, "hard"),
+    )
     if missing != "em":
         if latent is not None:
             raise Error('latent applies with missing="em"')
         return None
     if keep_counts:
         raise Error('keep_counts does not apply with missing="em": EM\'s counts are expectations under its tables')
-    tolerance = _real(tolerance, "tolerance")
-    if not tolerance >= 0:  # also NaN
-        raise Error(f"tolerance must be a number >= 0, got {tolerance}")
-    return (
-        _whole(restarts, "restarts", 1),
-        _whole(seed, "seed"),
-        _whole(max_iterations, "max_iterations"),
-        tolerance,
-        _flag(hard, "hard"),
-    )
+    return options
 
 
 def _named_states(states):
@@ -589,8 +590,12 @@ def d_separated(network, x, y, given=None):
     """Whether the variables x and y are d-separated given `given` in the network's DAG (each a
     name or a list of names), as `pgm dsep`."""
     handle = _handle(network)
-    given = [] if given is None else _names(given, "given")
-    return _core.d_separated(handle, _names(x, "x"), _names(y, "y"), given)
+    x, y = _names(x, "x"), _names(y, "y")
+    given = [] if given is None else _names(given, "given", allow_empty=True)  # []: marginal independence
+    shared = _checks._shared([("x", x), ("y", y), ("given", given)])
+    if shared:  # the library's message names neither the variable nor the arguments
+        raise Error(f"'{shared[0]}' is in both {shared[1]} and {shared[2]}: d-separation needs disjoint sets")
+    return _core.d_separated(handle, x, y, given)
 
 
 def intervene(network, do):
@@ -604,7 +609,11 @@ def backdoor_sets(network, x, y, *, limit=100_000):
     """The minimal sets satisfying the back-door criterion for the effect of x on y (names or
     lists of names), smallest first, and whether the search was complete within `limit` sets."""
     handle = _handle(network)
-    return _core.backdoor_sets(handle, _names(x, "x"), _names(y, "y"), _whole(limit, "limit", 1))
+    x, y = _names(x, "x"), _names(y, "y")
+    shared = _checks._shared([("the treatment (x)", x), ("the outcome (y)", y)])
+    if shared:  # the library's message names neither the variable nor the arguments
+        raise Error(f"'{shared[0]}' is both {shared[1]} and {shared[2]}")
+    return _core.backdoor_sets(handle, x, y, _whole(limit, "limit", 1, _checks.UINT64_MAX))
 
 
 def check(network, data, test=None, alpha=0.05, *, threads=0):
@@ -613,15 +622,13 @@ def check(network, data, test=None, alpha=0.05, *, threads=0):
     `data`, as `pgm check`: a DataFrame x, y, given, statistic, df, p_value, rejected, the
     smallest p-value first."""
     handle = _handle(network)
-    test = _core.default_ci_test if test is None else test
-    if test not in ("chi2", "g2"):
-        raise Error(f"test must be chi2 or g2, got {test!r}")
+    test = _core.default_ci_test if test is None else _choice(test, "test", ("chi2", "g2"), "independence test")
     alpha = _real(alpha, "alpha")
     if not 0.0 < alpha < 1.0:
         raise Error(f"alpha must lie strictly between 0 and 1, got {alpha}")
     names = handle.variables
     columns = _frame.columns_of(data, names)
-    result = pd.DataFrame(_core.check(handle, columns, test, alpha, _whole(threads, "threads")))
+    result = pd.DataFrame(_core.check(handle, columns, test, alpha, _threads(threads)))
     result["rejected"] = result["p_value"] <= alpha
     return result
 
@@ -713,20 +720,20 @@ def learn_structure(
         columns,
         _core.default_ci_test if test is None else _text(test, "test"),
         _real(alpha, "alpha"),
-        _whole(max_cond, "max_cond"),
+        _whole(max_cond, "max_cond", 0, 64),
         tiers_text,
         edges_text(forbid),
         edges_text(require),
-        _whole(threads, "threads"),
+        _threads(threads),
         _text(algorithm, "algorithm"),
         _text(score, "score"),
         _real(iss, "iss"),
-        _whole(max_parents, "max_parents"),
-        _whole(tabu, "tabu"),
-        _whole(max_tabu, "max_tabu"),
-        _whole(restarts, "restarts"),
-        _whole(perturb, "perturb"),
-        _whole(seed, "seed"),
+        _whole(max_parents, "max_parents", 0, 1024),
+        _whole(tabu, "tabu", 1, 100_000),
+        _whole(max_tabu, "max_tabu", 0, 100_000),
+        _whole(restarts, "restarts", 0, 100_000),
+        _whole(perturb, "perturb", 1, 100_000),
+        _seed(seed),
         [] if start is None or isinstance(start, str) else
         list(start.edges if isinstance(start, Network) else _edge_pairs(start, "start")),
         _start_from_pc(start),
@@ -763,7 +770,7 @@ def score(network, data, score="bic", *, iss=1.0, by_node=False, threads=0, miss
     if missing_names:
         raise Error(f"data: there is no column '{missing_names[0]}' (the network's variables: {', '.join(names)})")
     total, nodes = _core.score(
-        handle, _frame.columns_of(data, names), _text(score, "score"), _real(iss, "iss"), _whole(threads, "threads")
+        handle, _frame.columns_of(data, names), _text(score, "score"), _real(iss, "iss"), _threads(threads)
     )
     return dict(zip(names, nodes)) if by_node else total
 
@@ -785,7 +792,7 @@ def discretize(data, bins=5, columns=None, *, method="quantile", edges=None, mis
     data = _frame.with_missing(data, convert, missing)
     specs = [_frame.numeric_column(name, data[name]) for name in names if name in convert]
     binned, fitted = _core.discretize(
-        specs, names, _whole(bins, "bins", 1), wanted, _text(method, "method"), saved, saved_file
+        specs, names, _whole(bins, "bins", 1, 10_000), wanted, _text(method, "method"), saved, saved_file
     )
     result = data.copy()
     for name, kind, array, labels in binned:
@@ -812,10 +819,10 @@ def simulate(task, rows, seed=0, backend="analytic", variant="sim", *, threads=0
     columns = _core.simulate(
         _text(task, "task"),
         _whole(rows, "rows"),
-        _whole(seed, "seed"),
+        _seed(seed),
         _text(backend, "backend"),
         _text(variant, "variant"),
-        _whole(threads, "threads"),
+        _threads(threads),
         _tasks_folder(tasks_dir),
     )
     return _frame.frame_of(columns)
@@ -828,10 +835,10 @@ def experiment(scenario, reps=None, seed=1, backend="analytic", *, threads=0, di
     The protocol's notes are in `.attrs["notes"]`."""
     columns, notes = _core.experiment(
         _text(scenario, "scenario"),
-        0 if reps is None else _whole(reps, "reps"),
-        _whole(seed, "seed"),
+        0 if reps is None else _whole(reps, "reps", 1, 1000),  # None: the scenario's own
+        _seed(seed),
         _text(backend, "backend"),
-        _whole(threads, "threads"),
+        _threads(threads),
         _text(distance, "distance"),
         _flag(auto, "auto"),
         _tasks_folder(tasks_dir),

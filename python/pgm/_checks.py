@@ -34,13 +34,31 @@ def _path(value, what):
     return os.fspath(value)
 
 
-def _whole(value, what, least=0):
-    """An int (or NumPy integer) of at least `least`; bools and floats are refused."""
+UINT64_MAX = 2**64 - 1
+THREADS_MAX = 1024  # the program's --threads bound
+
+
+def _whole(value, what, least=0, most=None):
+    """An int (or NumPy integer) of at least `least` and, when given, at most `most` (the bound of
+    the program's option of the same name, checked here before C++ could wrap, overflow or run
+    for hours); bools and floats are refused."""
     if isinstance(value, bool) or not isinstance(value, numbers.Integral):
         raise TypeError(f"{what} must be a whole number, got {value!r}")
+    if most is not None and not least <= value <= most:
+        shown = "2**64 - 1 (18446744073709551615)" if most == UINT64_MAX else most
+        raise Error(f"{what} must be a whole number from {least} to {shown}, got {value}")
     if value < least:
         raise Error(f"{what} must be a whole number of at least {least}, got {value}")
     return int(value)
+
+
+def _seed(value, what="seed"):
+    """A seed: any unsigned 64-bit number, as the program's --seed."""
+    return _whole(value, what, 0, UINT64_MAX)
+
+
+def _threads(value, what="threads"):
+    return _whole(value, what, 0, THREADS_MAX)
 
 
 def _real(value, what):
@@ -55,8 +73,9 @@ def _flag(value, what):
     return bool(value)
 
 
-def _names(value, what):
-    """A name or a list of names, at least one."""
+def _names(value, what, allow_empty=False):
+    """A name or a list of names, at least one unless `allow_empty` (where no variable is a
+    question of its own: d-separation given nothing, no variable marked)."""
     if isinstance(value, str):
         return [value]
     if isinstance(value, Mapping) or not hasattr(value, "__iter__"):
@@ -65,7 +84,7 @@ def _names(value, what):
     for name in names:
         if not isinstance(name, str):
             raise TypeError(f"{what} must be names (strings), got {name!r}")
-    if not names:
+    if not names and not allow_empty:
         raise Error(f"{what} is empty: name at least one variable")
     return names
 
@@ -112,3 +131,58 @@ def _likelihoods(value, what="soft_evidence"):
             raise TypeError(f"{what}: the weights of '{name}' must be a list of numbers, one per state")
         result[name] = [_real(w, f"{what}['{name}']") for w in weights]
     return result
+
+
+def _edit_distance(a, b):
+    """Single-character insertions, deletions, substitutions and swaps of neighbours that turn
+    `a` into `b` (optimal string alignment), as the library's text::edit_distance."""
+    d = [[j for j in range(len(b) + 1)]] + [[i] + [0] * len(b) for i in range(1, len(a) + 1)]
+    for i in range(1, len(a) + 1):
+        for j in range(1, len(b) + 1):
+            d[i][j] = min(d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1]))
+            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                d[i][j] = min(d[i][j], d[i - 2][j - 2] + 1)
+    return d[len(a)][len(b)]
+
+
+def _did_you_mean(word, known):
+    """The library's "; did you mean 'x'?" for the one of `known` that `word` was most likely
+    meant to be (text::closest_name: within two edits, and fewer than half its length), else ""."""
+    best, best_distance = None, 3
+    for name in known:
+        distance = _edit_distance(word, name)
+        if distance < best_distance and 2 * distance < max(len(name), 2):
+            best, best_distance = name, distance
+    return "" if best is None else f"; did you mean '{best}'?"
+
+
+def _choice(value, what, known, kind):
+    """`value` if it is one of `known`, else the library's error for an unknown name
+    (pgm::unknown_name): "unknown {kind} 'x'; did you mean 'y'? (known: ...)"."""
+    if not isinstance(value, str):
+        raise TypeError(f"{what} must be one of {', '.join(known)}, got {type(value).__name__}")
+    if value not in known:
+        raise Error(f"unknown {kind} '{value}'{_did_you_mean(value, known)} (known: {', '.join(known)})")
+    return value
+
+
+def _axes(ax):
+    """A matplotlib Axes to draw into, or None for a new figure."""
+    if ax is None:
+        return None
+    from matplotlib.axes import Axes
+
+    if not isinstance(ax, Axes):
+        raise TypeError(f"ax must be a matplotlib Axes (e.g. from plt.subplots()) or None, got {type(ax).__name__}")
+    return ax
+
+
+def _shared(named):
+    """The first variable in two of the (argument, names) pairs, with both arguments, else None."""
+    seen = {}
+    for what, names in named:
+        for name in names:
+            first = seen.setdefault(name, what)
+            if first != what:
+                return name, first, what
+    return None

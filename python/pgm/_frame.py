@@ -16,6 +16,7 @@ import numpy as np
 import pandas as pd
 
 from . import _core
+from ._checks import _choice
 
 
 def _label(value):
@@ -106,8 +107,7 @@ def with_missing(data, names, missing):
     over the rows where its variables are present). NaN, None and pd.NA are missing."""
     from . import Error  # the package's error type, from pgm._core
 
-    if missing not in _MISSING:
-        raise Error(f"missing must be one of {', '.join(_MISSING)}, got {missing!r}")
+    _choice(missing, "missing", _MISSING, "missing-value policy")
     if missing == "available":
         return data
     wanted = set(names)

@@ -8,7 +8,7 @@ import math
 import pandas as pd
 
 from . import _core
-from ._checks import _evidence, _likelihoods, _names, _network, _whole
+from ._checks import _evidence, _likelihoods, _names, _network, _seed, _threads, _whole
 
 try:  # pandas 1.x: a Series over a kept index without re-checking it (5 µs instead of 13 µs)
     _FAST_SERIES = int(pd.__version__.split(".")[0]) < 2
@@ -49,10 +49,10 @@ class InferenceEngine:
         self._engine = _core.Engine(
             network._net,
             engine,
-            _whole(samples, "samples", 1),
-            _whole(seed, "seed"),
-            _whole(burn_in, "burn_in"),
-            _whole(threads, "threads"),
+            _whole(samples, "samples", 1, 1_000_000_000),  # pgm query --samples' bound: more would not fit in memory
+            _seed(seed),
+            _whole(burn_in, "burn_in", 0, 100_000_000),
+            _threads(threads),
         )
         self._hard = {}
         self._soft = {}

@@ -10,15 +10,13 @@ import numpy as np
 import pandas as pd
 
 from . import _core
-from ._checks import _evidence
+from ._checks import _choice, _evidence, _whole
 
 SOLVE_ENGINES = ("auto", "jt", "ve", "bp", "gibbs")
 
 
 def _engine_name(engine):
-    if not isinstance(engine, str) or engine not in SOLVE_ENGINES:
-        raise _core.Error(f"unknown engine {engine!r} (known: {', '.join(SOLVE_ENGINES)})")
-    return engine
+    return _choice(engine, "engine", SOLVE_ENGINES, "engine")
 
 
 class MarkovNetwork:
@@ -66,7 +64,9 @@ class MarkovNetwork:
         self._model.write(str(path))
 
     def _solve(self, task, evidence, engine):
-        return self._model.solve(task, _evidence(evidence), _engine_name(engine), int(self.memory_limit))
+        # MiB, bounded as pgm solve --memory-limit: C++ shifts it into bytes, which must not overflow.
+        memory_limit = _whole(self.memory_limit, "memory_limit", 1, 1 << 24)
+        return self._model.solve(task, _evidence(evidence), _engine_name(engine), memory_limit)
 
     def log_partition_function(self, evidence=None, engine="auto"):
         """ln Z with the evidence {variable: state} entered (−inf when it is impossible)."""

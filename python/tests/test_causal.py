@@ -72,3 +72,43 @@ def test_check_agrees_with_the_program(tmp_path, program):
     first = lines[0].split(",")
     assert (first[0], first[1]) == (table["x"][0], table["y"][0])
     assert float(first[5]) == table["p_value"][0]
+
+
+def test_d_separation_given_nothing_is_marginal_independence(confounded, tmp_path, program):
+    # Issue 49: given=[] was refused ("given is empty"); it asks whether x and y are independent,
+    # as `pgm dsep` without --given answers.
+    cut = pgm.intervene(confounded, {"X": 0})
+    cut.write(tmp_path / "cut.json")
+    for x, y, separated in (("X", "C", True), ("C", "Y", False)):
+        printed = program.run("dsep", "--model", tmp_path / "cut.json", x, y).stdout.strip()
+        assert printed == f"{{{x}}} and {{{y}}} are {'d-separated' if separated else 'd-connected'} given {{}}"
+        assert pgm.d_separated(cut, x, y, []) is separated
+        assert pgm.d_separated(cut, x, y, ()) is separated
+
+
+def test_a_variable_in_two_arguments_is_named_with_both(confounded):
+    # Issue 49: named with the arguments it is in (the library names it with the sets: pgm dsep).
+    with pytest.raises(pgm.Error, match=r"^'X' is both the treatment \(x\) and the outcome \(y\)$"):
+        pgm.backdoor_sets(confounded, "X", "X")
+    with pytest.raises(pgm.Error, match=r"^'C' is both the treatment \(x\) and the outcome \(y\)$"):
+        pgm.backdoor_sets(confounded, ["X", "C"], ["Y", "C"])
+    with pytest.raises(pgm.Error, match="^'X' is in both x and y: d-separation needs disjoint sets$"):
+        pgm.d_separated(confounded, "X", "X")
+    with pytest.raises(pgm.Error, match="^'C' is in both x and given: d-separation needs disjoint sets$"):
+        pgm.d_separated(confounded, ["X", "C"], "Y", "C")
+    with pytest.raises(pgm.Error, match="^'C' is in both y and given: d-separation needs disjoint sets$"):
+        pgm.d_separated(confounded, "X", ["Y", "C"], ["C"])
+
+
+def test_check_refuses_an_unknown_test_in_the_librarys_words(confounded):
+    # Issue 49: check's test had no "did you mean"; its message is now learn_structure's (the
+    # library's pgm::unknown_name), word for word, suggestion included.
+    frame = pd.DataFrame({"C": [0, 1, 1, 0], "X": [1, 0, 1, 1], "Y": [0, 0, 1, 1]})
+    with pytest.raises(pgm.Error, match=r"^unknown independence test 'chi'; did you mean 'chi2'\? \(known: chi2, g2\)$"):
+        pgm.check(confounded, frame, test="chi")
+    for word in ("chi", "ch2", "hci2", "chi22", "g", "G2", "g3", "x2", "pearson"):
+        with pytest.raises(pgm.Error) as by_library:
+            pgm.learn_structure(frame, test=word)
+        with pytest.raises(pgm.Error) as ours:
+            pgm.check(confounded, frame, test=word)
+        assert str(ours.value) == str(by_library.value), word

@@ -123,7 +123,7 @@ def test_missing_values_follow_the_missing_keyword_as_the_cli_does(program, tmp_
     frame = incomplete_frame()
     with pytest.raises(pgm.Error, match=r"column 'b': the value at position 1 is missing"):
         pgm.fit(frame, "b->a,a->c")
-    with pytest.raises(pgm.Error, match=r"missing must be one of error, drop, available"):
+    with pytest.raises(pgm.Error, match=r"unknown missing-value policy 'pairwise' \(known: error, drop, available, em\)"):
         pgm.fit(frame, "b->a,a->c", missing="pairwise")
     frame.to_csv(tmp_path / "m.csv", index=False)  # missing values become empty fields
     for missing in ("drop", "available"):
@@ -206,3 +206,17 @@ def test_integer_columns_cross_without_a_copy_per_row():
     _, peak = tracemalloc.get_traced_memory()
     tracemalloc.stop()
     assert peak < 1_000_000  # Python allocations only; the C++ side does not count
+
+
+def test_missing_suggests_the_rule_meant_in_every_function():
+    # Issue 49: missing= had no "did you mean"; it has the library's message for an unknown name.
+    frame = pd.DataFrame({"x": [0.5, 1.5, 2.5, 3.5], "y": [0, 1, 0, 1]})
+    net = pgm.fit(frame.astype({"x": int}), "x->y")
+    message = r"^unknown missing-value policy 'avialable'; did you mean 'available'\? \(known: error, drop, available\)$"
+    for call in (
+        lambda: pgm.discretize(frame, bins=2, missing="avialable"),
+        lambda: pgm.learn_structure(frame[["y"]], missing="avialable"),
+        lambda: pgm.score(net, frame.astype({"x": int}), missing="avialable"),
+    ):
+        with pytest.raises(pgm.Error, match=message):
+            call()

@@ -265,7 +265,7 @@ def test_em_arguments_are_checked():
     edges = "H->X1,H->X2,H->X3"
     with pytest.raises(pgm.Error, match='latent applies with missing="em"'):
         pgm.fit(frame.dropna(), edges, latent={"H": 2})
-    with pytest.raises(pgm.Error, match="missing must be one of error, drop, available, em"):
+    with pytest.raises(pgm.Error, match=r"unknown missing-value policy 'EM' \(known: error, drop, available, em\)"):
         pgm.fit(frame, edges, missing="EM")
     with pytest.raises(pgm.Error, match="'Z' is in no edge"):
         pgm.fit(frame, edges, missing="em", latent={"H": 2, "Z": 2})
@@ -273,7 +273,7 @@ def test_em_arguments_are_checked():
         pgm.fit(frame, edges, missing="em", latent={"H": 2, "X1": 2})
     with pytest.raises(TypeError, match="latent\\['H'\\] must be a number of states"):
         pgm.fit(frame, edges, missing="em", latent={"H": 2.5})
-    with pytest.raises(pgm.Error, match="restarts must be a whole number of at least 1"):
+    with pytest.raises(pgm.Error, match="restarts must be a whole number from 1 to 1000, got 0"):
         pgm.fit(frame, edges, missing="em", latent={"H": 2}, restarts=0)
     with pytest.raises(pgm.Error, match="tolerance must be a number >= 0"):
         pgm.fit(frame, edges, missing="em", latent={"H": 2}, tolerance=float("nan"))
@@ -405,3 +405,18 @@ def test_a_large_table_from_few_rows_is_sparse_with_the_dense_values():
     assert list(table.loc[index, ["0", "1", "2"]].to_numpy()) == list(mle)
     unseen = table[["0", "1", "2"]].to_numpy().max(axis=1) == 1 / 3
     assert unseen.sum() >= 2**20 - 3000
+
+
+def test_missing_and_w_prior_suggest_the_choice_meant():
+    # Issue 49: missing="dorp" listed the choices without the "did you mean" of every other choice.
+    frame = pd.DataFrame({"a": [0, 1, 1], "b": [1, 0, 1]})
+    known = r"\(known: error, drop, available, em\)"
+    with pytest.raises(pgm.Error, match=rf"^unknown missing-value policy 'dorp'; did you mean 'drop'\? {known}$"):
+        pgm.fit(frame, "a->b", missing="dorp")
+    with pytest.raises(pgm.Error, match=r"unknown missing-value policy 'avalable'; did you mean 'available'\?"):
+        pgm.fit(frame, "a->b", missing="avalable")
+    with pytest.raises(TypeError, match="^missing must be one of error, drop, available, em, got NoneType$"):
+        pgm.fit(frame, "a->b", missing=None)
+    prior = pgm.fit(frame, "a->b")
+    with pytest.raises(pgm.Error, match=r"^w_prior must be a number >= 0 or 'auto', got 'atuo'; did you mean 'auto'\?$"):
+        pgm.fit(frame, "a->b", prior_model=prior, map="a=a,b=b", w_prior="atuo")

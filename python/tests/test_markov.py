@@ -120,3 +120,23 @@ def test_bad_input_is_an_error_naming_it(tmp_path):
     (tmp_path / "bad.uai").write_text("MARKOV\n1\n2\n1\n1 0\n3\n1 2 3\n")
     with pytest.raises(pgm.Error, match=r"bad.uai:6:1: factor 0 has 2 entries"):
         pgm.read_network(tmp_path / "bad.uai")
+
+
+def test_an_unknown_engine_is_met_with_the_one_meant():
+    # Issue 49: the engine had no "did you mean" (the library's choices all have one).
+    known = r"\(known: auto, jt, ve, bp, gibbs\)"
+    with pytest.raises(pgm.Error, match=rf"^unknown engine 'gibs'; did you mean 'gibbs'\? {known}$"):
+        chain().marginals(engine="gibs")
+    with pytest.raises(TypeError, match="^engine must be one of auto, jt, ve, bp, gibbs, got int$"):
+        chain().marginals(engine=1)
+
+
+def test_memory_limit_is_bounded_as_the_programs():
+    # Issue 49: a negative limit failed in pybind11's conversion, a huge one overflowed C++'s MiB-to-bytes shift.
+    model = chain()
+    for limit in (0, -1, 2**44):
+        model.memory_limit = limit
+        with pytest.raises(pgm.Error, match=f"^memory_limit must be a whole number from 1 to 16777216, got {limit}$"):
+            model.log_partition_function()
+    model.memory_limit = 1 << 24
+    assert model.log_partition_function() == pytest.approx(math.log(44))

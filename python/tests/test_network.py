@@ -172,3 +172,32 @@ def test_a_network_shows_itself_as_a_table_in_a_notebook():
     assert html.startswith("<p><b>pgm.Network</b>: 3 variables, 2 edges, 13 free parameters; it carries its counts")
     assert "<td><b>onTop2</b></td><td>0, 1</td><td>xOff2, yOff2</td><td style='text-align:right'>18</td>" in html
     assert "&lt;b&gt;" in html and "<b>b>" not in html  # state names are escaped
+
+
+def test_plot_table_refuses_an_ax_that_is_no_axes():
+    # Issue 49: ax="the axes" ended in an AttributeError from deep in the drawing.
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from matplotlib.figure import Figure
+
+    net = pgm.fit(pd.DataFrame({"x": [0, 1, 1, 0], "y": [1, 1, 0, 0], "ok": [1, 0, 1, 1]}), "x->ok,y->ok")
+    expected = r"^ax must be a matplotlib Axes \(e.g. from plt.subplots\(\)\) or None, got "
+    for ax, kind in (("the axes", "str"), (Figure(), "Figure"), (3, "int")):
+        with pytest.raises(TypeError, match=expected + kind + "$"):
+            net.plot_table("ok", "x", "y", average=True, ax=ax)
+    axes = Figure().add_subplot()
+    assert net.plot_table("ok", "x", "y", average=True, ax=axes) is axes.figure
+
+
+def test_empty_marks_mark_no_variable(tmp_path):
+    # Issue 49: success=[] and controllable=[] were refused as empty; they mark no variable.
+    frame = pd.DataFrame({"x": [0, 1, 1, 0], "ok": [1, 0, 1, 1]})
+    pgm.fit(frame, "x->ok").write(tmp_path / "m.json")
+    text = (tmp_path / "m.json").read_text()
+    (tmp_path / "m.json").write_text(text.replace('"format"', '"metadata": {"success": "ok=1"}, "format"', 1))
+    net = pgm.read_network(tmp_path / "m.json")
+    assert "doubleoctagon" in net.to_dot()  # the success variable the model names
+    assert "doubleoctagon" not in net.to_dot(success=[])
+    assert net.to_dot(success=[]) == net.to_dot(success=[], controllable=())
+    assert net.to_dot(controllable=[]) == net.to_dot()

@@ -95,7 +95,9 @@ void add_check_command(CLI::App& app) {
   cmd->add_option("--format", args->format, "Output: text or csv (x,y,given,statistic,df,p_value,rejected)")
       ->check(CLI::IsMember({"text", "csv"}))
       ->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Threads (0: every core); the result is the same")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Threads (0: every core); the result is the same")
+      ->check(whole_number(0, 1024))
+      ->capture_default_str();
   cmd->add_option("--out", args->out, "Write the result to this file instead of standard output");
   add_missing_options(*cmd, args->missing);
   cmd->callback([args] { run_check(*args); });

@@ -226,7 +226,9 @@ void add_fit_command(CLI::App& app) {
                   "With --missing em and --latent: random starts of the latent tables; the best is kept")
       ->check(whole_number(1, 1000))
       ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "With --missing em: seed of the random starts")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "With --missing em: seed of the random starts")
+      ->check(whole_number(0, UINT64_MAX))
+      ->capture_default_str();
   cmd->add_option("--max-iterations", args->max_iterations, "With --missing em: the most M-steps per start")
       ->check(whole_number(0, 1000000))
       ->capture_default_str();

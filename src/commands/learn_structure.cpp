@@ -301,6 +301,7 @@ void add_learn_structure_command(CLI::App& app) {
       ->check(whole_number(1, 100000))
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Seed of the restarts' perturbations and of the bootstrap resamples")
+      ->check(whole_number(0, UINT64_MAX))
       ->capture_default_str();
   cmd->add_option("--bootstrap", args->bootstrap,
                   "Learn on N bootstrap resamples (seeded by --seed, in parallel): print each arc's strength and "
@@ -317,8 +318,8 @@ void add_learn_structure_command(CLI::App& app) {
   cmd->add_option("--map", args->map,
                   "Correspondence of this data's variables (left) to the prior's (right), as pgm fit's: "
                   "\"onTop2=onTop1,xOff2~xOff1\"; variables with equal names correspond without an entry");
-  cmd->add_option("--prior-weight", args->prior_weight, "Score bonus per favoured edge in the network, >= 0")
-      ->check(non_negative_number())
+  cmd->add_option("--prior-weight", args->prior_weight, "Score bonus per favoured edge in the network, 0 to 1e12")
+      ->check(number_between(0.0, max_favour_weight, false, false))
       ->capture_default_str();
   cmd->add_option("--start", args->start,
                   "Start hc, tabu or mmhc from this network's structure (" + network_file_kinds() +

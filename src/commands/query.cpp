@@ -192,12 +192,17 @@ void add_query_command(CLI::App& app) {
       ->check(CLI::IsMember(names))
       ->capture_default_str();
   cmd->add_option("--samples", args->samples, "Samples for lw and gibbs")
-      ->check(CLI::Range(std::size_t{1}, std::size_t{1'000'000'000}))
+      ->check(whole_number(1, 1'000'000'000))
       ->capture_default_str();
   cmd->add_option("--seed", args->seed, "Seed of lw and gibbs: the same numbers for a seed, whatever the threads")
+      ->check(whole_number(0, UINT64_MAX))
       ->capture_default_str();
-  cmd->add_option("--burn-in", args->burn_in, "Sweeps each Gibbs chain discards first")->capture_default_str();
-  cmd->add_option("--threads", args->threads, "Threads for sampling (0: every core)")->capture_default_str();
+  cmd->add_option("--burn-in", args->burn_in, "Sweeps each Gibbs chain discards first")
+      ->check(whole_number(0, 100'000'000))
+      ->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Threads for sampling (0: every core)")
+      ->check(whole_number(0, 1024))
+      ->capture_default_str();
   cmd->add_option("--format", args->format, "Output format: csv or json")
       ->check(CLI::IsMember(known_posterior_formats()))
       ->capture_default_str();

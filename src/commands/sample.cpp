@@ -40,7 +40,9 @@ void add_sample_command(CLI::App& app) {
   cmd->add_option("--rows", args->rows, "Number of rows (held in memory until written, 4 bytes a cell)")
       ->check(whole_number(1, 10'000'000))
       ->required();
-  cmd->add_option("--seed", args->seed, "Random seed; the same seed gives the same rows")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Random seed; the same seed gives the same rows")
+      ->check(whole_number(0, UINT64_MAX))
+      ->capture_default_str();
   cmd->add_option("--out", args->out, "Output CSV file (written atomically)")->required();
   cmd->callback([args] { run_sample(*args); });
 }

@@ -37,7 +37,9 @@ TEST_F(causal_cli_test, dsep_answers_both_ways) {
   const auto blocked = run("dsep --model " + alarm() + " HISTORY CVP --given LVFAILURE");
   EXPECT_EQ(blocked.out, "{HISTORY} and {CVP} are d-separated given {LVFAILURE}\n");
   expect_failure("dsep --model " + alarm() + " HISTORY CVPP", "unknown variable 'CVPP'");
-  expect_failure("dsep --model " + alarm() + " HISTORY HISTORY", "disjoint");
+  expect_failure("dsep --model " + alarm() + " HISTORY HISTORY", "disjoint sets: 'HISTORY' is in both X and Y");
+  expect_failure("dsep --model " + alarm() + " HISTORY CVP --given CVP",
+                 "disjoint sets: 'CVP' is in both Y and the conditioning set");
 }
 
 TEST_F(causal_cli_test, check_passes_data_of_the_network_and_rejects_a_wrong_structure) {

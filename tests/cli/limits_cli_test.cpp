@@ -13,6 +13,7 @@ namespace pgm::limits_cli_tests {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 using limits_cli_test = pgm::testing::program_test;
 
@@ -126,6 +127,46 @@ probability ( a ) { table 0.2, 0.8; }
                  "got '-0'",
                  path("s.csv"));
   expect_failure(simulate + "0x10", "got '0x10' (hexadecimal is not accepted", path("s.csv"));
+}
+
+// Issue #49: counts and seeds that would wrap, and numbers past what a computation can hold, are
+// refused naming the option and its range, or answered.
+TEST_F(limits_cli_test, counts_and_seeds_do_not_wrap_and_extreme_numbers_are_answered_or_refused) {
+  const auto model = file("m.bif", R"(network n { }
+variable a { type discrete [ 2 ] { 0, 1 }; }
+variable b { type discrete [ 2 ] { 0, 1 }; }
+probability ( a ) { table 0.2, 0.8; }
+probability ( b | a ) { (0) 0.3, 0.7; (1) 0.6, 0.4; }
+)");
+  const auto data = file("d.csv", "a,b\n0,1\n1,0\n0,0\n1,1\n1,1\n");
+  const auto query = "query --model " + model.string() + " --query a --evidence b=1 --engine gibbs ";
+  for (const char* option : {"--seed", "--burn-in", "--samples", "--threads"}) {
+    const auto wrapped = run(query + option + " -1");
+    EXPECT_EQ(wrapped.code, 2) << option;
+    EXPECT_THAT(wrapped.err, HasSubstr(std::string(option) + ": expected a whole number from")) << option;
+  }
+  const auto beyond = run(query + "--seed 18446744073709551616");
+  EXPECT_EQ(beyond.code, 2);
+  EXPECT_THAT(beyond.err, HasSubstr("expected a whole number from 0 to 18446744073709551615"));
+  const auto largest = run(query + "--seed 18446744073709551615 --samples 100");
+  EXPECT_EQ(largest.code, 0) << largest.err;
+  for (const auto& command : {"sample --model " + model.string() + " --rows 5 --out " + path("r.csv").string(),
+                              "learn-structure --data " + data.string() + " --out " + path("s.json").string()}) {
+    const auto r = run(command + " --seed -1");
+    EXPECT_EQ(r.code, 2) << command;
+    EXPECT_THAT(r.err, HasSubstr("--seed: expected a whole number from 0 to 18446744073709551615")) << command;
+  }
+  // BDeu with an imaginary sample size near a double's largest: its limit, the uniform table's
+  // likelihood, 5 ln(1/2) + 5 ln(1/2) for the empty network.
+  const auto score = run("score --model " + model.string() + " --data " + data.string() + " --score bdeu --iss 1e306");
+  ASSERT_EQ(score.code, 0) << score.err;
+  EXPECT_THAT(score.out, Not(HasSubstr("nan")));
+  EXPECT_THAT(score.out, Not(HasSubstr("inf")));
+  const auto weight = run("learn-structure --data " + data.string() + " --out " + path("w.json").string() +
+                          " --algorithm hc --prior " + model.string() + " --prior-weight 1e308");
+  EXPECT_EQ(weight.code, 2);
+  EXPECT_THAT(weight.err, HasSubstr("--prior-weight: expected a number in [0, 1e+12], got 1e308"));
+  EXPECT_FALSE(std::filesystem::exists(path("w.json")));
 }
 
 // A model path that is a device without end is refused at pgm's limit of a file read whole,

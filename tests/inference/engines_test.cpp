@@ -258,6 +258,41 @@ TEST(engines_test, likelihood_weighting_estimates_the_probability_of_evidence) {
   EXPECT_NEAR(std::exp(lw.log_probability_of_evidence()), exact, 0.02 * exact);
 }
 
+TEST(engines_test, the_samplers_take_soft_evidence_on_any_scale) {
+  // Issue #49: a likelihood of 1e308 made the weights overflow (NaN), one of 1e-320 underflow.
+  const auto net = testing::random_network(22, {.nodes = 6, .max_parents = 2});
+  const variable_id q[] = {variable_id(0)};
+  auto with_scale = [&](double scale) {
+    evidence_set observed;
+    observed.soft.push_back({variable_id(2), {0.25 * scale, 1.0 * scale}});
+    observed.soft.push_back({variable_id(4), {1.0 * scale, 0.5 * scale}});
+    return observed;
+  };
+  ASSERT_EQ(net.variables()[2].cardinality(), 2U);
+  ASSERT_EQ(net.variables()[4].cardinality(), 2U);
+  variable_elimination exact(net);
+  exact.set_evidence(with_scale(1.0));
+  const auto truth = exact.joint(q);
+  for (const double scale : {1.0, 1e308, 1e-160, 1e-320}) {
+    SCOPED_TRACE(scale);
+    likelihood_weighting lw(net, {.samples = 20'000, .seed = 3});
+    lw.set_evidence(with_scale(scale));
+    const auto p = lw.joint(q);
+    for (std::size_t s = 0; s < p.table.values().size(); ++s) {
+      EXPECT_NEAR(p.table.values()[s], truth.table.values()[s], 0.03);
+      EXPECT_TRUE(std::isfinite(p.standard_errors[s]) && p.standard_errors[s] > 0.0);
+    }
+    // ln P(evidence) on the user's scale: two likelihoods, each scaled.
+    EXPECT_NEAR(p.log_evidence_probability, truth.log_evidence_probability + 2 * std::log(scale), 0.05);
+    EXPECT_NEAR(lw.log_probability_of_evidence(), truth.log_evidence_probability + 2 * std::log(scale), 0.05);
+    gibbs_sampling gibbs(net, {.samples = 20'000, .seed = 3});
+    gibbs.set_evidence(with_scale(scale));
+    const auto g = gibbs.joint(q);
+    for (std::size_t s = 0; s < g.table.values().size(); ++s)
+      EXPECT_NEAR(g.table.values()[s], truth.table.values()[s], 0.03);
+  }
+}
+
 TEST(engines_test, junction_trees_have_the_running_intersection_property) {
   auto check = [](const bayesian_network& net, const std::string& what) {
     const junction_tree tree(net);

@@ -284,7 +284,11 @@ TEST(structure_prior_test, mapped_edges_and_their_bonus) {
   EXPECT_NEAR(mild.score - mild.prior_bonus, full_score(data, mild.edges, {}), 1e-9 * std::abs(mild.score));
   favoured.favour_weight = -1;
   EXPECT_THAT([&] { static_cast<void>(hill_climb(columns_of(data), favoured)); },
-              ThrowsMessage<model_error>(HasSubstr("weight must be a finite number >= 0, got -1")));
+              ThrowsMessage<model_error>(HasSubstr("weight must be a number from 0 to 1e+12, got -1")));
+  // Past the bound a few edges' bonuses would overflow the score (issue #49: "bic = -nan").
+  favoured.favour_weight = 1e308;
+  EXPECT_THAT([&] { static_cast<void>(hill_climb(columns_of(data), favoured)); },
+              ThrowsMessage<model_error>(HasSubstr("got 1e+308")));
 }
 
 TEST(learn_structure_test, one_entry_point_for_every_algorithm) {

@@ -67,6 +67,29 @@ TEST(score_test, names_and_bad_options) {
       ThrowsMessage<model_error>(HasSubstr("AIC penalty k must be")));
 }
 
+TEST(score_test, an_imaginary_sample_size_beyond_a_doubles_lgamma_has_its_limit) {
+  const auto data = small();
+  // As iss grows the Dirichlet prior becomes the uniform table: BDeu tends to N ln(1/r) = 7 ln(1/2).
+  for (const double iss : {1e8, 1e12, 1e100, 1e306, 1.7e308}) {
+    const double score = score_of(data, {score_type::bdeu, iss});
+    ASSERT_TRUE(std::isfinite(score)) << iss;
+    EXPECT_NEAR(score, 7 * std::log(0.5), 1e-6) << iss;
+  }
+  // Stirling's side and lgamma's side of the switch (a = 10⁷) agree: ln Γ(a + n) − ln Γ(a).
+  for (const double n : {0.0, 1.0, 7.0, 1000.0, 1e6}) {
+    const double below = detail::log_gamma_ratio(9999999.5)(n);
+    const double above = detail::log_gamma_ratio(1e7)(n);
+    // d/da of the ratio is about n/a: half a unit of a moves it by n/(2·10⁷).
+    EXPECT_NEAR(above - below, n / 2e7, 1e-9 * std::max(1.0, std::abs(above))) << n;
+    // And Σ ln(a + k) for a whole n, summed directly.
+    if (n <= 1000.0) {
+      double direct = 0.0;
+      for (double k = 0; k < n; ++k) direct += std::log(1e7 + k);
+      EXPECT_NEAR(above, direct, 1e-12 * std::max(1.0, direct)) << n;
+    }
+  }
+}
+
 // Independent formulations over the rows themselves: the log-likelihood as the sum of each
 // row's log p(x | u) at the MLE, the Dirichlet scores by the chain rule as each row's
 // predictive probability given the rows before it.

@@ -66,11 +66,15 @@ class sampler_tables {
 };
 
 /// The evidence as the samplers use it: per node, the fixed state (or none), whether an
-/// intervention fixed it (then its table is out of the model: no weight), and the likelihood.
+/// intervention fixed it (then its table is out of the model: no weight), and the likelihood,
+/// divided by its largest weight so that a sample's weight stays within a double whatever the
+/// scale the user gave (10³⁰⁸ or 10⁻³²⁰: only ratios matter to a posterior); the logarithms of
+/// those largest weights, summed, put P(evidence) back on the user's scale.
 struct sampler_evidence {
   std::vector<std::int64_t> fixed;
   std::vector<char> intervened;
   std::vector<std::vector<double>> likelihood;
+  double log_likelihood_scale = 0.0;
 
   PGM_DECL sampler_evidence(std::size_t n, const evidence_set& observed);
 };
@@ -82,6 +86,8 @@ PGM_DECL double draw_weighted(const sampler_tables& tables, std::vector<std::uin
 
 /// Weighted tallies of some outputs (one cell index per output, per sample), summed in order.
 struct weighted_tally {
+  /// sampler_evidence::log_likelihood_scale of the evidence the weights were drawn under.
+  double log_likelihood_scale = 0.0;
   double weight = 0.0;
   double weight_squared = 0.0;
   std::vector<double> weighted;          ///< per cell, Σ w·1[cell]
@@ -131,7 +137,8 @@ class likelihood_weighting {
   /// ln of the estimated P(evidence), the mean weight; −∞ when no sample has any weight.
   [[nodiscard]] double log_probability_of_evidence() {
     const detail::tally_layout layout({}, *network_);
-    return std::log(run(layout, true).weight / static_cast<double>(options_.samples));
+    const auto tally = run(layout, true);
+    return std::log(tally.weight / static_cast<double>(options_.samples)) + tally.log_likelihood_scale;
   }
 
  private:

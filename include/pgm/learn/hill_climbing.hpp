@@ -78,8 +78,13 @@ struct search_options {
   /// A structure prior: each of these edges adds `favour_weight` to the score while it is in the
   /// network (pgm/learn/structure_prior.hpp maps a related task's network to them).
   std::vector<named_edge> favoured;
+  /// From 0 to max_favour_weight.
   double favour_weight = 0.0;
 };
+
+/// The largest structure-prior weight: more outweighs any data's score (a log-likelihood of 10⁹
+/// rows is ~10¹⁰ nats), and bonuses summed over every edge stay far from a double's range.
+inline constexpr double max_favour_weight = 1e12;
 
 struct search_result {
   /// The learned DAG, edges ordered by (parent, child) in column order.

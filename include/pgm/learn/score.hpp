@@ -24,6 +24,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/core/unknown_name.hpp"
 #include "pgm/detail/text.hpp"
+#include "pgm/learn/log_gamma_ratio.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {

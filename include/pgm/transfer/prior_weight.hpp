@@ -21,6 +21,7 @@
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/detail/text.hpp"
+#include "pgm/learn/log_gamma_ratio.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {

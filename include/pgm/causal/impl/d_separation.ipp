@@ -51,12 +51,19 @@ PGM_DECL std::vector<bool> d_connected(const dag& graph, std::span<const variabl
 
 PGM_DECL bool d_separated(const dag& graph, std::span<const variable_id> x, std::span<const variable_id> y,
                           std::span<const variable_id> z) {
-  const auto overlap = [&](std::span<const variable_id> a, std::span<const variable_id> b) {
-    return std::any_of(a.begin(), a.end(), [&](variable_id v) { return std::find(b.begin(), b.end(), v) != b.end(); });
+  // The first variable in two of the sets, named with both.
+  const auto refuse_overlap = [&](std::span<const variable_id> a, const char* a_name, std::span<const variable_id> b,
+                                  const char* b_name) {
+    for (const auto v : a) {
+      if (std::find(b.begin(), b.end(), v) != b.end()) {
+        throw model_error("d-separation needs disjoint sets: '" + graph.name(v) + "' is in both " + a_name + " and " +
+                          b_name);
+      }
+    }
   };
-  if (overlap(x, y) || overlap(x, z) || overlap(y, z)) {
-    throw model_error("d-separation needs disjoint sets: a variable is in two of them");
-  }
+  refuse_overlap(x, "X", y, "Y");
+  refuse_overlap(x, "X", z, "the conditioning set");
+  refuse_overlap(y, "Y", z, "the conditioning set");
   const auto reached = d_connected(graph, x, z);
   return std::none_of(y.begin(), y.end(), [&](variable_id v) { return reached[v.value()]; });
 }

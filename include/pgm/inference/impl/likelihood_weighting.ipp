@@ -45,7 +45,13 @@ PGM_DECL sampler_evidence::sampler_evidence(std::size_t n, const evidence_set& o
     fixed[o.variable.value()] = o.state.value();
     intervened[o.variable.value()] = 1;
   }
-  for (const auto& l : observed.soft) likelihood[l.variable.value()] = l.weights;
+  for (const auto& l : observed.soft) {
+    auto& scaled = likelihood[l.variable.value()];
+    scaled = l.weights;
+    const double largest = *std::max_element(scaled.begin(), scaled.end());
+    for (auto& w : scaled) w /= largest;
+    log_likelihood_scale += std::log(largest);
+  }
 }
 
 PGM_DECL double draw_weighted(const sampler_tables& tables, std::vector<std::uint32_t>& state,
@@ -109,8 +115,8 @@ PGM_DECL posterior tallied_posterior(const bayesian_network& network, std::span<
   }
   result.table = factor(std::vector<variable_id>(group.begin(), group.end()), std::move(cards), std::move(values));
   const double n = static_cast<double>(samples);
-  result.evidence_probability = tally.weight / n;
-  result.log_evidence_probability = std::log(result.evidence_probability);
+  result.log_evidence_probability = std::log(tally.weight / n) + tally.log_likelihood_scale;
+  result.evidence_probability = std::exp(result.log_evidence_probability);
   return result;
 }
 
@@ -167,6 +173,7 @@ PGM_DECL detail::weighted_tally likelihood_weighting::run(const detail::tally_la
   });
   detail::weighted_tally total(layout.cells);
   for (const auto& t : per_block) total += t;
+  total.log_likelihood_scale = observed.log_likelihood_scale;
   if (!(total.weight > 0.0) && !allow_nothing) {
     throw impossible_evidence("none of " + std::to_string(options_.samples) +
                               " samples of likelihood weighting is consistent with the evidence " +

@@ -355,8 +355,9 @@ PGM_DECL search_result hill_climb(std::span<const discrete_column* const> column
 
   detail::search_state state(cache, constraints, options);
   if (!options.favoured.empty()) {
-    if (!(options.favour_weight >= 0.0) || !std::isfinite(options.favour_weight)) {
-      throw model_error("the structure prior's weight must be a finite number >= 0, got " +
+    if (!(options.favour_weight >= 0.0) || !(options.favour_weight <= max_favour_weight)) {
+      throw model_error("the structure prior's weight must be a number from 0 to " +
+                        detail::format_short(max_favour_weight) + ", got " +
                         detail::format_short(options.favour_weight));
     }
     std::vector<double> bonus(n * n, 0.0);

@@ -62,18 +62,17 @@ PGM_DECL double family_loglik(const count_table& counts) {
 }
 
 PGM_DECL double family_dirichlet(const count_table& counts, double alpha) {
-  const double alpha_u = alpha * static_cast<double>(counts.child_cardinality());
-  const double lgamma_alpha = boost::math::lgamma(alpha);
-  const double lgamma_alpha_u = boost::math::lgamma(alpha_u);
+  const detail::log_gamma_ratio of_alpha(alpha);
+  const detail::log_gamma_ratio of_alpha_u(alpha * static_cast<double>(counts.child_cardinality()));
   double total = 0.0;
   for (std::size_t u = 0; u < counts.configurations(); ++u) {
     const auto column = counts.column(config_index(static_cast<config_index::rep>(u)));
     count_table::count_type n_u = 0;
     for (auto m : column) n_u += m;
     if (n_u == 0) continue;  // an unseen configuration contributes lgamma(a_u) - lgamma(a_u) = 0
-    total += lgamma_alpha_u - boost::math::lgamma(alpha_u + static_cast<double>(n_u));
+    total += -of_alpha_u(static_cast<double>(n_u));
     for (auto m : column) {
-      if (m > 0) total += boost::math::lgamma(alpha + static_cast<double>(m)) - lgamma_alpha;
+      if (m > 0) total += of_alpha(static_cast<double>(m));
     }
   }
   return total;

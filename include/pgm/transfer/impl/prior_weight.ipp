@@ -18,10 +18,10 @@ PGM_DECL double log_evidence(const count_table& counts, const cpt<double>& prior
     for (std::size_t x = 0; x < j; ++x) {
       if (m[x] == 0) continue;
       const double alpha = weight * ((1 - floor) * f[x] + uniform);
-      total += boost::math::lgamma(alpha + static_cast<double>(m[x])) - boost::math::lgamma(alpha);
+      total += detail::log_gamma_ratio(alpha)(static_cast<double>(m[x]));
       n += static_cast<double>(m[x]);
     }
-    if (n > 0) total += boost::math::lgamma(weight) - boost::math::lgamma(weight + n);
+    if (n > 0) total += -detail::log_gamma_ratio(weight)(n);
   }
   return total;
 }
