@@ -26,20 +26,6 @@ variable_id id_of(std::size_t i) { return variable_id(static_cast<variable_id::r
 
 std::vector<double> values_of(const posterior& p) { return {p.table.values().begin(), p.table.values().end()}; }
 
-/// Hard evidence on about one variable in four, and soft evidence on one more when `soft`.
-evidence_set some_evidence(const markov_network& model, std::uint64_t seed, std::vector<long>& fixed) {
-  fixed.assign(model.size(), -1);
-  evidence_set observed;
-  std::mt19937_64 engine(seed);
-  for (std::size_t i = 0; i < model.size(); ++i) {
-    if (engine() % 4 != 0) continue;
-    const auto state = engine() % model.variables()[i].cardinality();
-    fixed[i] = static_cast<long>(state);
-    observed.hard.push_back({id_of(i), state_index(static_cast<state_index::rep>(state))});
-  }
-  return observed;
-}
-
 TEST(markov_engines_test, ve_and_jt_equal_brute_force_through_the_registry) {
   std::size_t checked = 0;
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
@@ -49,7 +35,7 @@ TEST(markov_engines_test, ve_and_jt_equal_brute_force_through_the_registry) {
     shape.zero_chance = 0.05;
     const auto model = testing::random_markov_network(seed, shape);
     std::vector<long> fixed;
-    const auto observed = some_evidence(model, seed * 104729, fixed);
+    const auto observed = testing::random_hard_evidence(model, seed * 104729, fixed);
     const auto truth = testing::brute_force(model, fixed);
     if (truth.log_z == -INFINITY) continue;
     const double log_z = testing::brute_force(model, std::vector<long>(model.size(), -1)).log_z;

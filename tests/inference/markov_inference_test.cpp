@@ -23,20 +23,6 @@ namespace markov_inference_test {
 
 using ::testing::HasSubstr;
 
-evidence_set hard_evidence(const markov_network& model, std::uint64_t seed, std::vector<long>& fixed) {
-  fixed.assign(model.size(), -1);
-  evidence_set observed;
-  std::mt19937_64 engine(seed);
-  for (std::size_t i = 0; i < model.size(); ++i) {
-    if (engine() % 4 != 0) continue;
-    const auto state = engine() % model.variables()[i].cardinality();
-    fixed[i] = static_cast<long>(state);
-    observed.hard.push_back(
-        {variable_id(static_cast<variable_id::rep>(i)), state_index(static_cast<state_index::rep>(state))});
-  }
-  return observed;
-}
-
 solve_options with_engine(solve_engine engine) {
   solve_options options;
   options.engine = engine;
@@ -56,7 +42,7 @@ TEST(markov_inference_test, every_task_equals_brute_force_on_random_models) {
     shape.zero_chance = seed % 3 == 0 ? 0.3 : 0.05;
     const auto model = testing::random_markov_network(seed, shape);
     std::vector<long> fixed;
-    const auto observed = hard_evidence(model, seed * 7919, fixed);
+    const auto observed = testing::random_hard_evidence(model, seed * 7919, fixed);
     const auto truth = testing::brute_force(model, fixed);
     for (const auto engine : {solve_engine::jt, solve_engine::ve}) {
       SCOPED_TRACE("seed " + std::to_string(seed) + ", engine " + std::string(to_string(engine)));

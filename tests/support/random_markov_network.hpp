@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "pgm/core/markov_network.hpp"
+#include "pgm/inference/query.hpp"
 
 namespace pgm::testing {
 
@@ -157,6 +158,22 @@ inline double brute_force_query_value(const markov_network& model, const std::ve
                                       const std::vector<std::size_t>& states, std::vector<long> fixed) {
   for (std::size_t k = 0; k < query.size(); ++k) fixed[query[k].value()] = static_cast<long>(states[k]);
   return brute_force(model, fixed).log_z;
+}
+
+/// Hard evidence on about one variable in four, drawn from `seed`; `fixed` receives each
+/// variable's observed state (−1 for none), as brute_force takes it.
+inline evidence_set random_hard_evidence(const markov_network& model, std::uint64_t seed, std::vector<long>& fixed) {
+  fixed.assign(model.size(), -1);
+  evidence_set observed;
+  std::mt19937_64 engine(seed);
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    if (engine() % 4 != 0) continue;
+    const auto state = engine() % model.variables()[i].cardinality();
+    fixed[i] = static_cast<long>(state);
+    observed.hard.push_back(
+        {variable_id(static_cast<variable_id::rep>(i)), state_index(static_cast<state_index::rep>(state))});
+  }
+  return observed;
 }
 
 }  // namespace pgm::testing
