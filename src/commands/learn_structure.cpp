@@ -26,6 +26,11 @@
 namespace pgm::cli {
 namespace {
 
+/// A map entry's prior side must name a variable of the prior model.
+void require_prior_variable(const network_structure& prior, const std::string& name, const std::string& file) {
+  if (!prior.contains(name)) throw error("the map names '" + name + "', which is not a variable of '" + file + "'");
+}
+
 struct learn_structure_arguments {
   std::string data;
   std::string algorithm = "pc";
@@ -172,9 +177,12 @@ void run_learn_structure(const learn_structure_arguments& args) {
   if (data.size() < 2) throw data_error("'" + args.data + "' has fewer than two columns; nothing to learn");
   if (!args.prior_model.empty()) {
     if (choice.algorithm == structure_algorithm::pc) throw error("--prior-model applies to hc, tabu and mmhc, not pc");
-    const auto prior = read_model_file(args.prior_model).structure.edges();
+    const auto prior_structure = read_model_file(args.prior_model).structure;
     const auto map = args.map.empty() ? correspondence{} : parse_correspondence(args.map);
-    search.favoured = mapped_prior_edges(prior, map, data.names());
+    for (const auto& [t, p] : map.transferred) require_prior_variable(prior_structure, p, args.prior_model);
+    for (const auto& [t, p] : map.identical) require_prior_variable(prior_structure, p, args.prior_model);
+    for (const auto& [t, p] : map.related) require_prior_variable(prior_structure, p, args.prior_model);
+    search.favoured = mapped_prior_edges(prior_structure.edges(), map, data.names());
     search.favour_weight = args.prior_weight;
     std::vector<std::string> shown;
     for (const auto& e : search.favoured) shown.push_back(e.from + "->" + e.to);

@@ -169,6 +169,23 @@ probability ( b | a ) { (0) 0.3, 0.7; (1) 0.6, 0.4; }
   EXPECT_FALSE(std::filesystem::exists(path("w.json")));
 }
 
+// Issue #49: a name that stands for nothing is refused, not silently kept.
+TEST_F(limits_cli_test, a_latent_or_mapped_name_that_stands_for_nothing_is_refused) {
+  const auto data = file("d.csv", "a,b\n0,1\n1,0\n0,0\n1,1\n1,1\n");
+  const auto out = path("f.json");
+  expect_failure("fit --data " + data.string() + " --edges \"a->b\" --missing em --latent Hq:2 --out " + out.string(),
+                 "the latent variable 'Hq' is in no edge", out);
+  const auto prior = file("p.json", R"({"format": "pgm-model", "version": 1,
+    "variables": [{"name": "a", "states": ["0", "1"]}, {"name": "b", "states": ["0", "1"]}], "edges": [["a", "b"]]})");
+  const auto learn = "learn-structure --data " + data.string() + " --algorithm hc --prior-model " + prior.string() +
+                     " --out " + path("s.json").string() + " --map ";
+  expect_failure(learn + "zGhost=a", "the map's transferred node 'zGhost' is not a variable of the data",
+                 path("s.json"));
+  expect_failure(learn + "a=zGhost", "the map names 'zGhost', which is not a variable of", path("s.json"));
+  const auto fine = run(learn + "b=b");
+  EXPECT_EQ(fine.code, 0) << fine.err;
+}
+
 // A model path that is a device without end is refused at pgm's limit of a file read whole,
 // not read until memory runs out (issue 28).
 TEST_F(limits_cli_test, a_model_that_never_ends_is_refused_at_the_file_limit) {

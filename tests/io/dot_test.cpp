@@ -30,6 +30,15 @@ TEST(dot_test, every_variable_and_edge_is_drawn_and_names_are_quoted) {
   EXPECT_THAT(text, Not(HasSubstr("dir=none")));
 }
 
+TEST(dot_test, names_that_read_as_html_entities_are_drawn_as_written) {
+  // Issue #49: Graphviz decodes entities in every string, so "R&amp;D" was drawn as R&D.
+  const network_structure structure({variable("R&amp;D", {"0", "1"}), variable("x&lt;1", {"0", "1"})},
+                                    {{"R&amp;D", "x&lt;1"}});
+  const auto text = to_dot(structure);
+  EXPECT_THAT(text, HasSubstr(R"("R&amp;amp;D" -> "x&amp;lt;1";)"));
+  EXPECT_THAT(text, HasSubstr(R"("R&amp;amp;D" [label="R&amp;amp;D\n2 states"];)"));
+}
+
 TEST(dot_test, success_and_controllable_variables_are_marked) {
   const auto text = to_dot(stacking(), {.success = {"onTop2"}, .controllable = {"xOff2"}});
   EXPECT_THAT(text, HasSubstr("\"onTop2\" [label=\"onTop2\\n2 states\", shape=doubleoctagon"));

@@ -142,7 +142,14 @@ template <row_source Source>
       (request.bin.contains(v.name()) ? reading.intervals : reading.variables).emplace(v.name(), v);
     }
   } else {
-    for (const auto& name : columns_of(*edges)) {
+    const auto named = columns_of(*edges);
+    for (const auto& v : request.latent) {
+      // A latent variable in no edge would be an isolated node no data can inform.
+      if (std::find(named.begin(), named.end(), v.name) == named.end()) {
+        throw model_error("the latent variable '" + v.name + "' is in no edge");
+      }
+    }
+    for (const auto& name : named) {
       if (latent_named(request, name)) continue;
       reading.columns.push_back(name);
       if (request.bin.contains(name)) {

@@ -14,6 +14,11 @@ PGM_DECL std::string dot_quoted(const std::string& text) {
       out += "\\n";
       continue;
     }
+    // Graphviz reads HTML entities in every string: "R&amp;D" would be drawn as R&D.
+    if (c == '&') {
+      out += "&amp;";
+      continue;
+    }
     out += c;
   }
   return out + "\"";

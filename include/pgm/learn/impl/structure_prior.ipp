@@ -15,6 +15,15 @@ PGM_DECL std::vector<named_edge> mapped_prior_edges(const std::vector<named_edge
     const auto related = map.related_to(t);
     return related && *related == prior;
   };
+  // A name the data lacks maps nothing: refused as pgm fit refuses it (issue #49).
+  const auto in_target = [&](const std::string& name, const char* kind) {
+    if (std::find(target.begin(), target.end(), name) == target.end()) {
+      throw model_error("the map's " + std::string(kind) + " '" + name + "' is not a variable of the data");
+    }
+  };
+  for (const auto& [t, p] : map.transferred) in_target(t, "transferred node");
+  for (const auto& [t, p] : map.identical) in_target(t, "identical variable");
+  for (const auto& [t, p] : map.related) in_target(t, "related variable");
   std::vector<named_edge> result;
   for (const auto& from : target) {
     for (const auto& to : target) {
