@@ -3,9 +3,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <limits>
 
@@ -207,6 +209,21 @@ std::ostream& summary_stream(const std::filesystem::path& output) {
   const bool same = ::fstat(STDOUT_FILENO, &out) == 0 && ::stat(output.c_str(), &target) == 0 &&
                     out.st_dev == target.st_dev && out.st_ino == target.st_ino;
   return same ? std::cerr : std::cout;
+}
+
+std::function<void()> summary_before_replacing(std::string summary, std::filesystem::path output) {
+  return [summary = std::move(summary), output = std::move(output)] {
+    auto& stream = summary_stream(output);
+    errno = 0;
+    stream << summary;
+    stream.flush();
+    const bool failed = !stream || (&stream == &std::cout && (std::fflush(stdout) != 0 || std::ferror(stdout) != 0));
+    if (failed) {
+      throw io_error("cannot write to standard output" +
+                     (errno != 0 ? std::string(": ") + std::strerror(errno) : std::string()) + "; '" + output.string() +
+                     "' is left as it was");
+    }
+  };
 }
 
 void note(const std::string& text) { std::cerr << "pgm: note: " << text::printable(text) << '\n'; }

@@ -5,6 +5,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <iosfwd>
 #include <optional>
 #include <string>
@@ -112,6 +113,11 @@ CLI::Validator number_between(double lo, double hi, bool lo_open, bool hi_open);
 /// program's standard output itself (`--out /dev/stdout`, a pipe), whose content the line would
 /// spoil; then standard error.
 [[nodiscard]] std::ostream& summary_stream(const std::filesystem::path& output);
+
+/// Prints `summary` to summary_stream(output) and makes sure it arrived, for a write's
+/// before_replacing: a summary that cannot be written (standard output on a full disk, a closed
+/// pipe) then fails the run before `output` is replaced, so a retry starts from the old file.
+[[nodiscard]] std::function<void()> summary_before_replacing(std::string summary, std::filesystem::path output);
 
 /// Prints "pgm: note: …" to stderr, for what the user should know but need not act on.
 void note(const std::string& text);

@@ -102,8 +102,7 @@ void write_searched(const learn_structure_arguments& args, const structure_choic
                          {"seed", search.seed}};
   if (search.score.type == score_type::bdeu) document["learned"]["iss"] = search.score.iss;
   if (choice.algorithm == structure_algorithm::tabu) document["learned"]["tabu"] = search.tabu;
-  write_model_json(document, args.out);
-  std::cout << out.str() << "-> " << args.out << '\n';
+  write_model_json(document, args.out, summary_before_replacing(out.str() + "-> " + args.out + "\n", args.out));
 }
 
 void write_bootstrap(const learn_structure_arguments& args, const structure_choice& choice, const dataset& data) {
@@ -138,8 +137,7 @@ void write_bootstrap(const learn_structure_arguments& args, const structure_choi
           {{"from", a.from}, {"to", a.to}, {"strength", a.strength}, {"direction", a.direction}});
     }
   }
-  write_model_json(document, args.out);
-  std::cout << out.str() << "-> " << args.out << '\n';
+  write_model_json(document, args.out, summary_before_replacing(out.str() + "-> " + args.out + "\n", args.out));
 }
 
 void run_learn_structure(const learn_structure_arguments& args) {
@@ -255,16 +253,14 @@ void run_learn_structure(const learn_structure_arguments& args) {
                          {"rows", data.rows()},
                          {"undirected_in_cpdag", nlohmann::json::array()}};
   for (const auto& e : undirected) document["learned"]["undirected_in_cpdag"].push_back({e.from, e.to});
-  write_model_json(document, args.out);
-
-  std::cout << out.str();
   if (undirected.empty()) {
-    std::cout << "every edge is oriented; the DAG is the CPDAG";
+    out << "every edge is oriented; the DAG is the CPDAG";
   } else {
-    std::cout << "extended the CPDAG to a DAG: " << undirected.size() << " undirected edge(s) oriented"
-              << (relaxed ? "" : " without adding a v-structure");
+    out << "extended the CPDAG to a DAG: " << undirected.size() << " undirected edge(s) oriented"
+        << (relaxed ? "" : " without adding a v-structure");
   }
-  std::cout << " -> " << args.out << '\n';
+  out << " -> " << args.out << '\n';
+  write_model_json(document, args.out, summary_before_replacing(out.str(), args.out));
   if (relaxed > 0) {
     note("the CPDAG has no extension without a new v-structure (orientation conflicts); " + std::to_string(relaxed) +
          " node(s) were given new v-structures to make it a DAG");

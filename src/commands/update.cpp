@@ -2,6 +2,7 @@
 // and estimate its tables again under the priors it was fitted with.
 
 #include <memory>
+#include <sstream>
 #include <string>
 
 #include "cli/common.hpp"
@@ -40,11 +41,15 @@ void run_update(const update_arguments& args) {
   const auto updated_model = update(source, model.structure, *model.statistics, request);
   if (!updated_model.holds_network) return;
   note_counts(updated_model.counts, {});
-  write_network(updated_model.network, args.out, {.statistics = &*updated_model.statistics});
-  summary_stream(args.out) << "updated " << updated_model.network.size() << " tables with " << updated_model.counts.rows
-                           << " new rows (" << text::format_double(updated_model.statistics->rows) << " rows in all"
-                           << (args.decay < 1.0 ? ", old rows weighted by the decay" : "") << ") -> " << args.out
-                           << '\n';
+  std::ostringstream summary;
+  summary << "updated " << updated_model.network.size() << " tables with " << updated_model.counts.rows << " new rows ("
+          << text::format_double(updated_model.statistics->rows) << " rows in all"
+          << (args.decay < 1.0 ? ", old rows weighted by the decay" : "") << ") -> " << args.out << '\n';
+  // With --out equal to --model, a run that fails after replacing the model would make a retry
+  // count the new rows twice: the summary is written first.
+  write_network(updated_model.network, args.out,
+                {.statistics = &*updated_model.statistics,
+                 .before_replacing = summary_before_replacing(summary.str(), args.out)});
 }
 
 }  // namespace

@@ -58,11 +58,13 @@ std::string to_text(const bayesian_network& network, const network_format& forma
 void write_network(const bayesian_network& network, const std::filesystem::path& path, const network_format& format,
                    const network_write_options& options) {
   if (const auto& stream = format.codec().write_to) {
-    write_file_atomically(path, [&](std::ostream& out) { stream(out, network, options); });
+    write_file_atomically(
+        path, [&](std::ostream& out) { stream(out, network, options); }, options.before_replacing);
     return;
   }
   const auto text = to_text(network, format, options);
-  write_file_atomically(path, [&](std::ostream& out) { out << text; });
+  write_file_atomically(
+      path, [&](std::ostream& out) { out << text; }, options.before_replacing);
 }
 
 void write_network(const bayesian_network& network, const std::filesystem::path& path,

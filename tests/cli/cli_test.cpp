@@ -563,6 +563,33 @@ TEST_F(cli_test, a_failed_write_to_standard_output_exits_1) {
   EXPECT_THAT(converted.err, HasSubstr("converted " + sachs + " (bif) -> /dev/stdout (json)"));
 }
 
+// A summary that cannot reach standard output fails the run before its file is replaced, so a
+// retry starts from the old one (issue 49: pgm update --out = --model counted new rows twice).
+TEST_F(cli_test, a_summary_lost_on_standard_output_leaves_the_file_as_it_was) {
+  const auto data = file("d.csv", stacking);
+  const auto model = path("m.json").string();
+  const auto fitted = run("fit --data " + data.string() + " --edges xOff1-\\>onTop1 --keep-counts --out " + model);
+  ASSERT_EQ(fitted.code, 0) << fitted.err;
+  const auto before = slurp(model);
+  const auto lost = run_to("update --model " + model + " --data " + data.string() + " --out " + model, "/dev/full");
+  EXPECT_EQ(lost.code, 1);
+  EXPECT_THAT(lost.err, HasSubstr("cannot write to standard output"));
+  EXPECT_THAT(lost.err, HasSubstr("is left as it was"));
+  EXPECT_EQ(slurp(model), before);
+  const auto updated = run("update --model " + model + " --data " + data.string() + " --out " + model);
+  ASSERT_EQ(updated.code, 0) << updated.err;
+  EXPECT_NE(slurp(model), before);
+
+  const auto learned = path("s.json").string();
+  std::ofstream(learned) << "old";
+  for (const char* algorithm : {"hc", "pc"}) {
+    const auto r = run_to("learn-structure --data " + data.string() + " --algorithm " + algorithm + " --out " + learned,
+                          "/dev/full");
+    EXPECT_EQ(r.code, 1) << algorithm;
+    EXPECT_EQ(slurp(learned), "old") << algorithm;
+  }
+}
+
 // A message that quotes a bad file's bytes shows control characters escaped: a terminal never
 // obeys an escape sequence from a data file (issue 28).
 TEST_F(cli_test, bytes_a_message_quotes_from_a_file_are_escaped) {

@@ -41,8 +41,12 @@ PGM_DECL void check_output_path(const std::filesystem::path& path);
 /// Calls `write` with a stream to a temporary file and renames it to `path` on success (the
 /// file a symbolic link points to; a device or pipe such as /dev/stdout is written directly).
 /// On any failure — including an exception from `write` — the temporary file is removed and
-/// the previous content of `path`, if any, is left untouched.
-PGM_DECL void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write);
+/// the previous content of `path`, if any, is left untouched. `before_replacing`, when given, runs
+/// once the new content is complete and before it replaces the old (before anything is written
+/// to a device): what may still fail there (a summary to a full standard output) leaves `path`
+/// as it was.
+PGM_DECL void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
+                                    const std::function<void()>& before_replacing = {});
 
 }  // namespace pgm
 

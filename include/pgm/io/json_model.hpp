@@ -113,9 +113,12 @@ PGM_DECL void write_model_json(std::ostream& out, const bayesian_network& networ
   return parse_model_json(detail::read_file(path), path.string());
 }
 
-inline void write_model_json(const nlohmann::json& document, const std::filesystem::path& path) {
+/// Writes `document` to `path` atomically; `before_replacing` as write_file_atomically's.
+inline void write_model_json(const nlohmann::json& document, const std::filesystem::path& path,
+                             const std::function<void()>& before_replacing = {}) {
   const auto text = document.dump(2) + "\n";
-  detail::write_file_atomically(path, [&](std::ostream& out) { out << text; });
+  detail::write_file_atomically(
+      path, [&](std::ostream& out) { out << text; }, before_replacing);
 }
 
 // ---- discretization files ------------------------------------------------------------------

@@ -34,6 +34,9 @@ struct network_write_options {
   /// The counts and priors to keep with the network, for `pgm update`: under "statistics" in
   /// JSON, in a network-level property pgm.statistics elsewhere (which peers ignore).
   const fit_statistics* statistics = nullptr;
+  /// Writing a file: runs once the new file is complete, before it replaces the old one
+  /// (write_file_atomically), so that a failure there leaves the old file as it was.
+  std::function<void()> before_replacing;
 };
 
 /// One network file format.

@@ -53,8 +53,8 @@ PGM_DECL void check_output_path(const std::filesystem::path& path) {
   }
 }
 
-PGM_DECL void write_file_atomically(const std::filesystem::path& path,
-                                    const std::function<void(std::ostream&)>& write) {
+PGM_DECL void write_file_atomically(const std::filesystem::path& path, const std::function<void(std::ostream&)>& write,
+                                    const std::function<void()>& before_replacing) {
   check_output_path(path);
   errno = 0;
   const auto reason = [] {
@@ -67,6 +67,7 @@ PGM_DECL void write_file_atomically(const std::filesystem::path& path,
   const auto text = path.lexically_normal().string();
   if ((std::filesystem::exists(status) && !std::filesystem::is_regular_file(status)) || text.starts_with("/dev/") ||
       text.starts_with("/proc/")) {
+    if (before_replacing) before_replacing();
     std::ofstream out(path, std::ios::binary);
     if (!out) throw io_error("cannot write '" + path.string() + "': " + std::strerror(errno));
     write(out);
@@ -89,6 +90,7 @@ PGM_DECL void write_file_atomically(const std::filesystem::path& path,
       out.close();  // some file systems report a full disk or quota only when the file is closed
       if (!out) throw io_error("cannot write '" + path.string() + "'" + reason());
     }
+    if (before_replacing) before_replacing();
     std::filesystem::rename(temporary, target, ec);
     if (ec) throw io_error("cannot write '" + path.string() + "': " + ec.message());
   } catch (...) {
