@@ -118,7 +118,7 @@ class junction_tree_engine {
 
   /// The cells of the tables in the relevant part of a query: the ancestors of the query and
   /// evidence variables (the rest is barren).
-  [[nodiscard]] std::size_t relevant_cells(std::span<const variable_id> query) const requires DirectedModel<M>;
+  [[nodiscard]] std::size_t relevant_cells(std::span<const variable_id> query) const;
 
   /// Whether eliminating the query's relevant part is cheaper than the messages it needs.
   [[nodiscard]] bool eliminating_pays(std::span<const variable_id> query);
@@ -129,7 +129,9 @@ class junction_tree_engine {
 
   variable_elimination<M>& elimination();
 
-  template <Semiring S>
+  // S is a Semiring; left unconstrained, as clang 14 crashes checking a constrained member
+  // template of a class template named in the class's own body.
+  template <class S>
   struct slot {
     std::unique_ptr<propagation<S>> engine;
     std::size_t version = 0;
@@ -240,14 +242,17 @@ mpe_result junction_tree_engine<M>::mpe(std::span<const variable_id> variables) 
 }
 
 template <GraphicalModel M>
-std::size_t junction_tree_engine<M>::relevant_cells(std::span<const variable_id> query) const requires
-    DirectedModel<M> {
-  const auto relevant = detail::relevant_set(*model_, query, evidence_);
-  std::size_t cells = 0;
-  for (std::size_t i = 0; i < model_->size(); ++i) {
-    if (relevant[i]) cells += model_->tables()[i].size();
+std::size_t junction_tree_engine<M>::relevant_cells(std::span<const variable_id> query) const {
+  if constexpr (DirectedModel<M>) {
+    const auto relevant = detail::relevant_set(*model_, query, evidence_);
+    std::size_t cells = 0;
+    for (std::size_t i = 0; i < model_->size(); ++i) {
+      if (relevant[i]) cells += model_->tables()[i].size();
+    }
+    return cells;
+  } else {
+    return 0;  // never asked: a model without barren parts always propagates
   }
-  return cells;
 }
 
 template <GraphicalModel M>

@@ -403,7 +403,9 @@ class variable_elimination {
     return [&kept](std::size_t f) { return kept[f]; };
   }
 
-  template <Semiring S>
+  // S is a Semiring; left unconstrained, as clang 14 crashes checking a constrained member
+  // template of a class template named in the class's own body.
+  template <class S>
   struct kept_tables {
     std::vector<detail::shared_factor<S>> factors;
   };
