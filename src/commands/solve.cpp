@@ -127,7 +127,8 @@ std::string solve(const M& model, const markov_network& ids, const solve_argumen
                 .tolerance = args.tolerance,
                 .max_iterations = args.iterations,
                 .time_limit_seconds = limit.for_an_engine()};
-  options.search = {.restarts = args.restarts, .seed = args.seed};
+  options.search.restarts = args.restarts;
+  options.search.seed = args.seed;
   options.gibbs = {
       .sweeps = args.sweeps, .burn_in = args.burn_in, .seed = args.seed, .time_limit_seconds = limit.for_an_engine()};
   if (args.task == "PR") {
@@ -242,7 +243,8 @@ void add_solve_command(CLI::App& app) {
       ->check(CLI::IsMember(known_elimination_heuristics()));
   cmd->add_option("--order-restarts", args->restarts,
                   "Greedy elimination orders tried after the first, ties broken at random, the smallest "
-                  "junction tree kept (default " +
+                  "junction tree kept; fewer when the search would take longer than the propagation it could "
+                  "shorten (default " +
                       std::to_string(args->restarts) + ")")
       ->check(whole_number(0, 100'000));
   cmd->add_option("--seed", args->seed,

@@ -20,6 +20,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <utility>
 #include <vector>
@@ -55,12 +56,11 @@ class propagation {
     PGM_ASSERT(factors_.size() == tree_->factor_count(), "one factor per factor the tree was compiled for");
     const auto& cliques = tree_->cliques();
     base_.resize(cliques.size());
-    for (std::size_t c = 0; c < cliques.size(); ++c) base_[c].assign(cliques[c].cells, S::one());
     families_.resize(cliques.size());
-    for (std::size_t f = 0; f < factors_.size(); ++f) {
-      const auto c = tree_->factor_clique(f);
-      families_[c].push_back(f);
-      multiply_table(base_[c], c, f);
+    for (std::size_t f = 0; f < factors_.size(); ++f) families_[tree_->factor_clique(f)].push_back(f);
+    for (std::size_t c = 0; c < cliques.size(); ++c) {
+      base_[c].assign(cliques[c].cells, S::one());
+      multiply_families(c, [](std::size_t) { return false; });
     }
     prior_.resize(2 * tree_->edges().size());
     working_.resize(2 * tree_->edges().size());
@@ -184,16 +184,19 @@ class propagation {
     std::stable_sort(order.begin(), order.end(),
                      [&](std::size_t a, std::size_t b) { return tree_->home(nodes[a]) < tree_->home(nodes[b]); });
     std::vector<std::vector<value_type>> result(nodes.size());
-    std::size_t current = tree_->cliques().size();
-    std::vector<value_type> table;
-    for (auto i : order) {
-      const auto c = tree_->home(nodes[i]);
-      if (c != current) {
-        table = belief(c);
-        current = c;
+    std::vector<std::size_t> positions;
+    for (std::size_t first = 0; first < order.size();) {
+      const auto c = tree_->home(nodes[order[first]]);
+      auto last = first;
+      positions.clear();
+      for (; last < order.size() && tree_->home(nodes[order[last]]) == c; ++last) {
+        positions.push_back(tree_->position(c, nodes[order[last]]));
       }
-      const variable_id scope[] = {nodes[i]};
-      result[i] = fold(table, c, scope);
+      ensure_incoming(c, tree_->cliques()[c].edges.size());
+      product_into(belief_buffer_, c, tree_->cliques()[c].edges.size());
+      auto folds = fold_each(belief_buffer_, tree_->cliques()[c].cardinalities, positions);
+      for (auto k = first; k < last; ++k) result[order[k]] = std::move(folds[k - first]);
+      first = last;
     }
     return result;
   }
@@ -330,9 +333,7 @@ class propagation {
       return std::any_of(cut_at_[c].begin(), cut_at_[c].end(),
                          [&](const observation& o) { return o.variable.value() == f; });
     };
-    for (auto f : families_[c]) {
-      if (!is_cut(f)) multiply_table(base_[c], c, f);
-    }
+    multiply_families(c, is_cut);
     for (const auto& o : cut_at_[c]) {
       std::vector<value_type> point(tree_->cardinality(o.variable), S::zero());
       point[o.state.value()] = S::one();
@@ -360,11 +361,20 @@ class propagation {
     return factors;
   }
 
-  /// `table` ⊗= factor f, in clique c's numbering.
-  void multiply_table(std::vector<value_type>& table, std::size_t c, std::size_t f) const {
-    const auto& held = factors_[f];
-    detail::multiply_into<S, value_type>(table, tree_->cliques()[c].cardinalities, tree_->strides_into(c, held.scope()),
-                                         held.values());
+  /// base_[c] ⊗= every factor of clique c's families but those `left_out` names.
+  template <class LeftOut>
+  void multiply_families(std::size_t c, const LeftOut& left_out) {
+    std::vector<std::vector<std::size_t>> strides;
+    std::vector<std::size_t> kept;
+    for (auto f : families_[c]) {
+      if (left_out(f)) continue;
+      kept.push_back(f);
+      strides.push_back(tree_->strides_into(c, factors_[f].scope()));
+    }
+    std::vector<detail::strided_table<value_type>> tables;
+    for (std::size_t k = 0; k < kept.size(); ++k) tables.push_back({strides[k], factors_[kept[k]].values()});
+    detail::multiply_all_into<S, value_type>(std::span<value_type>(base_[c]), tree_->cliques()[c].cardinalities,
+                                             std::span<const detail::strided_table<value_type>>(tables));
   }
 
   /// Every message with clique c on its source side is stale.
@@ -406,8 +416,20 @@ class propagation {
   /// the clique's once.
   [[nodiscard]] std::vector<value_type> product_at(std::size_t c, std::size_t skip,
                                                    std::size_t skip_group = static_cast<std::size_t>(-1)) {
+    std::vector<value_type> table;
+    product_into(table, c, skip, skip_group);
+    return table;
+  }
+
+  /// product_at into `table`, whose storage is reused (a clique's table of 16 MiB is not
+  /// allocated and faulted in afresh for every belief).
+  void product_into(std::vector<value_type>& table, std::size_t c, std::size_t skip,
+                    std::size_t skip_group = static_cast<std::size_t>(-1)) {
     const auto& q = tree_->cliques()[c];
-    std::vector<value_type> table = potential(c);
+    const auto& psi = potential(c);
+    table.assign(psi.begin(), psi.end());
+    std::vector<detail::strided_table<value_type>> products;
+    std::size_t merged = 0;
     for (std::size_t g = 0; g < q.groups.size(); ++g) {
       if (g == skip_group) continue;
       const auto& group = q.groups[g];
@@ -421,15 +443,20 @@ class propagation {
           single = &in.values;
           continue;
         }
-        if (count == 2) scratch_ = *single;
-        for (std::size_t i = 0; i < scratch_.size(); ++i) scratch_[i] = S::times(scratch_[i], in.values[i]);
+        if (count == 2) {
+          if (merged == group_scratch_.size()) group_scratch_.emplace_back();
+          group_scratch_[merged] = *single;
+        }
+        auto& product = group_scratch_[merged];
+        for (std::size_t i = 0; i < product.size(); ++i) product[i] = S::times(product[i], in.values[i]);
       }
       if (count == 0) continue;
-      const auto& product = count == 1 ? *single : scratch_;
+      const auto& product = count == 1 ? *single : group_scratch_[merged++];
       const auto k = group.front() == skip ? group[1] : group.front();
-      detail::multiply_into<S, value_type>(table, q.cardinalities, q.strides[k], std::span<const value_type>(product));
+      products.push_back({q.strides[k], product});
     }
-    return table;
+    detail::multiply_all_into<S, value_type>(std::span<value_type>(table), q.cardinalities,
+                                             std::span<const detail::strided_table<value_type>>(products));
   }
 
   /// The fold of ψ_c and every group of messages but g onto g's separator, kept while its inputs
@@ -447,15 +474,18 @@ class propagation {
       fold_all_groups(c);
       return kept.values;
     }
-    const auto table = product_at(c, q.edges.size(), g);
+    product_into(belief_buffer_, c, q.edges.size(), g);
     const auto k = q.groups[g].front();
     kept.values.assign(tree_->edges()[q.edges[k]].cells, S::zero());
-    detail::fold_onto<S, value_type>(std::span<const value_type>(table), q.cardinalities, q.strides[k],
+    detail::fold_onto<S, value_type>(std::span<const value_type>(belief_buffer_), q.cardinalities, q.strides[k],
                                      std::span<value_type>(kept.values));
     kept.inputs = inputs_;
     kept.valid = true;
     return kept.values;
   }
+
+  static constexpr bool divides =
+      std::same_as<S, log_sum_product<value_type>> || std::same_as<S, sum_product<value_type>>;
 
   /// A clique with this many groups or more sends all its messages at once when every message
   /// into it is known (fold_all_groups): G messages from one product and G folds, or G·log G
@@ -491,14 +521,15 @@ class propagation {
     }
   }
 
-  /// Every group fold of clique c at once (fold_for_group), every message into c known: in
-  /// logarithms as Hugin does, the belief folded onto each separator with the group's own
-  /// messages taken out again (one product and G folds); otherwise by divide and conquer.
+  /// Every group fold of clique c at once (fold_for_group), every message into c known: for sums
+  /// of probabilities or of their logarithms as Hugin does, the belief folded onto each separator
+  /// with the group's own messages divided out again (one product and G folds); in other semirings,
+  /// which may not divide, by divide and conquer.
   void fold_all_groups(std::size_t c) {
     const auto& q = tree_->cliques()[c];
     std::vector<std::vector<value_type>> products(q.groups.size());
     for (std::size_t g = 0; g < q.groups.size(); ++g) products[g] = group_product(c, g);
-    if constexpr (std::same_as<S, log_sum_product<value_type>>) {
+    if constexpr (divides) {
       divide_out(c, products);
     } else {
       std::vector<value_type> table = potential(c);
@@ -511,20 +542,57 @@ class propagation {
     }
   }
 
-  /// Hugin's division in logarithms, where it loses nothing: each group's fold is the belief's
-  /// fold onto its separator minus the group's messages; where they are −∞ (a zero), so is the
-  /// fold (0/0 = 0: the group's side gives those states weight 0, whatever comes back to it).
+  /// `table` (clique c's) folded onto each variable at `positions`. In logarithms, through
+  /// plain sums of the table's exps when no digit is lost that way (shifted_exp).
+  [[nodiscard]] std::vector<std::vector<value_type>> fold_each(const std::vector<value_type>& table,
+                                                               std::span<const std::size_t> cards,
+                                                               std::span<const std::size_t> positions) {
+    if constexpr (std::same_as<S, log_sum_product<value_type>>) {
+      if (positions.size() > 1) {
+        if (const auto top = detail::shifted_exp<value_type>(table, plain_buffer_)) {
+          auto folds = detail::fold_onto_each<sum_product<value_type>, value_type>(plain_buffer_, cards, positions);
+          for (auto& f : folds) detail::unshift_log<value_type>(f, *top);
+          return folds;
+        }
+      }
+    }
+    return detail::fold_onto_each<S, value_type>(table, cards, positions);
+  }
+
+  /// Hugin's division: each group's fold is the belief's fold onto its separator over the group's
+  /// messages; where they are zero, so is the fold (0/0 = 0: the group's side gives those states
+  /// weight 0, whatever comes back to it). In logarithms it loses nothing; in probabilities it
+  /// loses nothing where no product underflows, which solve's choice of semiring ensures
+  /// (fits_in_probabilities). In logarithms the folds are plain sums of the belief's exps when no
+  /// digit is lost that way (one exp per cell for all of them: Alchemy_11's clique of 2²⁰ cells
+  /// has hundreds of groups).
   void divide_out(std::size_t c, const std::vector<std::vector<value_type>>& products) {
+    constexpr bool in_logs = std::same_as<S, log_sum_product<value_type>>;
     const auto& q = tree_->cliques()[c];
-    const auto belief = product_at(c, q.edges.size());
+    product_into(belief_buffer_, c, q.edges.size());
+    const auto& belief = belief_buffer_;
+    std::optional<value_type> top;
+    if constexpr (in_logs) top = detail::shifted_exp<value_type>(belief, plain_buffer_);
     for (std::size_t g = 0; g < q.groups.size(); ++g) {
       const auto k = q.groups[g].front();
       auto& values = group_folds_[c][g].values;
-      values.assign(tree_->edges()[q.edges[k]].cells, S::zero());
-      detail::fold_onto<S, value_type>(std::span<const value_type>(belief), q.cardinalities, q.strides[k],
-                                       std::span<value_type>(values));
+      if (top) {
+        values.assign(tree_->edges()[q.edges[k]].cells, value_type{0});
+        detail::fold_onto<sum_product<value_type>, value_type>(
+            std::span<const value_type>(plain_buffer_), q.cardinalities, q.strides[k], std::span<value_type>(values));
+        detail::unshift_log<value_type>(values, *top);
+      } else {
+        values.assign(tree_->edges()[q.edges[k]].cells, S::zero());
+        detail::fold_onto<S, value_type>(std::span<const value_type>(belief), q.cardinalities, q.strides[k],
+                                         std::span<value_type>(values));
+      }
       for (std::size_t s = 0; s < values.size(); ++s) {
-        values[s] = products[g][s] == S::zero() ? S::zero() : values[s] - products[g][s];
+        const auto by = products[g][s];
+        if (by == S::zero()) {
+          values[s] = S::zero();
+        } else {
+          values[s] = in_logs ? values[s] - by : values[s] / by;
+        }
       }
     }
   }
@@ -675,7 +743,9 @@ class propagation {
   std::vector<message> working_;
   std::vector<std::size_t> pending_;
   std::vector<std::size_t> stack_;
-  std::vector<value_type> scratch_;
+  std::vector<std::vector<value_type>> group_scratch_;  ///< products of a group's messages
+  std::vector<value_type> belief_buffer_;               ///< a clique's product, reused
+  std::vector<value_type> plain_buffer_;                ///< its exps, in logarithms
   std::vector<std::uint64_t> potential_version_;
   std::vector<std::vector<group_fold>> group_folds_;
   std::vector<std::vector<std::size_t>> group_of_;  ///< [clique][edge position] → its group

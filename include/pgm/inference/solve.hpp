@@ -85,7 +85,7 @@ struct solve_options {
   solve_engine engine = solve_engine::automatic;
   elimination_heuristic heuristic = elimination_heuristic::min_fill;
   /// The elimination order's search: the greedy order and this many seeded restarts.
-  order_search search{.restarts = 32, .seed = 1};
+  order_search search{.restarts = 32, .seed = 1, .work_per_cell = 8.0};
   /// The competition's budget: 4 GiB.
   std::size_t memory_limit_bytes = std::size_t{4096} << 20;
   /// What `bp` runs with.

@@ -86,6 +86,8 @@ struct elimination {
   /// cliques[k]: order[k] with its neighbours still present when it went, ascending.
   std::vector<std::vector<std::size_t>> cliques;
   std::size_t fill_in_edges = 0;
+  /// The steps taken (vertices scanned, adjacencies tested): the search's time on any machine.
+  std::size_t work = 0;
 };
 
 namespace detail {
@@ -145,10 +147,12 @@ template <class Graph>
   std::vector<double> log_card(n);
   for (std::size_t v = 0; v < n; ++v) log_card[v] = std::log(static_cast<double>(cardinalities[v]));
 
+  elimination result;
   using cost = std::tuple<double, double>;
   auto score = [&](std::size_t v) -> cost {
     const auto& around = neighbours[v];
     double fill = 0.0;
+    result.work += around.size() * around.size() / 2 + 1;
     if (heuristic != elimination_heuristic::min_degree) {
       for (std::size_t i = 0; i < around.size(); ++i) {
         for (std::size_t j = i + 1; j < around.size(); ++j) fill += adjacent.test(around[i], around[j]) ? 0.0 : 1.0;
@@ -177,7 +181,6 @@ template <class Graph>
     }
   }
 
-  elimination result;
   result.order.reserve(remaining);
   result.cliques.reserve(remaining);
   std::vector<std::size_t> touched;
@@ -186,6 +189,7 @@ template <class Graph>
   while (remaining-- > 0) {
     std::size_t best = n;
     std::size_t tied = 0;
+    result.work += n;
     for (std::size_t v = 0; v < n; ++v) {
       if (!candidate[v] || gone[v]) continue;
       if (best == n || costs[v] < costs[best]) {
@@ -197,6 +201,7 @@ template <class Graph>
       }
     }
     auto& around = neighbours[best];
+    result.work += around.size() * around.size() / 2;
     for (std::size_t i = 0; i < around.size(); ++i) {
       for (std::size_t j = i + 1; j < around.size(); ++j) {
         const auto a = around[i];
@@ -254,10 +259,14 @@ template <class Graph>
 
 /// How hard to look for an elimination order: greedy once, or greedy with `restarts` more runs
 /// that break ties at random (seeded, so the same seed gives the same order), keeping the order
-/// whose tables are smallest together, as Merlin and the Julia solvers search.
+/// whose tables are smallest together, as Merlin and the Julia solvers search. The restarts stop
+/// early once their work (elimination::work) would pass `work_per_cell` times the cells of the
+/// best order so far: a search need not cost more than the propagation it could shorten, and
+/// counting steps rather than seconds keeps one seed one order on any machine.
 struct order_search {
   std::size_t restarts = 0;
   std::uint64_t seed = 1;
+  double work_per_cell = std::numeric_limits<double>::infinity();
 };
 
 /// The best of the greedy orders `search` asks for (ties in size to the earlier run).
@@ -266,7 +275,11 @@ template <class Graph>
                                                elimination_heuristic heuristic, const order_search& search) {
   auto best = greedy_elimination(graph, cardinalities, heuristic);
   auto best_cells = elimination_cells(best, cardinalities);
+  const auto one_run = static_cast<double>(best.work);
+  double spent = 0.0;
   for (std::size_t r = 0; r < search.restarts; ++r) {
+    spent += one_run;
+    if (spent > search.work_per_cell * static_cast<double>(best_cells)) break;
     auto next = greedy_elimination(graph, cardinalities, heuristic, {}, detail::mix_seed(search.seed, r) | 1U);
     const auto cells = elimination_cells(next, cardinalities);
     if (cells < best_cells) {
