@@ -10,13 +10,12 @@ import numpy as np
 from ._core import Error
 
 
-def _network(network, what="network"):
+def _network(network, what="network", markov=False):
     from . import Network
 
     if not isinstance(network, Network):
-        raise TypeError(
-            f"{what} must be a pgm.Network (from pgm.read_network or pgm.fit), got {type(network).__name__}"
-        )
+        kinds = "a pgm.Network or a pgm.MarkovNetwork" if markov else "a pgm.Network"
+        raise TypeError(f"{what} must be {kinds} (from pgm.read_network or pgm.fit), got {type(network).__name__}")
     return network
 
 

@@ -21,33 +21,33 @@ def _new_series(values, index, name):
         return pd.Series(values, index=index, name=name, fastpath=True)
     return pd.Series(values, index=index, name=name)
 
-ENGINES = ("auto", "jt", "ve", "lw", "gibbs")
+# Every engine's name, pgm's own and any a C++ extension registered before import.
+ENGINES = tuple(_core.engine_names())
 
 
 class InferenceEngine:
-    """Queries on one network, compiled once (a pgm.MarkovNetwork is answered by its own
-    engines: "auto", "jt", "ve" or "bp", with log_partition_function, marginal, marginals and mpe).
+    """Queries on one model, compiled once: a pgm.Network (Bayesian) or a pgm.MarkovNetwork.
 
-    engine: "auto" (the junction tree unless it is too large, then likelihood weighting),
-    "jt", "ve", "lw" or "gibbs"; samples, seed, burn_in and threads set the sampling engines
-    (the same numbers for a seed, whatever the threads). Evidence stays until replaced:
+    engine: "auto" (the junction tree unless it is too large, then likelihood weighting for a
+    Bayesian network and loopy belief propagation for a Markov network), "jt", "ve", "bp",
+    "gibbs", or "lw" (Bayesian networks only: it samples along the arrows); pgm.ENGINES lists
+    them with any registered from C++. samples, seed, burn_in and threads set the sampling
+    engines (the same numbers for a seed, whatever the threads). Evidence stays until replaced:
     set_evidence({variable: state}) for observed states, set_soft_evidence({variable: [weight
     per state]}) for likelihoods."""
 
-    def __new__(cls, network, engine="auto", **settings):
-        from ._markov import MarkovInference, MarkovNetwork
+    def __init__(self, network, engine="auto", *, samples=100_000, seed=1, burn_in=1_000, threads=0):
+        from ._markov import MarkovNetwork
 
         if isinstance(network, MarkovNetwork):
-            return MarkovInference(network, engine)
-        return super().__new__(cls)
-
-    def __init__(self, network, engine="auto", *, samples=100_000, seed=1, burn_in=1_000, threads=0):
-        _network(network)
+            model = network._model
+        else:
+            model = _network(network, "network", markov=True)._net
         if not isinstance(engine, str):
             raise TypeError(f"engine must be one of {', '.join(ENGINES)}, got {type(engine).__name__}")
         self.network = network
         self._engine = _core.Engine(
-            network._net,
+            model,
             engine,
             _whole(samples, "samples", 1, 1_000_000_000),  # pgm query --samples' bound: more would not fit in memory
             _seed(seed),
@@ -61,7 +61,7 @@ class InferenceEngine:
 
     @property
     def name(self):
-        """The engine that answers ("jt", "ve", "lw", "gibbs"; for "auto", the one it chose)."""
+        """The engine that answers ("jt", "ve", "bp", "lw", "gibbs"; for "auto", the one it chose)."""
         return self._engine.name
 
     @property
@@ -138,8 +138,9 @@ class InferenceEngine:
         return self._engine.log_probability_of_evidence()
 
     def log_partition_function(self):
-        """ln Z given the evidence: for a Bayesian network, ln P(evidence)."""
-        return self._engine.log_probability_of_evidence()
+        """ln Z given the evidence (the logarithm of the sum of the factors' product over every
+        state the evidence allows): for a Bayesian network, ln P(evidence)."""
+        return self._engine.log_partition_function()
 
     def __repr__(self):
         return f"<pgm.InferenceEngine {self.name} on {self.network!r}>"

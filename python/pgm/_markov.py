@@ -4,8 +4,6 @@ answers the competition's tasks exactly by a junction tree or variable eliminati
 approximately by loopy belief propagation or Gibbs sampling (marginals). Factors are NumPy arrays with one axis per variable
 of their scope, in scope order."""
 
-import math
-
 import numpy as np
 import pandas as pd
 
@@ -118,54 +116,3 @@ def markov_from_pgmpy(model):
             cardinality = model.get_cardinality(node)
             variables[str(node)] = [str(s) for s in range(cardinality)]
     return MarkovNetwork(variables, factors)
-
-
-class MarkovInference:
-    """pgm.InferenceEngine's form for a MarkovNetwork: evidence kept, each answer solved afresh."""
-
-    def __init__(self, model, engine):
-        self.network = model
-        self._engine = _engine_name(engine)
-        self._hard = {}
-        self.name = "jt" if engine == "auto" else engine
-        self.note = ""
-
-    def set_evidence(self, evidence=None):
-        self._hard = _evidence(evidence)
-
-    def _marginals(self):
-        result = self.network._solve("MAR", self._hard, self._engine)
-        self.name, self.note = result[1], result[4]
-        return result[0]
-
-    def marginal(self, variable):
-        values = self._marginals()[self.network.variables.index(variable)]
-        return pd.Series(values, index=pd.Index(self.network.states(variable), name=variable), name="probability")
-
-    def marginals(self):
-        values = self._marginals()
-        return {
-            name: pd.Series(v, index=pd.Index(self.network.states(name), name=name), name="probability")
-            for name, v in zip(self.network.variables, values)
-            if name not in self._hard
-        }
-
-    def log_partition_function(self):
-        result = self.network._solve("PR", self._hard, self._engine)
-        self.name, self.note = result[1], result[4]
-        return result[0]
-
-    def mpe(self):
-        states = self.network.map(self._hard, self._engine)
-        log_joint = _log_value(self.network, states)
-        return ({k: v for k, v in states.items() if k not in self._hard},
-                math.exp(log_joint - self.log_partition_function()))
-
-
-def _log_value(model, assignment):
-    total = 0.0
-    for scope, values in model.factors:
-        index = tuple(model.states(v).index(assignment[v]) for v in scope)
-        value = values[index]
-        total += math.log(value) if value > 0 else -math.inf
-    return total

@@ -15,7 +15,9 @@
 #include <utility>
 #include <vector>
 
+#include "markov.hpp"
 #include "network_handle.hpp"
+#include "pgm/core/graphical_model.hpp"
 #include "pgm/inference/engine_registry.hpp"
 #include "pgm/inference/inference_engine.hpp"
 
@@ -24,12 +26,16 @@ namespace py = pybind11;
 namespace pgm::python {
 namespace {
 
-/// An engine over a network handle (kept alive by Python for as long as the engine lives).
+/// An engine over a Bayesian or Markov network's handle (kept alive by Python for as long as the
+/// engine lives, so the engine borrows the model).
 class engine_handle {
  public:
   engine_handle(const network_handle& network, const std::string& name, std::size_t samples, std::uint64_t seed,
                 std::size_t burn_in, unsigned threads)
-      : engine_(make(network.network, name, samples, seed, burn_in, threads)) {}
+      : engine_(make_engine(name, borrowed(network.network), options_of(samples, seed, burn_in, threads))) {}
+  engine_handle(const markov_handle& model, const std::string& name, std::size_t samples, std::uint64_t seed,
+                std::size_t burn_in, unsigned threads)
+      : engine_(make_engine(name, borrowed(model.model), options_of(samples, seed, burn_in, threads))) {}
 
   [[nodiscard]] std::string name() const { return std::string(engine_.name()); }
   [[nodiscard]] std::string note() const { return engine_.note(); }
@@ -42,7 +48,7 @@ class engine_handle {
     const intervention by_name(set.begin(), set.end());
     const py::gil_scoped_release release;
     const std::lock_guard lock(mutex_);
-    engine_.set_evidence(resolve_evidence(engine_.network(), given, weights, by_name));
+    engine_.set_evidence(resolve_evidence(engine_.model(), given, weights, by_name));
   }
 
   /// (probabilities, P(evidence), standard errors or None), over the joint states of
@@ -95,16 +101,21 @@ class engine_handle {
     return engine_.log_probability_of_evidence();
   }
 
+  double log_partition_function() {
+    const py::gil_scoped_release release;
+    const std::lock_guard lock(mutex_);
+    return engine_.log_partition_function();
+  }
+
  private:
-  static any_inference_engine make(const bayesian_network& network, const std::string& name, std::size_t samples,
-                                   std::uint64_t seed, std::size_t burn_in, unsigned threads) {
+  static inference_options options_of(std::size_t samples, std::uint64_t seed, std::size_t burn_in, unsigned threads) {
     inference_options options;
     if (samples == 0) throw model_error("samples must be at least 1");
     options.sampling.samples = samples;
     options.sampling.seed = seed;
     options.sampling.burn_in = burn_in;
     options.sampling.threads = threads;
-    return make_engine(name, network, options);
+    return options;
   }
 
   static py::array_t<double> array_of(std::span<const double> values) {
@@ -131,13 +142,17 @@ void add_inference(py::module_& m) {
       .def(py::init<const network_handle&, const std::string&, std::size_t, std::uint64_t, std::size_t, unsigned>(),
            py::arg("network"), py::arg("engine"), py::arg("samples"), py::arg("seed"), py::arg("burn_in"),
            py::arg("threads"), py::keep_alive<1, 2>())
+      .def(py::init<const markov_handle&, const std::string&, std::size_t, std::uint64_t, std::size_t, unsigned>(),
+           py::arg("network"), py::arg("engine"), py::arg("samples"), py::arg("seed"), py::arg("burn_in"),
+           py::arg("threads"), py::keep_alive<1, 2>())
       .def_property_readonly("name", &engine_handle::name)
       .def_property_readonly("note", &engine_handle::note)
       .def("set_evidence", &engine_handle::set_evidence)
       .def("joint", &engine_handle::joint)
       .def("marginals", &engine_handle::marginals)
       .def("mpe", &engine_handle::mpe)
-      .def("log_probability_of_evidence", &engine_handle::log_probability_of_evidence);
+      .def("log_probability_of_evidence", &engine_handle::log_probability_of_evidence)
+      .def("log_partition_function", &engine_handle::log_partition_function);
   m.def("engine_names", [] { return engine_registry::instance().names(); });
 }
 

@@ -26,10 +26,6 @@ namespace py = pybind11;
 namespace pgm::python {
 namespace {
 
-struct markov_handle {
-  markov_network model;
-};
-
 using factor_spec = std::pair<std::vector<std::string>, std::vector<double>>;
 
 markov_handle make_markov(const std::vector<std::pair<std::string, std::vector<std::string>>>& variables,

@@ -4,7 +4,14 @@
 
 #include <pybind11/pybind11.h>
 
+#include "pgm/core/markov_network.hpp"
+
 namespace pgm::python {
+
+/// The model a Python pgm.MarkovNetwork wraps (pgm.InferenceEngine's engines refer to it).
+struct markov_handle {
+  markov_network model;
+};
 
 /// Adds the class MarkovNetwork and the function read_uai to the module.
 void add_markov(pybind11::module_& module);

@@ -93,17 +93,40 @@ def test_a_bayes_uai_file_is_a_network(tmp_path):
     assert pgm.InferenceEngine(network).log_partition_function() == pytest.approx(0.0, abs=1e-15)
 
 
-def test_inference_engine_takes_a_markov_network():
+@pytest.mark.parametrize("name", ["jt", "ve", "auto"])
+def test_inference_engine_takes_a_markov_network(name):
     model = chain()
-    engine = pgm.InferenceEngine(model, "jt")
+    engine = pgm.InferenceEngine(model, name)
+    assert engine.name == "jt" if name == "auto" else name
+    z, _ = brute_force(model)
+    assert engine.log_partition_function() == pytest.approx(math.log(z), abs=1e-12)
     engine.set_evidence({"c": "1"})
     z_c, marginals_c = brute_force(model, {"c": "1"})
     assert engine.log_partition_function() == pytest.approx(math.log(z_c), abs=1e-12)
+    assert engine.probability_of_evidence() == pytest.approx(z_c / z, abs=1e-12)
     assert engine.marginal("a").to_numpy() == pytest.approx(marginals_c["a"], abs=1e-12)
+    assert engine.joint(["a", "b"]).sum() == pytest.approx(1.0, abs=1e-12)
     assert set(engine.marginals()) == {"a", "b"}
     states, probability = engine.mpe()
     assert states == {"a": "1", "b": "1"}
+    # P(a=1, b=1 | c=1): the product of the factors there over Z(c=1).
     assert probability == pytest.approx(4 * 5 / z_c, abs=1e-12)
+
+
+def test_the_approximate_engines_answer_a_markov_network_and_lw_says_why_not():
+    model = chain()
+    _, marginals_c = brute_force(model, {"c": "1"})
+    bp = pgm.InferenceEngine(model, "bp")
+    bp.set_evidence({"c": "1"})
+    # A chain is a tree: belief propagation is exact on it.
+    assert bp.marginal("a").to_numpy() == pytest.approx(marginals_c["a"], abs=1e-9)
+    gibbs = pgm.InferenceEngine(model, "gibbs", samples=20_000, seed=3)
+    gibbs.set_evidence({"c": "1"})
+    assert gibbs.marginal("a").to_numpy() == pytest.approx(marginals_c["a"], abs=0.03)
+    with pytest.raises(pgm.Error, match="the engine 'lw' does not serve a Markov network"):
+        pgm.InferenceEngine(model, "lw")
+    with pytest.raises(pgm.Error, match="does not handle interventions .* a Markov network"):
+        pgm.InferenceEngine(model, "jt").set_interventions({"a": "1"})
 
 
 def test_bad_input_is_an_error_naming_it(tmp_path):

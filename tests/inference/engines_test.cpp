@@ -209,6 +209,8 @@ TEST(engines_test, log_space_answers_where_the_evidence_underflows_a_double) {
     EXPECT_EQ(p.evidence_probability, 0.0) << name;  // beyond a double; the logarithm holds it
     EXPECT_NEAR(p.log_evidence_probability, expected_log, 1e-9) << name;
     EXPECT_NEAR(engine.log_probability_of_evidence(), expected_log, 1e-9) << name;
+    // A Bayesian network's Z is 1: ln Z(e) is ln P(e).
+    EXPECT_EQ(engine.log_partition_function(), engine.log_probability_of_evidence()) << name;
     const auto best = engine.mpe({});
     EXPECT_EQ(best.states.front().value(), 1U) << name;
     EXPECT_NEAR(best.log_joint_probability, std::log(0.5) + 400.0 * std::log(0.0101), 1e-9) << name;

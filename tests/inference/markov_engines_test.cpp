@@ -46,6 +46,7 @@ TEST(markov_engines_test, ve_and_jt_equal_brute_force_through_the_registry) {
       engine.set_evidence(observed);
       // P(evidence) = Z(e) / Z.
       EXPECT_NEAR(engine.log_probability_of_evidence(), truth.log_z - log_z, 1e-12 * std::max(1.0, std::abs(log_z)));
+      EXPECT_NEAR(engine.log_partition_function(), truth.log_z, 1e-12 * std::max(1.0, std::abs(log_z)));
       const auto all = marginals(engine);
       std::size_t k = 0;
       for (std::size_t i = 0; i < model.size(); ++i) {
@@ -122,6 +123,7 @@ TEST(markov_engines_test, belief_propagation_is_exact_on_a_chain) {
   auto engine = make_engine("bp", model);
   set_evidence(engine, {{"v3", "c"}});
   EXPECT_NEAR(engine.log_probability_of_evidence(), truth.log_z - log_z, 1e-9);
+  EXPECT_NEAR(engine.log_partition_function(), truth.log_z, 1e-9);
   const auto all = marginals(engine);
   ASSERT_EQ(all.size(), 5U);
   for (const auto& p : all) {
@@ -156,6 +158,8 @@ TEST(markov_engines_test, gibbs_on_the_factors_estimates_marginals_and_says_it_h
   }
   EXPECT_THAT([&] { static_cast<void>(engine.log_probability_of_evidence()); },
               ::testing::ThrowsMessage<model_error>(HasSubstr("does not estimate P(evidence)")));
+  EXPECT_THAT([&] { static_cast<void>(engine.log_partition_function()); },
+              ::testing::ThrowsMessage<model_error>(HasSubstr("does not estimate the partition function")));
   // The same seed, the same numbers.
   auto again = make_engine("gibbs", model, options);
   again.set_evidence(observed);

@@ -51,6 +51,14 @@ class marginals_engine {
     marginals_.reset();
   }
 
+  /// Each node's marginal, asked of `engine` one at a time.
+  template <class Engine>
+  [[nodiscard]] static std::vector<posterior> each_joint(Engine& engine, std::span<const variable_id> nodes) {
+    std::vector<posterior> result;
+    for (auto node : nodes) result.push_back(engine.joint(std::span(&node, 1)));
+    return result;
+  }
+
   /// The posterior of one variable from `marginals` (every variable's, in id order).
   [[nodiscard]] posterior one(std::span<const variable_id> query, const std::vector<std::vector<double>>& marginals,
                               double log_evidence, std::string_view engine) const {
@@ -97,19 +105,20 @@ class belief_propagation_engine : public detail::marginals_engine<M> {
   }
 
   [[nodiscard]] std::vector<posterior> marginals(std::span<const variable_id> nodes) {
-    std::vector<posterior> result;
-    for (auto node : nodes) result.push_back(joint(std::span(&node, 1)));
-    return result;
+    return this->each_joint(*this, nodes);
   }
 
   /// The Bethe estimate of ln Z(e) − ln Z (ln Z = 0 for a Bayesian network).
-  [[nodiscard]] double log_probability_of_evidence() {
-    double log_partition = 0.0;
-    if constexpr (!DirectedModel<M>) {
+  [[nodiscard]] double log_probability_of_evidence() { return run().log_partition - log_partition(); }
+
+  /// The Bethe estimate of ln Z without evidence (0 for a Bayesian network), run once.
+  [[nodiscard]] double log_partition() {
+    if constexpr (DirectedModel<M>) {
+      return 0.0;
+    } else {
       if (!log_partition_) log_partition_ = belief_propagation(*this->model_, {}, options_).log_partition;
-      log_partition = *log_partition_;
+      return *log_partition_;
     }
-    return run().log_partition - log_partition;
   }
 
   /// The last run: converged or not, its iterations and residual.
@@ -150,9 +159,7 @@ class factor_gibbs_engine : public detail::marginals_engine<M> {
   }
 
   [[nodiscard]] std::vector<posterior> marginals(std::span<const variable_id> nodes) {
-    std::vector<posterior> result;
-    for (auto node : nodes) result.push_back(joint(std::span(&node, 1)));
-    return result;
+    return this->each_joint(*this, nodes);
   }
 
   [[nodiscard]] double log_probability_of_evidence() const {

@@ -117,6 +117,9 @@ class any_inference_engine {
   [[nodiscard]] posterior joint(std::span<const variable_id> query) { return self_->joint(query); }
   [[nodiscard]] std::vector<posterior> marginals(std::span<const variable_id> nodes) { return self_->marginals(nodes); }
   [[nodiscard]] double log_probability_of_evidence() { return self_->log_probability_of_evidence(); }
+  /// ln Z(e), the partition function with the evidence entered (ln P(e) for a Bayesian network,
+  /// whose Z is 1); model_error for an engine that estimates neither.
+  [[nodiscard]] double log_partition_function() { return self_->log_partition_function(); }
   [[nodiscard]] mpe_result mpe(std::span<const variable_id> variables) { return self_->mpe(variables); }
   [[nodiscard]] bool finds_mpe() const { return self_->finds_mpe(); }
   /// Why "auto" chose this engine; empty for an engine asked for by name.
@@ -141,6 +144,7 @@ class any_inference_engine {
     virtual posterior joint(std::span<const variable_id> query) = 0;
     virtual std::vector<posterior> marginals(std::span<const variable_id> nodes) = 0;
     virtual double log_probability_of_evidence() = 0;
+    virtual double log_partition_function() = 0;
     virtual mpe_result mpe(std::span<const variable_id> variables) = 0;
     [[nodiscard]] virtual bool finds_mpe() const = 0;
     [[nodiscard]] virtual bool reads_interventions() const = 0;
@@ -187,6 +191,16 @@ class any_inference_engine {
       return detail::marginals_of(engine, nodes);
     }
     double log_probability_of_evidence() override { return engine.log_probability_of_evidence(); }
+    double log_partition_function() override {
+      if constexpr (requires { engine.log_partition(); }) {
+        return engine.log_partition() + engine.log_probability_of_evidence();
+      } else if constexpr (DirectedModel<model_type>) {
+        return engine.log_probability_of_evidence();
+      } else {
+        throw model_error("the engine '" + std::string(engine.name()) +
+                          "' does not estimate the partition function; use jt, ve or bp");
+      }
+    }
     mpe_result mpe(std::span<const variable_id> variables) override {
       if constexpr (MpeEngine<E>) {
         return engine.mpe(variables);
