@@ -8,6 +8,7 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/dag.hpp"
+#include "pgm/core/dynamic_network.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/factor_table.hpp"
 #include "pgm/core/file.hpp"

@@ -18,6 +18,7 @@ from ._checks import _assignment, _choice, _did_you_mean, _flag, _names, _path, 
 from ._core import Error
 from . import _checks
 from ._inference import ENGINES, InferenceEngine
+from ._dynamic import DynamicNetwork
 from ._markov import MarkovNetwork
 
 __version__ = _core.__version__
@@ -27,6 +28,7 @@ __all__ = [
     "backdoor_sets",
     "check",
     "d_separated",
+    "DynamicNetwork",
     "Error",
     "InferenceEngine",
     "intervene",
@@ -309,7 +311,7 @@ def _graphviz(text, kind):
 def read_network(path):
     """Reads a network from a .bif, .xml (XMLBIF), .net (Hugin), .json or .uai file, as the `pgm`
     program does; a .uai file that declares MARKOV, or a .json model of "kind": "markov", is a
-    pgm.MarkovNetwork."""
+    pgm.MarkovNetwork, and a .json model of "kind": "dynamic" a pgm.DynamicNetwork."""
     path = _path(path, "path")
     name = os.fspath(path).lower()
     if name.endswith(".uai") or name.endswith(".uai.gz"):
@@ -319,6 +321,9 @@ def read_network(path):
         handle = _core.read_markov_json(path)
         if handle is not None:
             return MarkovNetwork(handle, None)
+        handle = _core.read_dynamic_json(path)
+        if handle is not None:
+            return DynamicNetwork(handle)
     return Network(_core.read_network(path))
 
 

@@ -19,6 +19,9 @@ namespace pgm {
 /// always a raw continuous column taken for a variable with a state per distinct value.
 inline constexpr std::size_t max_table_cells = std::size_t{1} << 24;
 
+/// The most variables a dynamic network unrolls into (slices × template variables).
+inline constexpr std::size_t max_unrolled_variables = std::size_t{1} << 20;
+
 /// Columns of a CSV file (fields of its header or any record).
 inline constexpr std::size_t csv_max_columns = std::size_t{1} << 16;
 

@@ -16,6 +16,17 @@
 ///   "statistics": {…}   // optional: the counts and priors (pgm/io/statistics_json.hpp)
 /// }
 ///
+/// A dynamic network (pgm/core/dynamic_network.hpp) says so too, and holds its first slice and
+/// its transition, each as edges and tables; the transition's parents are named "X" (this slice)
+/// or "X@-1" (the one before):
+///
+/// {
+///   "format": "pgm-model", "version": 1, "kind": "dynamic",
+///   "variables": [{"name": "x", "states": ["0", "1"]}, …],
+///   "initial": {"edges": [["x", "y"]], "tables": [{"variable": "x", "parents": [], …}, …]},
+///   "transition": {"edges": [["x@-1", "x"], ["x", "y"]], "tables": [{"variable": "x", "parents": ["x@-1"], …}, …]}
+/// }
+///
 /// A Markov network (a factor graph) says so with "kind" and holds factors instead of edges
 /// and tables; a factor's values run over its scope's joint states, the last variable fastest:
 ///
@@ -40,6 +51,7 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
+#include "pgm/core/dynamic_network.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
 #include "pgm/core/markov_network.hpp"
@@ -93,6 +105,16 @@ PGM_DECL void write_markov_json(std::ostream& out, const markov_network& model);
 /// Whether the text of a pgm JSON model declares a Markov network ("kind": "markov"); text that
 /// is not such a model is left for its parser to name what is wrong.
 [[nodiscard]] PGM_DECL bool declares_markov_network(std::string_view text);
+
+/// The "kind" a pgm JSON model declares: "bayesian" (also when it declares none, or the text is
+/// not a JSON object: the reader then says what is wrong), "markov" or "dynamic".
+[[nodiscard]] PGM_DECL std::string declared_model_kind(std::string_view text);
+
+/// A dynamic network as pgm's JSON model ("kind": "dynamic").
+[[nodiscard]] PGM_DECL nlohmann::json to_json(const dynamic_network& model);
+
+/// Reads a dynamic network; errors name the source and the JSON path of what is wrong.
+[[nodiscard]] PGM_DECL dynamic_network parse_dynamic_json(std::string_view text, const std::string& source);
 
 /// A Markov network from pgm's JSON model; errors name the JSON path (an unknown variable in a
 /// scope, a variable twice in one, values of the wrong number, negative or not finite).

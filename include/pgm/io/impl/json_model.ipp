@@ -256,11 +256,178 @@ PGM_DECL void write_markov_json(std::ostream& out, const markov_network& model) 
   out << (model.factor_count() == 0 ? "]\n}\n" : "\n  ]\n}\n");
 }
 
-PGM_DECL bool declares_markov_network(std::string_view text) {
+namespace detail {
+
+/// The edges of `part` (a model document, or a slice of a dynamic model's) added to `structure`,
+/// and its tables if it has any; errors name JSON paths under `path`. With `one_per_variable`,
+/// the tables are checked against the edges, one per variable of `structure`.
+PGM_DECL std::optional<std::vector<cpt<double>>> read_edges_and_tables(const json_reader& reader,
+                                                                       const nlohmann::json& part,
+                                                                       const std::string& path,
+                                                                       network_structure& structure,
+                                                                       bool one_per_variable) {
+  if (const auto* edges = reader.optional_member(part, "edges")) {
+    reader.array(*edges, path + "/edges");
+    for (std::size_t i = 0; i < edges->size(); ++i) {
+      const auto at = path + "/edges/" + std::to_string(i);
+      const auto pair = reader.strings((*edges)[i], at);
+      if (pair.size() != 2) reader.fail(at, "expected [from, to]");
+      try {
+        structure.add_edge(pair[0], pair[1]);
+      } catch (const model_error& e) {
+        reader.fail(at, e.what());
+      }
+    }
+  }
+  const auto* tables = reader.optional_member(part, "tables");
+  if (!tables) return std::nullopt;
+  std::vector<cpt<double>> read_tables;
+  reader.array(*tables, path + "/tables");
+  for (std::size_t i = 0; i < tables->size(); ++i) {
+    const auto at = path + "/tables/" + std::to_string(i);
+    const auto& entry = (*tables)[i];
+    reader.only_keys(entry, at, {"variable", "parents", "values", "given", "rest"});
+    const auto child = reader.string(reader.member(entry, at, "variable"), at + "/variable");
+    const auto parent_names = reader.strings(reader.member(entry, at, "parents"), at + "/parents");
+    const auto& rows = reader.array(reader.member(entry, at, "values"), at + "/values");
+    try {
+      std::vector<variable> parents;
+      std::vector<std::size_t> cards;
+      for (const auto& name : parent_names) {
+        parents.push_back(structure.at(name));
+        cards.push_back(parents.back().cardinality());
+      }
+      const auto& child_variable = structure.at(child);
+      if (reader.optional_member(entry, "rest") || reader.optional_member(entry, "given")) {
+        read_tables.push_back(read_sparse_table(reader, entry, at, child_variable, std::move(parents)));
+        continue;
+      }
+      // A table beyond pgm's limit is refused before its values are copied.
+      static_cast<void>(checked_table_cells(child, child_variable.cardinality(), mixed_radix(cards).size()));
+      std::vector<double> values;
+      for (std::size_t u = 0; u < rows.size(); ++u) {
+        const auto row = reader.numbers(rows[u], at + "/values/" + std::to_string(u));
+        values.insert(values.end(), row.begin(), row.end());
+      }
+      if (rows.size() > 0 && rows[0].size() != child_variable.cardinality()) {
+        reader.fail(at + "/values/0", "expected " + std::to_string(child_variable.cardinality()) +
+                                          " probabilities, one per state of '" + child + "'");
+      }
+      read_tables.emplace_back(child_variable, std::move(parents), std::move(values));
+    } catch (const model_error& e) {
+      reader.fail(at, e.what());
+    }
+  }
+  if (one_per_variable) {
+    try {
+      // Checks the tables against the edges, one table per variable.
+      static_cast<void>(bayesian_network(structure, read_tables));
+    } catch (const model_error& e) {
+      reader.fail(path + "/tables", e.what());
+    }
+  }
+  return read_tables;
+}
+
+}  // namespace detail
+
+PGM_DECL bool declares_markov_network(std::string_view text) { return declared_model_kind(text) == "markov"; }
+
+PGM_DECL std::string declared_model_kind(std::string_view text) {
   const auto document = nlohmann::json::parse(text, nullptr, false);
-  if (!document.is_object()) return false;
+  if (!document.is_object()) return "bayesian";
   const auto kind = document.find("kind");
-  return kind != document.end() && kind->is_string() && kind->get<std::string>() == "markov";
+  return kind != document.end() && kind->is_string() ? kind->get<std::string>() : "bayesian";
+}
+
+PGM_DECL nlohmann::json to_json(const dynamic_network& model) {
+  auto document = to_json(model.initial());
+  nlohmann::json initial = {{"edges", document["edges"]}, {"tables", document["tables"]}};
+  auto transition = to_json(model.transition_structure(), &model.transition_tables());
+  document.erase("edges");
+  document.erase("tables");
+  document["kind"] = "dynamic";
+  document["initial"] = std::move(initial);
+  document["transition"] = {{"edges", transition["edges"]}, {"tables", transition["tables"]}};
+  return document;
+}
+
+PGM_DECL dynamic_network parse_dynamic_json(std::string_view text, const std::string& source) {
+  const detail::json_reader reader(source);
+  const auto document = reader.parse(text);
+  reader.check_format(document, "pgm-model");
+  reader.only_keys(document, "", {"format", "version", "kind", "variables", "initial", "transition", "metadata"});
+  if (reader.string(reader.member(document, "", "kind"), "/kind") != "dynamic") {
+    reader.fail("/kind", "expected \"dynamic\": this reader reads dynamic networks");
+  }
+  std::vector<variable> variables;
+  const auto& vars = reader.array(reader.member(document, "", "variables"), "/variables");
+  for (std::size_t i = 0; i < vars.size(); ++i) {
+    variables.push_back(reader.read_variable(vars[i], "/variables/" + std::to_string(i)));
+  }
+  network_structure first;
+  try {
+    first = network_structure(variables);
+  } catch (const model_error& e) {
+    reader.fail("/variables", e.what());
+  }
+  const auto& initial = reader.member(document, "", "initial");
+  reader.only_keys(initial, "/initial", {"edges", "tables"});
+  auto first_tables = detail::read_edges_and_tables(reader, initial, "/initial", first, true);
+  if (!first_tables) reader.fail("/initial", "the first slice needs its tables");
+
+  // The transition's names first: each edge into this slice from it or the one before.
+  const auto& transition = reader.member(document, "", "transition");
+  reader.only_keys(transition, "/transition", {"edges", "tables"});
+  const auto check_edge = [&](const std::string& from, const std::string& to, const std::string& at) {
+    if (to.find('@') != std::string::npos) {
+      reader.fail(at,
+                  "'" + to + "' is of another slice: a transition's edges and tables are of this slice's variables");
+    }
+    try {
+      static_cast<void>(detail::slice_of_parent(from, to));
+    } catch (const model_error& e) {
+      reader.fail(at, e.what());
+    }
+  };
+  if (const auto* edges = reader.optional_member(transition, "edges"); edges && edges->is_array()) {
+    for (std::size_t i = 0; i < edges->size(); ++i) {
+      const auto at = "/transition/edges/" + std::to_string(i);
+      const auto pair = reader.strings((*edges)[i], at);
+      if (pair.size() == 2) check_edge(pair[0], pair[1], at);
+    }
+  }
+  if (const auto* tables = reader.optional_member(transition, "tables"); tables && tables->is_array()) {
+    for (std::size_t i = 0; i < tables->size(); ++i) {
+      const auto at = "/transition/tables/" + std::to_string(i);
+      const auto* child = reader.optional_member((*tables)[i], "variable");
+      const auto* parents = reader.optional_member((*tables)[i], "parents");
+      if (!child || !child->is_string() || !parents) continue;
+      for (const auto& parent : reader.strings(*parents, at + "/parents")) {
+        check_edge(parent, child->get<std::string>(), at);
+      }
+    }
+  }
+  std::vector<variable> two_slices;
+  for (const auto& v : variables) two_slices.push_back(detail::renamed(v, slice_name(v.name(), -1)));
+  two_slices.insert(two_slices.end(), variables.begin(), variables.end());
+  network_structure both;
+  try {
+    both = network_structure(std::move(two_slices));
+  } catch (const model_error& e) {
+    reader.fail("/variables", e.what());
+  }
+  auto tables = detail::read_edges_and_tables(reader, transition, "/transition", both, false);
+  if (!tables) reader.fail("/transition", "the transition needs its tables");
+  try {
+    dynamic_network model(bayesian_network(first, std::move(*first_tables)), std::move(*tables));
+    if (model.transition_structure().edges() != both.edges()) {
+      reader.fail("/transition/edges", "the edges differ from the tables' parents");
+    }
+    return model;
+  } catch (const model_error& e) {
+    reader.fail("/transition", e.what());
+  }
 }
 
 PGM_DECL markov_network parse_markov_json(std::string_view text, const std::string& source) {
@@ -325,12 +492,19 @@ PGM_DECL model_document parse_model_json(std::string_view text, const std::strin
                 "this file holds a Markov network, not a Bayesian network or structure; pgm query, "
                 "show, solve and convert read it");
   }
+  if (const auto* kind = reader.optional_member(document, "kind"); kind && kind->is_string() && *kind == "dynamic") {
+    reader.fail("/kind",
+                "this file holds a dynamic network, not a Bayesian network or structure; pgm unroll makes one of it "
+                "over a number of slices");
+  }
   // Free for people and tools: "metadata" (io/decision_model.hpp reads its "success") and
   // "learned" (how pgm learn-structure found the structure).
   reader.only_keys(document, "",
                    {"format", "version", "kind", "variables", "edges", "tables", "statistics", "metadata", "learned"});
   if (const auto* kind = reader.optional_member(document, "kind")) {
-    if (reader.string(*kind, "/kind") != "bayesian") reader.fail("/kind", "expected \"bayesian\" or \"markov\"");
+    if (reader.string(*kind, "/kind") != "bayesian") {
+      reader.fail("/kind", "expected \"bayesian\", \"markov\" or \"dynamic\"");
+    }
   }
   std::vector<variable> variables;
   const auto& vars = reader.array(reader.member(document, "", "variables"), "/variables");
@@ -343,65 +517,7 @@ PGM_DECL model_document parse_model_json(std::string_view text, const std::strin
   } catch (const model_error& e) {
     reader.fail("/variables", e.what());
   }
-  if (const auto* edges = reader.optional_member(document, "edges")) {
-    reader.array(*edges, "/edges");
-    for (std::size_t i = 0; i < edges->size(); ++i) {
-      const auto path = "/edges/" + std::to_string(i);
-      const auto pair = reader.strings((*edges)[i], path);
-      if (pair.size() != 2) reader.fail(path, "expected [from, to]");
-      try {
-        result.structure.add_edge(pair[0], pair[1]);
-      } catch (const model_error& e) {
-        reader.fail(path, e.what());
-      }
-    }
-  }
-  if (const auto* tables = reader.optional_member(document, "tables")) {
-    std::vector<cpt<double>> read_tables;
-    reader.array(*tables, "/tables");
-    for (std::size_t i = 0; i < tables->size(); ++i) {
-      const auto path = "/tables/" + std::to_string(i);
-      const auto& entry = (*tables)[i];
-      reader.only_keys(entry, path, {"variable", "parents", "values", "given", "rest"});
-      const auto child = reader.string(reader.member(entry, path, "variable"), path + "/variable");
-      const auto parent_names = reader.strings(reader.member(entry, path, "parents"), path + "/parents");
-      const auto& rows = reader.array(reader.member(entry, path, "values"), path + "/values");
-      try {
-        std::vector<variable> parents;
-        std::vector<std::size_t> cards;
-        for (const auto& name : parent_names) {
-          parents.push_back(result.structure.at(name));
-          cards.push_back(parents.back().cardinality());
-        }
-        const auto& child_variable = result.structure.at(child);
-        if (reader.optional_member(entry, "rest") || reader.optional_member(entry, "given")) {
-          read_tables.push_back(detail::read_sparse_table(reader, entry, path, child_variable, std::move(parents)));
-          continue;
-        }
-        // A table beyond pgm's limit is refused before its values are copied.
-        static_cast<void>(checked_table_cells(child, child_variable.cardinality(), mixed_radix(cards).size()));
-        std::vector<double> values;
-        for (std::size_t u = 0; u < rows.size(); ++u) {
-          const auto row = reader.numbers(rows[u], path + "/values/" + std::to_string(u));
-          values.insert(values.end(), row.begin(), row.end());
-        }
-        if (rows.size() > 0 && rows[0].size() != child_variable.cardinality()) {
-          reader.fail(path + "/values/0", "expected " + std::to_string(child_variable.cardinality()) +
-                                              " probabilities, one per state of '" + child + "'");
-        }
-        read_tables.emplace_back(child_variable, std::move(parents), std::move(values));
-      } catch (const model_error& e) {
-        reader.fail(path, e.what());
-      }
-    }
-    try {
-      // Checks the tables against the edges, one table per variable.
-      static_cast<void>(bayesian_network(result.structure, read_tables));
-    } catch (const model_error& e) {
-      reader.fail("/tables", e.what());
-    }
-    result.tables = std::move(read_tables);
-  }
+  result.tables = detail::read_edges_and_tables(reader, document, "", result.structure, true);
   if (const auto* statistics = reader.optional_member(document, "statistics")) {
     if (!result.tables) reader.fail("/statistics", "statistics need the tables they were estimated into");
     result.statistics = parse_statistics_json(reader, *statistics, result.structure);
