@@ -7,6 +7,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from . import _core
 from ._core import Error
 
 
@@ -132,26 +133,10 @@ def _likelihoods(value, what="soft_evidence"):
     return result
 
 
-def _edit_distance(a, b):
-    """Single-character insertions, deletions, substitutions and swaps of neighbours that turn
-    `a` into `b` (optimal string alignment), as the library's text::edit_distance."""
-    d = [[j for j in range(len(b) + 1)]] + [[i] + [0] * len(b) for i in range(1, len(a) + 1)]
-    for i in range(1, len(a) + 1):
-        for j in range(1, len(b) + 1):
-            d[i][j] = min(d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + (a[i - 1] != b[j - 1]))
-            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
-                d[i][j] = min(d[i][j], d[i - 2][j - 2] + 1)
-    return d[len(a)][len(b)]
-
-
 def _did_you_mean(word, known):
     """The library's "; did you mean 'x'?" for the one of `known` that `word` was most likely
     meant to be (text::closest_name: within two edits, and fewer than half its length), else ""."""
-    best, best_distance = None, 3
-    for name in known:
-        distance = _edit_distance(word, name)
-        if distance < best_distance and 2 * distance < max(len(name), 2):
-            best, best_distance = name, distance
+    best = _core.closest_name(word, [str(name) for name in known])
     return "" if best is None else f"; did you mean '{best}'?"
 
 
@@ -161,7 +146,7 @@ def _choice(value, what, known, kind):
     if not isinstance(value, str):
         raise TypeError(f"{what} must be one of {', '.join(known)}, got {type(value).__name__}")
     if value not in known:
-        raise Error(f"unknown {kind} '{value}'{_did_you_mean(value, known)} (known: {', '.join(known)})")
+        raise Error(_core.unknown_name_message(kind, value, list(known)))
     return value
 
 

@@ -28,6 +28,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
 #include "pgm/core/text.hpp"
+#include "pgm/core/unknown_name.hpp"
 #include "pgm/data/bin_columns.hpp"
 #include "pgm/decide/explain.hpp"
 #include "pgm/decide/predict.hpp"
@@ -665,6 +666,14 @@ PYBIND11_MODULE(_core, m) {
   m.def("network_from_tables", &network_from_tables);
   m.def("parse_edge_list", [](const std::string& text) { return to_pairs(pgm::parse_edge_list(text)); });
   m.def("backends", &pgm::sim::backends);
+  // The library's "did you mean" and its message for an unknown name, for Python's own checks.
+  m.def("closest_name", [](const std::string& word, const std::vector<std::string>& known) {
+    return pgm::text::closest_name(word, known);
+  });
+  m.def("unknown_name_message",
+        [](const std::string& kind, const std::string& name, const std::vector<std::string>& known) {
+          return std::string(pgm::unknown_name(kind, name, known).what());
+        });
 
   m.def(
       "fit",
