@@ -7,6 +7,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -119,6 +120,17 @@ TEST(dynamic_network_test, its_json_reads_back_the_same_and_names_the_path_of_an
   document["transition"]["tables"].erase(1);
   EXPECT_THAT([&] { static_cast<void>(parse_dynamic_json(document.dump(), "m.json")); },
               ::testing::ThrowsMessage<data_error>(HasSubstr("/transition: the transition has no table for 'b'")));
+  document = to_json(model);
+  std::reverse(document["transition"]["edges"].begin(), document["transition"]["edges"].end());
+  EXPECT_EQ(parse_dynamic_json(document.dump(), "m.json"), model);  // edges in any order
+  document["transition"]["edges"].erase(0);
+  EXPECT_THAT([&] { static_cast<void>(parse_dynamic_json(document.dump(), "m.json")); },
+              ::testing::ThrowsMessage<data_error>(HasSubstr("/transition/edges: the edges differ from the tables'")));
+  document = to_json(model);
+  document["variables"][0]["name"] = "a@0";
+  EXPECT_THAT(
+      [&] { static_cast<void>(parse_dynamic_json(document.dump(), "m.json")); },
+      ::testing::ThrowsMessage<data_error>(HasSubstr("/variables/0: a template variable's name may not hold '@'")));
   document = to_json(model);
   document["initial"].erase("tables");
   EXPECT_THAT([&] { static_cast<void>(parse_dynamic_json(document.dump(), "m.json")); },

@@ -66,10 +66,6 @@ struct strided_table {
   std::span<const V> values;
 };
 
-/// The product of `tables` over the first `depth` variables of `cards`, none of which reaches past
-/// them, built up the variables in order: a table whose last variable is d is multiplied into the
-/// product over the first d variables, which is then repeated across the next ones. With pairwise
-/// factors in a clique of 21 variables that is a few passes over the table, not one per factor.
 /// How deep a table reaches into big's variables: one past its last variable there.
 template <class V>
 [[nodiscard]] inline std::size_t depth_of(const strided_table<V>& t) {
@@ -91,6 +87,10 @@ template <class V>
   return cost;
 }
 
+/// The product of `tables` over the variables of `cards`, built up them in order: a table whose
+/// last variable is d is multiplied into the product over the first d variables, which is then
+/// repeated across the next ones. With pairwise factors in a clique of 21 variables that is a few
+/// passes over the table, not one per factor.
 template <class S, class V>
 [[nodiscard]] inline std::vector<V> layered_product(std::span<const std::size_t> cards,
                                                     std::span<const strided_table<V>> tables) {

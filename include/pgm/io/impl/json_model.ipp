@@ -2,6 +2,9 @@
 // The definitions of pgm/io/json_model.hpp: inline in a header-only build, compiled once into libpgm
 // under PGM_SEPARATE_COMPILATION (pgm/core/compilation.hpp).
 
+#include <algorithm>
+#include <tuple>
+
 #include "pgm/io/json_model.hpp"
 
 namespace pgm::detail {
@@ -364,6 +367,10 @@ PGM_DECL dynamic_network parse_dynamic_json(std::string_view text, const std::st
   const auto& vars = reader.array(reader.member(document, "", "variables"), "/variables");
   for (std::size_t i = 0; i < vars.size(); ++i) {
     variables.push_back(reader.read_variable(vars[i], "/variables/" + std::to_string(i)));
+    if (variables.back().name().find('@') != std::string::npos) {
+      reader.fail("/variables/" + std::to_string(i),
+                  "a template variable's name may not hold '@', which marks a slice");
+    }
   }
   network_structure first;
   try {
@@ -421,7 +428,13 @@ PGM_DECL dynamic_network parse_dynamic_json(std::string_view text, const std::st
   if (!tables) reader.fail("/transition", "the transition needs its tables");
   try {
     dynamic_network model(bayesian_network(first, std::move(*first_tables)), std::move(*tables));
-    if (model.transition_structure().edges() != both.edges()) {
+    const auto sorted = [](std::vector<named_edge> edges) {
+      std::sort(edges.begin(), edges.end(), [](const named_edge& a, const named_edge& b) {
+        return std::tie(a.from, a.to) < std::tie(b.from, b.to);
+      });
+      return edges;
+    };
+    if (sorted(model.transition_structure().edges()) != sorted(both.edges())) {
       reader.fail("/transition/edges", "the edges differ from the tables' parents");
     }
     return model;
