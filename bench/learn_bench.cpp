@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "check.hpp"
 #include "pgm/learn/count_values.hpp"
 #include "pgm/learn/fit.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
@@ -50,7 +51,13 @@ void count_625(benchmark::State& state) {
   const auto rows = static_cast<std::size_t>(state.range(0));
   const auto& data = stacking_data(rows);
   const pgm::count_options options{.threads = static_cast<unsigned>(state.range(1)), .min_rows_per_thread = 1};
-  for (auto _ : state) benchmark::DoNotOptimize(pgm::count_family(data, "onTop2", parents, options));
+  std::uint64_t total = 0;
+  for (auto _ : state) {
+    const auto counts = pgm::count_family(data, "onTop2", parents, options);
+    total = counts.total();
+    benchmark::DoNotOptimize(counts);
+  }
+  pgm::bench::check(state, total == rows, "the counts do not add up to the rows");
   set_rows_processed(state, rows);
 }
 
@@ -61,13 +68,17 @@ void count_625_naive_map(benchmark::State& state) {
   std::vector<const pgm::discrete_column*> columns;
   for (const auto& name : parents) columns.push_back(&data.discrete(name));
   const auto& child = data.discrete("onTop2");
+  std::uint64_t total = 0;
   for (auto _ : state) {
     std::map<std::array<unsigned, 5>, std::uint64_t> counts;
     for (std::size_t r = 0; r < rows; ++r) {
       ++counts[{columns[0]->code(r), columns[1]->code(r), columns[2]->code(r), columns[3]->code(r), child.code(r)}];
     }
+    total = 0;
+    for (const auto& [cell, n] : counts) total += n;
     benchmark::DoNotOptimize(counts);
   }
+  pgm::bench::check(state, total == rows, "the counts do not add up to the rows");
   set_rows_processed(state, rows);
 }
 
@@ -76,10 +87,18 @@ void count_fit_tables(benchmark::State& state) {
   const auto rows = static_cast<std::size_t>(state.range(0));
   const auto& data = stacking_data(rows);
   const pgm::count_options options{.threads = static_cast<unsigned>(state.range(1)), .min_rows_per_thread = 1};
+  bool every_row = true;
   for (auto _ : state) {
-    benchmark::DoNotOptimize(pgm::count_family(data, "onTop2", parents, options));
-    for (const auto& p : parents) benchmark::DoNotOptimize(pgm::count_family(data, p, {}, options));
+    const auto family = pgm::count_family(data, "onTop2", parents, options);
+    every_row = family.total() == rows;
+    benchmark::DoNotOptimize(family);
+    for (const auto& p : parents) {
+      const auto root = pgm::count_family(data, p, {}, options);
+      every_row = every_row && root.total() == rows;
+      benchmark::DoNotOptimize(root);
+    }
   }
+  pgm::bench::check(state, every_row, "a table's counts do not add up to the rows");
   set_rows_processed(state, rows);
 }
 
@@ -97,7 +116,16 @@ void count_fit_tables_from_values(benchmark::State& state) {
   }
   const std::vector<pgm::value_family> families{{0, {1, 2, 3, 4}}, {1, {}}, {2, {}}, {3, {}}, {4, {}}};
   const pgm::count_options options{.threads = static_cast<unsigned>(state.range(1)), .min_rows_per_thread = 1};
-  for (auto _ : state) benchmark::DoNotOptimize(pgm::count_value_families(columns, families, options));
+  bool every_row = true;
+  for (auto _ : state) {
+    const auto counted = pgm::count_value_families(columns, families, options);
+    every_row = counted && counted->tables.size() == families.size();
+    if (counted) {
+      for (const auto& t : counted->tables) every_row = every_row && t.total() == rows;
+    }
+    benchmark::DoNotOptimize(counted);
+  }
+  pgm::bench::check(state, every_row, "a table's counts do not add up to the rows");
   set_rows_processed(state, rows);
 }
 
@@ -109,7 +137,13 @@ void fit_625_bdeu(benchmark::State& state) {
   const auto structure = pgm::structure_from_data(data, edges);
   pgm::fit_options options{.prior = pgm::bdeu_prior{}};
   options.counting = {.threads = static_cast<unsigned>(state.range(1)), .min_rows_per_thread = 1};
-  for (auto _ : state) benchmark::DoNotOptimize(pgm::fit(structure, data, options));
+  std::size_t tables = 0;
+  for (auto _ : state) {
+    const auto network = pgm::fit(structure, data, options);
+    tables = network.tables().size();
+    benchmark::DoNotOptimize(network);
+  }
+  pgm::bench::check(state, tables == 5, "the fit does not have its five tables");
   set_rows_processed(state, rows);  // per data row, all five tables
 }
 

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "check.hpp"
 #include "pgm/learn/estimate.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
@@ -56,11 +57,14 @@ void count_sparse_family(benchmark::State& state) {
   const auto& data = wide_data(wide, rows);
   const auto names = parent_names(wide);
   std::size_t stored = 0;
+  std::uint64_t total = 0;
   for (auto _ : state) {
     const auto counts = pgm::count_family(data, "y", names);
     stored = counts.stored_configurations().size();
+    total = counts.total();
     benchmark::DoNotOptimize(counts);
   }
+  pgm::bench::check(state, total == rows && stored > 0 && stored <= rows, "the sparse counts are wrong");
   state.counters["stored"] = static_cast<double>(stored);
   set_rows_processed(state, rows);
 }
@@ -72,6 +76,7 @@ void count_sparse_family_naive_map(benchmark::State& state) {
   std::vector<const pgm::discrete_column*> columns;
   for (const auto& name : parent_names(wide)) columns.push_back(&data.discrete(name));
   const auto& child = data.discrete("y");
+  std::uint64_t total = 0;
   for (auto _ : state) {
     std::map<std::size_t, std::array<std::uint64_t, 3>> counts;
     for (std::size_t r = 0; r < rows; ++r) {
@@ -79,8 +84,11 @@ void count_sparse_family_naive_map(benchmark::State& state) {
       for (const auto* column : columns) u = 2 * u + column->code(r);
       ++counts[u][child.code(r)];
     }
+    total = 0;
+    for (const auto& [u, column] : counts) total += column[0] + column[1] + column[2];
     benchmark::DoNotOptimize(counts);
   }
+  pgm::bench::check(state, total == rows, "the counts do not add up to the rows");
   set_rows_processed(state, rows);
 }
 
@@ -89,7 +97,13 @@ void fit_sparse_family(benchmark::State& state) {
   const auto rows = static_cast<std::size_t>(state.range(0));
   const auto& data = wide_data(wide, rows);
   const auto names = parent_names(wide);
-  for (auto _ : state) benchmark::DoNotOptimize(pgm::estimate_mle(pgm::count_family(data, "y", names)));
+  bool sparse = false;
+  for (auto _ : state) {
+    const auto table = pgm::estimate_mle(pgm::count_family(data, "y", names));
+    sparse = table.is_sparse();
+    benchmark::DoNotOptimize(table);
+  }
+  pgm::bench::check(state, sparse, "the table past the dense limit is not sparse");
   set_rows_processed(state, rows);
 }
 
@@ -98,7 +112,15 @@ void estimate_20_parents(benchmark::State& state) {
   const auto rows = static_cast<std::size_t>(state.range(0));
   const auto counts = pgm::count_family(wide_data(20, rows), "y", parent_names(20));
   const pgm::estimate_options options{.sparse = state.range(1) != 0};
-  for (auto _ : state) benchmark::DoNotOptimize(pgm::estimate(counts, pgm::bdeu_prior{}, options));
+  double first = 0.0;
+  for (auto _ : state) {
+    const auto table = pgm::estimate(counts, pgm::bdeu_prior{}, options);
+    first = table.column(pgm::config_index(0))[0];
+    benchmark::DoNotOptimize(table);
+  }
+  // Sparse or dense, the same estimate.
+  const auto other = pgm::estimate(counts, pgm::bdeu_prior{}, {.sparse = !options.sparse});
+  pgm::bench::check(state, first == other.column(pgm::config_index(0))[0], "sparse and dense estimates differ");
   set_rows_processed(state, rows);
 }
 

@@ -6,6 +6,7 @@
 
 #include <random>
 
+#include "check.hpp"
 #include "pgm/learn/fit.hpp"
 #include "pgm/transfer/network_transfer.hpp"
 #include "pgm/transfer/replacement.hpp"
@@ -41,7 +42,13 @@ struct stacking {
 template <class Strategy>
 void transfer_25_to_625(benchmark::State& state) {
   const stacking s;
-  for (auto _ : state) benchmark::DoNotOptimize(Strategy{}(s.problem));
+  std::size_t cells = 0;
+  for (auto _ : state) {
+    const auto transferred = Strategy{}(s.problem);
+    cells = transferred.table().size();
+    benchmark::DoNotOptimize(transferred);
+  }
+  pgm::bench::check(state, cells == 2 * 625, "the transferred table is not of the target's 625 configurations");
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * 625));
 }
 BENCHMARK(transfer_25_to_625<direct_replacement>);
@@ -52,8 +59,9 @@ BENCHMARK(transfer_25_to_625<minimal_replacement>);
 void transfer_25_to_625_by_labels(benchmark::State& state) {
   const stacking s;
   const auto& target = s.problem.target_parents();
+  std::vector<double> values;
   for (auto _ : state) {
-    std::vector<double> values;
+    values.clear();
     for (std::size_t u = 0; u < 625; ++u) {
       const auto codes = cpt<double>(on2, target).parent_codes(config_index(static_cast<config_index::rep>(u)));
       const std::vector<std::string> labels{target[0].states()[codes[0]], target[1].states()[codes[1]]};
@@ -62,6 +70,9 @@ void transfer_25_to_625_by_labels(benchmark::State& state) {
     }
     benchmark::DoNotOptimize(values);
   }
+  // Direct-Replacement gives the same columns.
+  pgm::bench::check(state, values[0] == direct_replacement{}(s.problem).table().values()[0],
+                    "the lookup by labels differs from Direct-Replacement");
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * 625));
 }
 BENCHMARK(transfer_25_to_625_by_labels);
@@ -73,7 +84,15 @@ void transfer_125_to_125_identity(benchmark::State& state) {
   const variable inside("inside", {"0", "1"});
   const auto prior = random_table(inside, parents);
   const transfer_problem problem(prior, inside, parents, parse_correspondence("inside=inside"));
-  for (auto _ : state) benchmark::DoNotOptimize(direct_replacement{}(problem));
+  std::vector<double> values;
+  for (auto _ : state) {
+    const auto transferred = direct_replacement{}(problem);
+    values.assign(transferred.table().values().begin(), transferred.table().values().end());
+    benchmark::DoNotOptimize(transferred);
+  }
+  // The identity map copies the prior.
+  pgm::bench::check(state, values == std::vector<double>(prior.values().begin(), prior.values().end()),
+                    "the identity transfer is not the prior");
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * 125));
 }
 BENCHMARK(transfer_125_to_125_identity);
@@ -97,13 +116,17 @@ void fit_with_transferred_prior(benchmark::State& state) {
       {{"xOff1", "onTop2"}, {"yOff1", "onTop2"}, {"xOff2", "onTop2"}, {"yOff2", "onTop2"}});
   const auto prior_net = bayesian_network::from_tables({cpt<double>(s.x1, {}, std::vector<double>(5, 0.2)),
                                                         cpt<double>(s.y1, {}, std::vector<double>(5, 0.2)), s.prior});
+  std::size_t tables = 0;
   for (auto _ : state) {
     fit_options options;
     options.counting.threads = static_cast<unsigned>(state.range(1));
     const auto priors = transfer_priors(prior_net, structure, s.problem.map(), minimal_replacement{});
     use_transferred_priors(options, priors, {{"onTop2", 5.0}});
-    benchmark::DoNotOptimize(fit(structure, data, options));
+    const auto network = fit(structure, data, options);
+    tables = network.tables().size();
+    benchmark::DoNotOptimize(network);
   }
+  pgm::bench::check(state, tables == 5, "the fit does not have its five tables");
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * rows));
   state.counters["ns/row"] = benchmark::Counter(static_cast<double>(state.iterations() * rows),
                                                 benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
