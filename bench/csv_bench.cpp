@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "check.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/io/csv_counts.hpp"
 
@@ -53,6 +54,7 @@ void copy_bytes(benchmark::State& state) {
     std::memcpy(copy.data(), text.data(), text.size());
     benchmark::ClobberMemory();
   }
+  pgm::bench::check(state, copy == text, "the copy differs");
   set_bytes_and_rows(state, text.size(), million);
 }
 
@@ -61,7 +63,13 @@ void parse_dataset(benchmark::State& state) {
   const auto& text = codes_csv(million);
   const pgm::csv_options options{.default_kind = pgm::column_kind::discrete,
                                  .threads = static_cast<unsigned>(state.range(0))};
-  for (auto _ : state) benchmark::DoNotOptimize(pgm::parse_csv(text, "bench.csv", options));
+  std::size_t rows = 0;
+  for (auto _ : state) {
+    const auto data = pgm::parse_csv(text, "bench.csv", options);
+    rows = data.rows();
+    benchmark::DoNotOptimize(data);
+  }
+  pgm::bench::check(state, rows == million, "the data set lost rows");
   set_bytes_and_rows(state, text.size(), million);
 }
 
@@ -72,10 +80,16 @@ void count_families(benchmark::State& state) {
   request.columns = {"xOff1", "yOff1", "xOff2", "yOff2", "onTop1", "onTop2"};
   request.families = {{"onTop1", {"xOff1", "yOff1"}}, {"onTop2", {"xOff1", "yOff1", "xOff2", "yOff2"}}};
   request.threads = static_cast<unsigned>(state.range(0));
+  pgm::family_counts counts;
   for (auto _ : state) {
     pgm::csv_reader input(text, "bench.csv");
-    benchmark::DoNotOptimize(pgm::count_csv(input, request));
+    counts = pgm::count_csv(input, request);
+    benchmark::DoNotOptimize(counts);
   }
+  pgm::bench::check(
+      state,
+      counts.families.size() == 2 && counts.families[0].total() == million && counts.families[1].total() == million,
+      "the counts do not add up to the rows");
   set_bytes_and_rows(state, text.size(), million);
 }
 
@@ -131,6 +145,7 @@ void count_families_missing(benchmark::State& state) {
 // The simple approach: a line at a time, split into strings, configurations counted in a map.
 void count_families_naive(benchmark::State& state) {
   const auto& text = codes_csv(million);
+  std::size_t counted = 0;
   for (auto _ : state) {
     std::istringstream in(text);
     std::string line;
@@ -145,9 +160,12 @@ void count_families_naive(benchmark::State& state) {
       ++onTop1[{fields[4], fields[0], fields[1]}];
       ++onTop2[{fields[5], fields[0], fields[1], fields[2], fields[3]}];
     }
+    counted = 0;
+    for (const auto& [configuration, n] : onTop2) counted += n;
     benchmark::DoNotOptimize(onTop1);
     benchmark::DoNotOptimize(onTop2);
   }
+  pgm::bench::check(state, counted == million, "the counts do not add up to the rows");
   set_bytes_and_rows(state, text.size(), million);
 }
 
