@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "check.hpp"
 #include "pgm/inference/sampling.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 #include "pgm/io/bif.hpp"
@@ -85,11 +86,14 @@ void em_to_convergence(benchmark::State& state) {
   const auto& data = alarm_with_gaps(rows);
   const pgm::em_options options{.tolerance = 1e-6, .max_iterations = 200, .threads = 1};
   std::size_t iterations = 0;
+  bool converged = false;
   for (auto _ : state) {
     auto result = pgm::expectation_maximization(alarm().structure(), data, {}, options);
     iterations = result.iterations;
+    converged = result.converged && std::isfinite(result.log_likelihood);
     benchmark::DoNotOptimize(result);
   }
+  pgm::bench::check(state, converged, "EM did not converge to a finite log-likelihood");
   state.counters["iterations"] = static_cast<double>(iterations);
   set_rows_processed(state, rows);
 }

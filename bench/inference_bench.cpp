@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "check.hpp"
 #include "pgm/causal/intervention.hpp"
 #include "pgm/inference/engine_registry.hpp"
 #include "pgm/io/bif.hpp"
@@ -205,6 +206,24 @@ std::vector<pgm::variable_id> unobserved(std::size_t index, const pgm::evidence_
   return ids;
 }
 
+// Fails the run unless `marginals` (of the unobserved variables, in order) are within `tolerance`
+// of the junction tree's, compiled afresh.
+void check_marginals(benchmark::State& state, const std::vector<pgm::posterior>& marginals, std::size_t index,
+                     const pgm::evidence_set& observed, double tolerance) {
+  pgm::junction_tree_engine exact(network(index));
+  exact.set_evidence(observed);
+  const auto free = unobserved(index, observed);
+  const auto expected = exact.marginals(free);
+  bool close = marginals.size() == expected.size();
+  for (std::size_t k = 0; close && k < expected.size(); ++k) {
+    const auto a = marginals[k].table.values();
+    const auto b = expected[k].table.values();
+    close = a.size() == b.size();
+    for (std::size_t s = 0; close && s < a.size(); ++s) close = std::abs(a[s] - b[s]) <= tolerance;
+  }
+  pgm::bench::check(state, close, "a marginal differs from the junction tree's");
+}
+
 // Every marginal under ten observations: one propagation (set_evidence retracts and enters
 // the evidence anew each time, so nothing is kept from the last iteration).
 void all_marginals_jt(benchmark::State& state) {
@@ -212,13 +231,16 @@ void all_marginals_jt(benchmark::State& state) {
   pgm::junction_tree_engine jt(network(index));
   const auto observed = ten_observations(index);
   const auto free = unobserved(index, observed);
+  std::vector<pgm::posterior> marginals;
   for (auto _ : state) {
     jt.set_evidence({});
     benchmark::DoNotOptimize(jt.log_probability_of_evidence());
     jt.set_evidence(observed);
-    benchmark::DoNotOptimize(jt.marginals(free));
+    marginals = jt.marginals(free);
+    benchmark::DoNotOptimize(marginals);
   }
   state.SetLabel(networks[index] + ", " + std::to_string(free.size()) + " marginals");
+  check_marginals(state, marginals, index, observed, 1e-9);
 }
 BENCHMARK(all_marginals_jt)->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
 
@@ -229,13 +251,17 @@ void all_marginals_ve(benchmark::State& state) {
   const auto observed = ten_observations(index);
   const auto free = unobserved(index, observed);
   ve.set_evidence(observed);
+  std::vector<pgm::posterior> marginals;
   for (auto _ : state) {
+    marginals.clear();
     for (auto id : free) {
       const pgm::variable_id one[] = {id};
-      benchmark::DoNotOptimize(ve.joint(one));
+      marginals.push_back(ve.joint(one));
     }
+    benchmark::DoNotOptimize(marginals);
   }
   state.SetLabel(networks[index] + ", " + std::to_string(free.size()) + " marginals");
+  check_marginals(state, marginals, index, observed, 1e-9);
 }
 BENCHMARK(all_marginals_ve)->DenseRange(0, 5)->Unit(benchmark::kMicrosecond);
 
@@ -268,8 +294,13 @@ void likelihood_weighting_samples(benchmark::State& state) {
   observed.hard.resize(std::min<std::size_t>(2, observed.hard.size()));
   lw.set_evidence(observed);
   const auto free = unobserved(index, observed);
-  for (auto _ : state) benchmark::DoNotOptimize(lw.marginals(free));
+  std::vector<pgm::posterior> marginals;
+  for (auto _ : state) {
+    marginals = lw.marginals(free);
+    benchmark::DoNotOptimize(marginals);
+  }
   state.SetLabel(networks[index] + ", " + std::to_string(threads) + " thread(s)");
+  check_marginals(state, marginals, index, observed, 0.05);  // 10^5 samples: within 0.05 of exact
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * 100'000));
 }
 BENCHMARK(likelihood_weighting_samples)

@@ -37,9 +37,9 @@ small_table random_small(std::mt19937_64& engine, const std::vector<std::size_t>
   return t;
 }
 
-std::vector<std::size_t> random_cards(std::mt19937_64& engine, std::size_t dims) {
+std::vector<std::size_t> random_cards(std::mt19937_64& engine, std::size_t dims, std::size_t least = 1) {
   std::vector<std::size_t> cards;
-  for (std::size_t d = 0; d < dims; ++d) cards.push_back(1 + engine() % 3);
+  for (std::size_t d = 0; d < dims; ++d) cards.push_back(least + engine() % (4 - least));
   return cards;
 }
 
@@ -53,7 +53,9 @@ TEST(table_walk_test, the_product_of_many_tables_equals_multiplying_them_in_turn
   std::mt19937_64 engine(5);
   for (int trial = 0; trial < 300; ++trial) {
     SCOPED_TRACE("trial " + std::to_string(trial));
-    const auto cards = random_cards(engine, trial % 7);
+    // Small tables, multiplied in turn, and tables of 2^8 to 3^10 cells, past where the product
+    // is built up or cut at the last variable's states.
+    const auto cards = trial % 2 == 0 ? random_cards(engine, trial % 7) : random_cards(engine, 8 + trial % 3, 2);
     std::vector<small_table> smalls;
     // Bipartite-like trials: every table holds the last variable, so the cut at its states runs.
     const bool all_hold_last = trial % 3 == 0 && !cards.empty();

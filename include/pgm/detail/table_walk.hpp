@@ -131,6 +131,11 @@ inline void multiply_all_into(std::span<V> big, std::span<const std::size_t> car
     for (const auto& t : tables) big[0] = S::times(big[0], t.values[0]);
     return;
   }
+  // Nothing to share, or too little to pay for the bookkeeping (a small network's cliques).
+  if (tables.size() < 2 || big.size() < 4096) {
+    for (const auto& t : tables) multiply_into<S, V>(big, cards, t.strides, t.values);
+    return;
+  }
   const std::size_t last = cards.size() - 1;
   const auto prefix = cards.first(last);
   std::vector<strided_table<V>> before;
@@ -210,6 +215,14 @@ template <class S, class V>
                                                                 std::span<const std::size_t> cards,
                                                                 std::span<const std::size_t> positions) {
   std::vector<std::vector<V>> folds(positions.size());
+  std::vector<std::size_t> strides;
+  if (positions.size() == 1) {  // one pass, nothing summed down first
+    strides.assign(cards.size(), 0);
+    strides[positions[0]] = 1;
+    folds[0].assign(cards[positions[0]], S::zero());
+    fold_onto<S, V>(table, cards, strides, std::span<V>(folds[0]));
+    return folds;
+  }
   std::vector<std::size_t> order(positions.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
@@ -218,7 +231,6 @@ template <class S, class V>
   std::vector<V> next;
   std::span<const V> current = table;
   std::size_t depth = cards.size();
-  std::vector<std::size_t> strides;
   for (auto i : order) {
     const auto p = positions[i];
     PGM_ASSERT(p < cards.size(), "a position in the table");
