@@ -79,15 +79,19 @@ void family_scoring_alarm(benchmark::State& state) {
   const auto& d = data(100'000);
   const auto picked = columns(d);
   const auto parents = static_cast<std::size_t>(state.range(0));
+  // Child c's family: `parents` parents spread over the columns.
+  const auto key_for = [&](std::size_t c) {
+    pgm::family_key key{c, {}};
+    for (std::size_t k = 1; k <= parents; ++k) key.parents.push_back((c + 7 * k) % picked.size());
+    std::sort(key.parents.begin(), key.parents.end());
+    key.parents.erase(std::unique(key.parents.begin(), key.parents.end()), key.parents.end());
+    return key;
+  };
   std::size_t child = 0;
   double sink = 0;
   for (auto _ : state) {
     pgm::family_score_cache cache(picked, {}, 1);
-    pgm::family_key key{child, {}};
-    for (std::size_t k = 1; k <= parents; ++k) key.parents.push_back((child + 7 * k) % picked.size());
-    std::sort(key.parents.begin(), key.parents.end());
-    key.parents.erase(std::unique(key.parents.begin(), key.parents.end()), key.parents.end());
-    const double score = cache.score(key);
+    const double score = cache.score(key_for(child));
     benchmark::DoNotOptimize(score);
     sink += score;
     child = (child + 1) % picked.size();
@@ -99,11 +103,7 @@ void family_scoring_alarm(benchmark::State& state) {
   double again = 0;
   child = 0;
   for (std::int64_t i = 0; i < state.iterations(); ++i) {
-    pgm::family_key key{child, {}};
-    for (std::size_t k = 1; k <= parents; ++k) key.parents.push_back((child + 7 * k) % picked.size());
-    std::sort(key.parents.begin(), key.parents.end());
-    key.parents.erase(std::unique(key.parents.begin(), key.parents.end()), key.parents.end());
-    again += fresh.score(key);
+    again += fresh.score(key_for(child));
     child = (child + 1) % picked.size();
   }
   pgm::bench::check(state, std::isfinite(sink) && sink == again, "the family scores differ between two caches");
