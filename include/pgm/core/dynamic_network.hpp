@@ -45,6 +45,9 @@ class dynamic_network {
   [[nodiscard]] const bayesian_network& initial() const noexcept { return initial_; }
   /// The two-slice network: `X@-1` for every template variable X (roots), then X.
   [[nodiscard]] const network_structure& transition_structure() const noexcept { return transition_; }
+  /// The two-slice network of these template variables, without edges: each X as `X@-1`, then
+  /// as X. Throws model_error on a repeated name.
+  [[nodiscard]] PGM_DECL static network_structure two_slices(const std::vector<variable>& templates);
   /// The transition tables, in template order.
   [[nodiscard]] const std::vector<cpt<double>>& transition_tables() const noexcept { return tables_; }
 

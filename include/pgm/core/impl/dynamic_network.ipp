@@ -69,15 +69,12 @@ PGM_DECL std::pair<std::string, long> slice_of_parent(const std::string& parent,
 PGM_DECL dynamic_network::dynamic_network(bayesian_network initial, std::vector<cpt<double>> transition)
     : initial_(std::move(initial)) {
   const auto& templates = initial_.variables();
-  std::vector<variable> two_slices;
   for (const auto& v : templates) {
     if (v.name().find('@') != std::string::npos) {
       throw model_error("the template variable '" + v.name() + "' has '@' in its name, which marks a slice");
     }
-    two_slices.push_back(detail::renamed(v, slice_name(v.name(), -1)));
   }
-  two_slices.insert(two_slices.end(), templates.begin(), templates.end());
-  transition_ = network_structure(std::move(two_slices));
+  transition_ = two_slices(templates);
 
   std::vector<std::optional<cpt<double>>> by_variable(templates.size());
   for (auto& table : transition) {
@@ -114,6 +111,13 @@ PGM_DECL dynamic_network::dynamic_network(bayesian_network initial, std::vector<
     }
     tables_.push_back(std::move(*by_variable[i]));
   }
+}
+
+PGM_DECL network_structure dynamic_network::two_slices(const std::vector<variable>& templates) {
+  std::vector<variable> both;
+  for (const auto& v : templates) both.push_back(detail::renamed(v, slice_name(v.name(), -1)));
+  both.insert(both.end(), templates.begin(), templates.end());
+  return network_structure(std::move(both));
 }
 
 PGM_DECL bayesian_network dynamic_network::unroll(std::size_t slices, char separator) const {

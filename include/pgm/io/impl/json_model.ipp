@@ -415,12 +415,9 @@ PGM_DECL dynamic_network parse_dynamic_json(std::string_view text, const std::st
       }
     }
   }
-  std::vector<variable> two_slices;
-  for (const auto& v : variables) two_slices.push_back(detail::renamed(v, slice_name(v.name(), -1)));
-  two_slices.insert(two_slices.end(), variables.begin(), variables.end());
   network_structure both;
   try {
-    both = network_structure(std::move(two_slices));
+    both = dynamic_network::two_slices(variables);
   } catch (const model_error& e) {
     reader.fail("/variables", e.what());
   }
