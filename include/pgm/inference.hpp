@@ -5,6 +5,7 @@
 
 #include "pgm/inference/approximate_engines.hpp"
 #include "pgm/inference/belief_propagation.hpp"
+#include "pgm/inference/dynamic_inference.hpp"
 #include "pgm/inference/engine_registry.hpp"
 #include "pgm/inference/evidence_scope.hpp"
 #include "pgm/inference/exact.hpp"

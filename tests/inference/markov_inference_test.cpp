@@ -265,6 +265,112 @@ TEST(markov_inference_test, bipartite_and_hub_models_equal_brute_force) {
   EXPECT_GT(log_space, 0U);
 }
 
+// All marginals at once come from one walk down the tree, each message down a belief's fold
+// divided by the message that came up (propagation::beliefs_down). Between calls the evidence
+// moves, so some messages are kept and some are not; and a subset of the variables takes only
+// the part of the tree on the way to their homes.
+TEST(markov_inference_test, marginals_from_one_walk_down_equal_each_on_its_own) {
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    testing::random_markov_options shape;
+    shape.variables = 6 + seed % 5;
+    shape.factors = 5 + seed % 6;
+    shape.zero_chance = seed % 4 == 0 ? 0.3 : 0.0;
+    const auto model = testing::random_markov_network(seed, shape);
+    auto tree = std::make_shared<const junction_tree>(model);
+    propagation<sum_product<double>> walked(tree, model);
+    std::vector<variable_id> every;
+    std::vector<variable_id> some;
+    for (std::size_t i = 0; i < model.size(); ++i) {
+      every.push_back(variable_id(static_cast<variable_id::rep>(i)));
+      if (i % 3 == 1) some.push_back(every.back());
+    }
+    for (std::uint64_t round = 0; round < 3; ++round) {
+      std::vector<long> fixed;
+      const auto observed = testing::random_hard_evidence(model, seed * 31 + round, fixed);
+      walked.set_evidence(observed);
+      propagation<sum_product<double>> alone(tree, model);
+      alone.set_evidence(observed);
+      for (const auto* nodes : {&some, &every}) {
+        const auto together = walked.marginals(*nodes);
+        ASSERT_EQ(together.size(), nodes->size());
+        for (std::size_t k = 0; k < nodes->size(); ++k) {
+          const auto expected = alone.marginal((*nodes)[k]);
+          ASSERT_EQ(together[k].size(), expected.size());
+          for (std::size_t s = 0; s < expected.size(); ++s) {
+            EXPECT_NEAR(together[k][s], expected[s], 1e-12 * std::max(1.0, std::abs(expected[s])));
+          }
+        }
+      }
+    }
+  }
+}
+
+// A clique with four separators sends its messages from one belief, dividing each group's
+// messages out again (propagation::divide_out); where one of them is zero (x_i observed where its
+// factor with the hub's variable is zero) the message holds only under that evidence. Queried one
+// variable at a time, as the evidence moves, every marginal stays brute force's.
+TEST(markov_inference_test, messages_divided_by_zero_are_dropped_when_the_evidence_moves) {
+  std::vector<variable> variables;
+  for (const char* name : {"a", "b", "c", "d", "x1", "x2", "x3", "x4"}) variables.push_back(variable(name, {"0", "1"}));
+  std::mt19937_64 engine(11);
+  std::uniform_real_distribution<double> value(0.5, 2.0);
+  std::vector<double> hub(16);
+  for (auto& v : hub) v = value(engine);
+  std::vector<factor_table> factors{
+      factor_table({variable_id(0), variable_id(1), variable_id(2), variable_id(3)}, {2, 2, 2, 2}, hub)};
+  for (variable_id::rep i = 0; i < 4; ++i) {
+    // x_i = 1 rules out the hub's variable i at 0.
+    factors.push_back(
+        factor_table({variable_id(i), variable_id(i + 4)}, {2, 2}, {value(engine), 0.0, value(engine), value(engine)}));
+  }
+  const markov_network model(variables, factors);
+  auto tree = std::make_shared<const junction_tree>(model);
+  propagation<sum_product<double>> kept(tree, model);
+  const std::vector<std::vector<long>> rounds = {{-1, -1, -1, -1, 1, -1, -1, -1},
+                                                 {-1, -1, -1, -1, 0, 1, -1, -1},
+                                                 {-1, -1, -1, -1, -1, -1, 1, 1},
+                                                 {-1, -1, -1, -1, 1, 0, 0, -1},
+                                                 {-1, -1, -1, -1, -1, -1, -1, -1}};
+  for (const auto& fixed : rounds) {
+    evidence_set observed;
+    for (std::size_t i = 0; i < fixed.size(); ++i) {
+      if (fixed[i] >= 0) {
+        observed.hard.push_back(
+            {variable_id(static_cast<variable_id::rep>(i)), state_index(static_cast<state_index::rep>(fixed[i]))});
+      }
+    }
+    kept.set_evidence(observed);
+    const auto truth = testing::brute_force(model, fixed);
+    // The x's first: by the time x1 asks for the hub's message, every message into the hub is
+    // known, and that message comes from the one belief.
+    for (std::size_t i = model.size(); i-- > 0;) {
+      const auto sums = kept.marginal(variable_id(static_cast<variable_id::rep>(i)));
+      const double total = sums[0] + sums[1];
+      for (std::size_t s = 0; s < 2; ++s) EXPECT_NEAR(sums[s] / total, truth.marginals[i][s], 1e-12);
+    }
+  }
+}
+
+// Messages up the tree with values below a double's normal range: the beliefs divided by them
+// on the way down lose digits only where their mass is too small to move a marginal.
+TEST(markov_inference_test, marginals_stay_exact_where_messages_fall_below_the_normal_range) {
+  const markov_network model({variable("a", {"0", "1"}), variable("b", {"0", "1"}), variable("c", {"0", "1"})},
+                             {factor_table({variable_id(0), variable_id(1)}, {2, 2}, {1.0, 1e-310, 2.0, 3e-310}),
+                              factor_table({variable_id(1), variable_id(2)}, {2, 2}, {1.0, 2.0, 1e-310, 3e-310}),
+                              factor_table({variable_id(2)}, {2}, {1.0, 4.0})});
+  const std::vector<long> fixed(model.size(), -1);
+  const auto truth = testing::brute_force(model, fixed);
+  junction_tree_engine engine(model);
+  const variable_id every[] = {variable_id(0), variable_id(1), variable_id(2)};
+  const auto marginals = engine.marginals(every);
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    for (std::size_t s = 0; s < 2; ++s) {
+      EXPECT_NEAR(marginals[i].table.values()[s], truth.marginals[i][s], 1e-15);
+    }
+  }
+}
+
 TEST(markov_inference_test, engines_parse_their_names) {
   EXPECT_EQ(parse_solve_engine("jt"), solve_engine::jt);
   EXPECT_EQ(parse_elimination_heuristic("min-weight"), elimination_heuristic::min_weight);

@@ -23,31 +23,57 @@ namespace pgm::detail {
 
 /// Calls visit(i, j) for every index i of a table over `cards` (last fastest), with j the index
 /// the same joint state has in a table of `strides` (one per variable, 0 where it lacks one).
+///
+/// Neighbouring variables that step through both tables as one are walked as one (a run of
+/// variables the small table lacks, or holds in the same order at the end), so the inner loop runs
+/// over as many cells as it can, not over the last variable's few states; and it is written once
+/// for each kind of step (0: a fold's sum or a broadcast, 1: contiguous in both) so that the
+/// compiler can make each tight.
 template <class Visit>
 inline void walk_table(std::span<const std::size_t> cards, std::span<const std::size_t> strides, Visit&& visit) {
   PGM_ASSERT(cards.size() == strides.size(), "one stride per variable");
-  if (cards.empty()) {
+  // (cardinality, stride) of the fused variables, innermost first.
+  std::vector<std::pair<std::size_t, std::size_t>> fused;
+  fused.reserve(cards.size());
+  for (std::size_t d = cards.size(); d-- > 0;) {
+    if (cards[d] == 1) continue;
+    if (!fused.empty() && strides[d] == fused.back().first * fused.back().second) {
+      fused.back().first *= cards[d];
+    } else {
+      fused.emplace_back(cards[d], strides[d]);
+    }
+  }
+  if (fused.empty()) {
     visit(std::size_t{0}, std::size_t{0});
     return;
   }
-  const std::size_t dims = cards.size();
-  const std::size_t inner = cards[dims - 1];
-  const std::size_t step = strides[dims - 1];
+  const auto [inner, step] = fused.front();
+  const auto run = [&](std::size_t i, std::size_t j) {
+    if (step == 0) {
+      for (std::size_t k = 0; k < inner; ++k) visit(i + k, j);
+    } else if (step == 1) {
+      for (std::size_t k = 0; k < inner; ++k) visit(i + k, j + k);
+    } else {
+      for (std::size_t k = 0; k < inner; ++k) visit(i + k, j + k * step);
+    }
+  };
+  const std::size_t dims = fused.size();
   std::size_t outer = 1;
-  for (std::size_t d = 0; d + 1 < dims; ++d) outer *= cards[d];
+  for (std::size_t d = 1; d < dims; ++d) outer *= fused[d].first;
   std::vector<std::size_t> digit(dims, 0);
   std::size_t i = 0;
   std::size_t j = 0;
   for (std::size_t o = 0; o < outer; ++o) {
-    for (std::size_t k = 0; k < inner; ++k) visit(i + k, j + k * step);
+    run(i, j);
     i += inner;
-    for (std::size_t d = dims - 1; d-- > 0;) {
-      if (++digit[d] < cards[d]) {
-        j += strides[d];
+    for (std::size_t d = 1; d < dims; ++d) {
+      const auto [card, stride] = fused[d];
+      if (++digit[d] < card) {
+        j += stride;
         break;
       }
       digit[d] = 0;
-      j -= strides[d] * (cards[d] - 1);
+      j -= stride * (card - 1);
     }
   }
 }

@@ -127,6 +127,18 @@ class junction_tree_engine {
   /// all their homes.
   [[nodiscard]] bool eliminating_each_pays(std::span<const variable_id> nodes);
 
+  /// What eliminating one node's relevant part costs, in about the nanoseconds a propagation
+  /// spends on a cell: a fixed cost per relevant variable (its elimination order and tables),
+  /// and its cells, which are about the tree's cliques cut down to the relevant variables that
+  /// are not observed (eliminating's tables outgrow the network's where the relevant part is
+  /// wide, as in pigs, where most of the network is an ancestor of most variables). Fitted to
+  /// the single variable elimination of every variable of the published networks under ten
+  /// observations (alarm 25 relevant variables and 15 µs; pigs 55 and 62 µs; water 22 variables
+  /// and 68,000 cells, 131 µs).
+  [[nodiscard]] std::size_t elimination_work(variable_id node) const;
+  static constexpr std::size_t elimination_variable_work = 550;
+  static constexpr std::size_t elimination_cell_work = 4;
+
   variable_elimination<M>& elimination();
 
   // S is a Semiring; left unconstrained, as clang 14 crashes checking a constrained member
@@ -275,17 +287,48 @@ bool junction_tree_engine<M>::eliminating_each_pays(std::span<const variable_id>
     return false;
   } else {
     if (!options_.prune) return false;
-    std::size_t eliminating = 0;
     std::vector<std::size_t> homes;
-    for (auto node : nodes) {
-      const variable_id one[] = {node};
-      eliminating = detail::saturating_add(eliminating, relevant_cells(one));
-      homes.push_back(tree_->home(node));
-    }
+    for (auto node : nodes) homes.push_back(tree_->home(node));
     std::sort(homes.begin(), homes.end());
     homes.erase(std::unique(homes.begin(), homes.end()), homes.end());
-    return detail::saturating_multiply(eliminating, elimination_cell_cost) <
-           in<sum_product<double>>().cost_of_beliefs(homes);
+    auto& sums = in<sum_product<double>>();
+    const auto propagating = homes.size() > 1 ? sums.cost_of_all_beliefs() : sums.cost_of_beliefs(homes);
+    // Estimated from at most 32 of the nodes, evenly spread, and only until it passes the
+    // propagation: each estimate walks the network (about a microsecond on alarm), and pigs' 431
+    // would cost a fifth of the propagation they decide against.
+    const std::size_t stride = std::max<std::size_t>(1, nodes.size() / 32);
+    const double each_counts_for = static_cast<double>(stride);
+    double eliminating = 0.0;
+    for (std::size_t i = 0; i < nodes.size(); i += stride) {
+      eliminating += each_counts_for * static_cast<double>(elimination_work(nodes[i]));
+      if (eliminating >= static_cast<double>(propagating)) return false;
+    }
+    return true;
+  }
+}
+
+template <GraphicalModel M>
+std::size_t junction_tree_engine<M>::elimination_work(variable_id node) const {
+  if constexpr (DirectedModel<M>) {
+    const variable_id one[] = {node};
+    const auto relevant = detail::relevant_set(*model_, one, evidence_);
+    std::size_t variables = 0;
+    for (std::size_t i = 0; i < model_->size(); ++i) variables += relevant[i] ? 1 : 0;
+    std::size_t cells = 0;
+    for (const auto& clique : tree_->cliques()) {
+      std::size_t cut = 1;
+      bool any = false;
+      for (auto v : clique.variables) {
+        if (!relevant[v.value()] || evidence_.fixes(v)) continue;
+        any = true;
+        cut = detail::saturating_multiply(cut, tree_->cardinality(v));
+      }
+      if (any) cells = detail::saturating_add(cells, cut);
+    }
+    return detail::saturating_add(variables * elimination_variable_work,
+                                  detail::saturating_multiply(cells, elimination_cell_work));
+  } else {
+    return 0;  // never asked: a model without barren parts always propagates
   }
 }
 

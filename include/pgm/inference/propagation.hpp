@@ -22,6 +22,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -86,41 +87,56 @@ class propagation {
   /// that clique's base potential: the kept prior messages then hold for the interventions, so
   /// queries under one set of interventions cost what they cost on the mutilated network.
   void set_evidence(const evidence_set& observed) {
-    std::vector<std::vector<observation>> cut(tree_->cliques().size());
-    for (const auto& o : observed.intervened) cut[tree_->factor_clique(o.variable.value())].push_back(o);
-    for (std::size_t c = 0; c < cut.size(); ++c) {
-      std::sort(cut[c].begin(), cut[c].end(),
-                [](const observation& a, const observation& b) { return a.variable < b.variable; });
-      if (cut[c] != cut_at_[c]) {
-        cut_at_[c] = std::move(cut[c]);
-        rebuild_base(c);
-        refresh_potential(c);
-        invalidate_from(c);
-        for (std::size_t e = 0; e < tree_->edges().size(); ++e) prior_[toward(e, tree_->below(c, e))].valid = false;
-      }
-    }
-    std::vector<std::vector<local_evidence>> next(tree_->cliques().size());
+    bool changed = false;
+    if (!observed.intervened.empty() || intervened_) set_interventions(observed.intervened, changed);
+    // Only the cliques that hold evidence now or held it before are compared: a query on pigs
+    // (441 cliques) sets evidence on one to three of them.
+    std::vector<std::pair<std::size_t, local_evidence>> next;
     for (const auto& o : observed.hard) {
       std::vector<value_type> weights(tree_->cardinality(o.variable), S::zero());
       weights[o.state.value()] = S::one();
-      next[tree_->home(o.variable)].push_back({o.variable, std::move(weights)});
+      next.push_back({tree_->home(o.variable), {o.variable, std::move(weights)}});
     }
     for (const auto& l : observed.soft) {
       std::vector<value_type> weights;
       for (double w : l.weights) weights.push_back(S::from_probability(w));
-      next[tree_->home(l.variable)].push_back({l.variable, std::move(weights)});
+      next.push_back({tree_->home(l.variable), {l.variable, std::move(weights)}});
     }
+    std::sort(next.begin(), next.end(), [](const auto& a, const auto& b) {
+      return std::tie(a.first, a.second.variable) < std::tie(b.first, b.second.variable);
+    });
+    std::vector<std::size_t> touched = evidence_cliques_;
+    for (const auto& [c, l] : next) touched.push_back(c);
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
     evidence_cliques_.clear();
-    for (std::size_t c = 0; c < next.size(); ++c) {
-      std::sort(next[c].begin(), next[c].end(),
-                [](const local_evidence& a, const local_evidence& b) { return a.variable < b.variable; });
-      if (next[c] != evidence_at_[c]) {
-        evidence_at_[c] = std::move(next[c]);
+    auto from = next.begin();
+    for (auto c : touched) {
+      std::vector<local_evidence> here;
+      for (; from != next.end() && from->first == c; ++from) here.push_back(std::move(from->second));
+      if (here != evidence_at_[c]) {
+        changed = true;
+        evidence_at_[c] = std::move(here);
         refresh_potential(c);
         invalidate_from(c);
       }
       if (!evidence_at_[c].empty()) evidence_cliques_.push_back(c);
     }
+    if (changed) drop_messages_for_this_evidence();
+  }
+
+  /// Replaces factor f's values (its scope stays): its clique's potential is made again and every
+  /// message from that clique's side is dropped, those kept without evidence too. A filter over
+  /// time moves its prior over the last slice's interface this way, one step after another.
+  void set_factor(std::size_t f, std::vector<value_type> values) {
+    PGM_ASSERT(f < factors_.size() && values.size() == factors_[f].values().size(), "the factor's own cells");
+    factors_[f] = factor_of<S>(factors_[f].scope(), factors_[f].cardinalities(), std::move(values));
+    const auto c = tree_->factor_clique(f);
+    rebuild_base(c);
+    refresh_potential(c);
+    invalidate_from(c);
+    for (std::size_t e = 0; e < tree_->edges().size(); ++e) prior_[toward(e, tree_->below(c, e))].valid = false;
+    drop_messages_for_this_evidence();
   }
 
   /// ψ_c with its evidence, ⊗ every message into c.
@@ -134,7 +150,8 @@ class propagation {
   [[nodiscard]] std::size_t cost_of_beliefs(std::span<const std::size_t> targets) {
     const auto& cliques = tree_->cliques();
     const auto work = [&](std::size_t q) { return cliques[q].cells * (cliques[q].groups.size() + 2); };
-    std::vector<char> counted(2 * tree_->edges().size(), 0);
+    auto& counted = counted_;
+    counted.assign(2 * tree_->edges().size(), 0);
     std::size_t cost = 0;
     stack_.clear();
     for (auto c : targets) {
@@ -151,6 +168,17 @@ class propagation {
       for (auto e : cliques[from].edges) {
         if (e != d / 2) stack_.push_back(message_into(from, e));
       }
+    }
+    return cost;
+  }
+
+  /// What the beliefs of every clique would cost by `beliefs_down`, in cells visited, with
+  /// nothing kept: a product and a fold per clique on the way up, and on the way down a product,
+  /// a fold per child and the folds onto its variables.
+  [[nodiscard]] std::size_t cost_of_all_beliefs() const {
+    std::size_t cost = 0;
+    for (const auto& q : tree_->cliques()) {
+      cost = detail::saturating_add(cost, detail::saturating_multiply(q.cells, 2 * q.groups.size() + 3));
     }
     return cost;
   }
@@ -177,26 +205,37 @@ class propagation {
   }
 
   /// The unnormalized marginals of `nodes`, each clique's belief computed once for the
-  /// variables at home there.
+  /// variables at home there. Where their homes are several cliques and S divides, the beliefs
+  /// come from one walk down the tree as Hugin's propagation makes it (see `beliefs_down`).
   [[nodiscard]] std::vector<std::vector<value_type>> marginals(std::span<const variable_id> nodes) {
-    std::vector<std::size_t> order(nodes.size());
-    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](std::size_t a, std::size_t b) { return tree_->home(nodes[a]) < tree_->home(nodes[b]); });
+    std::vector<std::vector<std::size_t>> at(tree_->cliques().size());  // node indices by home
+    std::size_t homes = 0;
+    for (std::size_t i = 0; i < nodes.size(); ++i) {
+      auto& here = at[tree_->home(nodes[i])];
+      homes += here.empty() ? 1 : 0;
+      here.push_back(i);
+    }
     std::vector<std::vector<value_type>> result(nodes.size());
     std::vector<std::size_t> positions;
-    for (std::size_t first = 0; first < order.size();) {
-      const auto c = tree_->home(nodes[order[first]]);
-      auto last = first;
+    const auto fold_homes = [&](std::size_t c) {
       positions.clear();
-      for (; last < order.size() && tree_->home(nodes[order[last]]) == c; ++last) {
-        positions.push_back(tree_->position(c, nodes[order[last]]));
+      for (auto i : at[c]) positions.push_back(tree_->position(c, nodes[i]));
+      auto folds = fold_each(belief_buffer_, tree_->cliques()[c].cardinalities, positions);
+      for (std::size_t k = 0; k < at[c].size(); ++k) result[at[c][k]] = std::move(folds[k]);
+    };
+    if constexpr (divides) {
+      if (homes > 1) {
+        std::vector<char> wanted(at.size());
+        for (std::size_t c = 0; c < at.size(); ++c) wanted[c] = at[c].empty() ? 0 : 1;
+        beliefs_down(wanted, fold_homes);
+        return result;
       }
+    }
+    for (std::size_t c = 0; c < at.size(); ++c) {
+      if (at[c].empty()) continue;
       ensure_incoming(c, tree_->cliques()[c].edges.size());
       product_into(belief_buffer_, c, tree_->cliques()[c].edges.size());
-      auto folds = fold_each(belief_buffer_, tree_->cliques()[c].cardinalities, positions);
-      for (auto k = first; k < last; ++k) result[order[k]] = std::move(folds[k - first]);
-      first = last;
+      fold_homes(c);
     }
     return result;
   }
@@ -275,6 +314,9 @@ class propagation {
     std::vector<value_type> values;
     bool valid = false;
     std::uint64_t version = 0;  ///< unique to the values computed, so a fold can tell its inputs changed
+    /// Made by Hugin's division where the message divided by was zero: the 0 put there holds
+    /// only while the evidence on the other side stays, so any change of evidence discards it.
+    bool for_this_evidence = false;
   };
   /// ψ_c with the messages of every group but one, folded onto that group's separator: what
   /// every message out of c through that group starts from (the group's own messages are
@@ -283,6 +325,7 @@ class propagation {
     std::vector<value_type> values;
     std::vector<std::uint64_t> inputs;  ///< the versions of ψ_c and of the messages it used
     bool valid = false;
+    bool divided_by_zero = false;  ///< made by divide_out where the group's messages were zero
   };
 
   // A directed message on edge e: 2e goes child → parent, 2e + 1 parent → child.
@@ -316,6 +359,33 @@ class propagation {
     if (evidence_at_[c].empty()) return base_[c];
     if (with_evidence_[c].empty()) apply_evidence(c);
     return with_evidence_[c];
+  }
+
+  void drop_messages_for_this_evidence() {
+    if (!any_for_this_evidence_) return;
+    for (auto* kept : {&prior_, &working_}) {
+      for (auto& m : *kept) m.valid = m.valid && !m.for_this_evidence;
+    }
+    any_for_this_evidence_ = false;
+  }
+
+  /// The interventions' part of set_evidence.
+  void set_interventions(const std::vector<observation>& intervened, bool& changed) {
+    intervened_ = !intervened.empty();
+    std::vector<std::vector<observation>> cut(tree_->cliques().size());
+    for (const auto& o : intervened) cut[tree_->factor_clique(o.variable.value())].push_back(o);
+    for (std::size_t c = 0; c < cut.size(); ++c) {
+      std::sort(cut[c].begin(), cut[c].end(),
+                [](const observation& a, const observation& b) { return a.variable < b.variable; });
+      if (cut[c] != cut_at_[c]) {
+        changed = true;
+        cut_at_[c] = std::move(cut[c]);
+        rebuild_base(c);
+        refresh_potential(c);
+        invalidate_from(c);
+        for (std::size_t e = 0; e < tree_->edges().size(); ++e) prior_[toward(e, tree_->below(c, e))].valid = false;
+      }
+    }
   }
 
   void refresh_potential(std::size_t c) {
@@ -481,6 +551,7 @@ class propagation {
                                      std::span<value_type>(kept.values));
     kept.inputs = inputs_;
     kept.valid = true;
+    kept.divided_by_zero = false;
     return kept.values;
   }
 
@@ -586,15 +657,87 @@ class propagation {
         detail::fold_onto<S, value_type>(std::span<const value_type>(belief), q.cardinalities, q.strides[k],
                                          std::span<value_type>(values));
       }
+      group_folds_[c][g].divided_by_zero = false;
       for (std::size_t s = 0; s < values.size(); ++s) {
         const auto by = products[g][s];
         if (by == S::zero()) {
           values[s] = S::zero();
+          group_folds_[c][g].divided_by_zero = true;
         } else {
           values[s] = in_logs ? values[s] - by : values[s] / by;
         }
       }
     }
+  }
+
+  /// Calls `use(c)` with clique c's belief in belief_buffer_ for every c `wanted` marks, walking
+  /// down from the root after every message toward it is known: a clique's belief, folded onto a
+  /// child's separator and divided by the child's message (Hugin's division, 0/0 = 0 as in
+  /// divide_out), is its message to the child. One product per clique on the way, not one per
+  /// message sent and another for the belief. A quotient is off only where the belief's fold has
+  /// fallen below a double's normal range, by at most 2⁻¹⁰⁷⁴ a cell: against a total the caller
+  /// has checked is normal, a marginal moves by less than 2.2e-16 per cell of the clique.
+  template <class Use>
+  void beliefs_down(std::span<const char> wanted, Use&& use) {
+    const auto& cliques = tree_->cliques();
+    const auto& order = tree_->preorder();
+    std::vector<char> on_way(wanted.begin(), wanted.end());  // c or a clique below it is wanted
+    for (auto it = order.rbegin(); it != order.rend(); ++it) {
+      const auto up = tree_->parent_edge(*it);
+      if (on_way[*it] && up < tree_->edges().size()) on_way[tree_->edges()[up].parent] = 1;
+    }
+    ensure_incoming(order.front(), cliques[order.front()].edges.size());
+    std::vector<value_type> fold;
+    for (auto c : order) {
+      if (!on_way[c]) continue;
+      const auto& q = cliques[c];
+      std::vector<std::size_t> to_send;  // edge positions of children whose message is stale
+      for (std::size_t k = 0; k < q.edges.size(); ++k) {
+        const auto& e = tree_->edges()[q.edges[k]];
+        if (e.parent == c && on_way[e.child] && !stored(toward(q.edges[k], false)).valid) to_send.push_back(k);
+      }
+      if (!wanted[c] && to_send.empty()) continue;
+      std::stable_sort(to_send.begin(), to_send.end(),
+                       [&](std::size_t a, std::size_t b) { return group_of_[c][a] < group_of_[c][b]; });
+      product_into(belief_buffer_, c, q.edges.size());
+      for (std::size_t first = 0; first < to_send.size(); ++first) {
+        const auto g = group_of_[c][to_send[first]];
+        if (first > 0 && g == group_of_[c][to_send[first - 1]]) continue;
+        const auto& strides = q.strides[to_send[first]];
+        fold.assign(tree_->edges()[q.edges[to_send[first]]].cells, S::zero());
+        detail::fold_onto<S, value_type>(std::span<const value_type>(belief_buffer_), q.cardinalities, strides,
+                                         std::span<value_type>(fold));
+        for (auto k = first; k < to_send.size() && group_of_[c][to_send[k]] == g; ++k) {
+          send_by_division(c, to_send[k], fold);
+        }
+      }
+      if (wanted[c]) use(c);
+    }
+  }
+
+  /// Clique c's message through its k-th edge, downward: `fold` (c's belief on the separator)
+  /// over the message that came up that edge.
+  void send_by_division(std::size_t c, std::size_t k, const std::vector<value_type>& fold) {
+    constexpr bool in_logs = std::same_as<S, log_sum_product<value_type>>;
+    const auto edge = tree_->cliques()[c].edges[k];
+    const auto& up = stored(toward(edge, true)).values;
+    std::vector<value_type> values(fold.size());
+    bool by_zero = false;
+    for (std::size_t s = 0; s < values.size(); ++s) {
+      const auto by = up[s];
+      if (by == S::zero()) {
+        values[s] = S::zero();
+        by_zero = true;
+      } else {
+        values[s] = in_logs ? fold[s] - by : fold[s] / by;
+      }
+    }
+    auto& out = stored(toward(edge, false));
+    out.values = std::move(values);
+    out.valid = true;
+    out.version = ++versions_;
+    out.for_this_evidence = by_zero;
+    any_for_this_evidence_ = any_for_this_evidence_ || by_zero;
   }
 
   /// `table` is ψ_c ⊗ the products of every group outside [lo, hi): folds it, with the products
@@ -634,6 +777,7 @@ class propagation {
     const auto g = group_of_[from][slot];
     const auto& q = tree_->cliques()[from];
     auto values = fold_for_group(from, g);
+    const bool for_this_evidence = group_folds_[from][g].divided_by_zero;
     for (auto k : q.groups[g]) {
       if (k == slot) continue;
       const auto& in = stored(message_into(from, q.edges[k]));
@@ -643,6 +787,8 @@ class propagation {
     out.values = std::move(values);
     out.valid = true;
     out.version = ++versions_;
+    out.for_this_evidence = for_this_evidence;
+    any_for_this_evidence_ = any_for_this_evidence_ || for_this_evidence;
   }
 
   /// A table of clique c folded onto `scope` (in that order).
@@ -738,11 +884,14 @@ class propagation {
   std::vector<std::vector<std::size_t>> families_;  ///< the factors each clique holds
   std::vector<std::vector<observation>> cut_at_;    ///< the interventions on them, by variable
   std::vector<std::vector<value_type>> with_evidence_;
-  std::vector<std::size_t> evidence_cliques_;
+  std::vector<std::size_t> evidence_cliques_;  ///< ascending
+  bool intervened_ = false;                    ///< whether any clique has an intervention
+  bool any_for_this_evidence_ = false;         ///< whether a kept message may be for_this_evidence
   std::vector<message> prior_;
   std::vector<message> working_;
   std::vector<std::size_t> pending_;
   std::vector<std::size_t> stack_;
+  std::vector<char> counted_;                           ///< cost_of_beliefs's marks, reused
   std::vector<std::vector<value_type>> group_scratch_;  ///< products of a group's messages
   std::vector<value_type> belief_buffer_;               ///< a clique's product, reused
   std::vector<value_type> plain_buffer_;                ///< its exps, in logarithms

@@ -1,0 +1,212 @@
+#pragma once
+// Definitions for pgm/inference/dynamic_inference.hpp.
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "pgm/inference/dynamic_inference.hpp"
+#include "pgm/inference/exact.hpp"
+
+namespace pgm {
+
+namespace detail {
+
+/// A tree and its propagation over these factors.
+inline std::unique_ptr<propagation<sum_product<double>>> propagation_over(
+    std::vector<std::size_t> cardinalities, std::vector<factor_of<sum_product<double>>> factors,
+    const junction_tree_options& options) {
+  std::vector<std::vector<variable_id>> scopes;
+  for (const auto& f : factors) scopes.push_back(f.scope());
+  auto tree = std::make_shared<const junction_tree>(std::move(cardinalities), scopes, options);
+  return std::make_unique<propagation<sum_product<double>>>(std::move(tree), std::move(factors));
+}
+
+}  // namespace detail
+
+PGM_DECL interface_filter::interface_filter(dynamic_network model, const junction_tree_options& options)
+    : model_(std::move(model)) {
+  using factor = factor_of<sum_product<double>>;
+  const std::size_t n = model_.size();
+  // Two slices unrolled: slice 1's tables are the transition's, over slice 0 and slice 1.
+  const auto two = model_.unroll(2);
+  std::vector<std::size_t> slice_of(two.size());
+  std::vector<std::size_t> template_of(two.size());
+  for (std::size_t i = 0; i < n; ++i) {
+    for (std::size_t t = 0; t < 2; ++t) {
+      const auto id = two.id(slice_name(model_.variables()[i].name(), static_cast<long>(t))).value();
+      slice_of[id] = t;
+      template_of[id] = i;
+    }
+  }
+  std::vector<char> in_interface(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto node = two.id(slice_name(model_.variables()[i].name(), 1));
+    for (auto p : two.graph().parents(node)) {
+      if (slice_of[p.value()] == 0) in_interface[template_of[p.value()]] = 1;
+    }
+  }
+  std::vector<std::size_t> cards;
+  for (const auto& v : model_.variables()) cards.push_back(v.cardinality());
+  std::vector<std::size_t> interface_cards;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!in_interface[i]) continue;
+    interface_.push_back(variable_id(static_cast<variable_id::rep>(i)));
+    previous_interface_.push_back(variable_id(static_cast<variable_id::rep>(n + previous_interface_.size())));
+    interface_cells_ = detail::saturating_multiply(interface_cells_, cards[i]);
+    interface_cards.push_back(cards[i]);
+  }
+  const std::vector<double> ones(interface_cells_, 1.0);
+
+  // The first slice: its tables as factors 0 … n−1 (factor i is variable i's, as interventions
+  // need), then β over the interface.
+  std::vector<factor> first;
+  for (std::size_t i = 0; i < n; ++i) {
+    first.push_back(
+        detail::table_factor<sum_product<double>>(model_.initial(), variable_id(static_cast<variable_id::rep>(i))));
+  }
+  if (!interface_.empty()) first.emplace_back(interface_, interface_cards, ones);
+  first_ = detail::propagation_over(cards, std::move(first), options);
+
+  // The transition: this slice's variables keep their template ids, the previous slice's
+  // interface follows them; its tables, then the prior over the previous interface, then β.
+  std::vector<variable_id> renumbered(two.size());
+  for (std::size_t id = 0; id < two.size(); ++id) {
+    const auto i = template_of[id];
+    if (slice_of[id] == 1) {
+      renumbered[id] = variable_id(static_cast<variable_id::rep>(i));
+    } else if (in_interface[i]) {
+      const auto at =
+          std::lower_bound(interface_.begin(), interface_.end(), variable_id(static_cast<variable_id::rep>(i)));
+      renumbered[id] = previous_interface_[static_cast<std::size_t>(at - interface_.begin())];
+    }
+  }
+  std::vector<factor> transition;
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto node = two.id(slice_name(model_.variables()[i].name(), 1));
+    const auto table = detail::table_factor<sum_product<double>>(two, node);
+    std::vector<variable_id> scope;
+    for (auto v : table.scope()) scope.push_back(renumbered[v.value()]);
+    transition.emplace_back(std::move(scope), table.cardinalities(),
+                            std::vector<double>(table.values().begin(), table.values().end()));
+  }
+  auto transition_cards = cards;
+  if (!interface_.empty()) {
+    transition.emplace_back(previous_interface_, interface_cards, ones);
+    transition.emplace_back(interface_, interface_cards, ones);
+    transition_cards.insert(transition_cards.end(), interface_cards.begin(), interface_cards.end());
+  }
+  transition_ = detail::propagation_over(std::move(transition_cards), std::move(transition), options);
+  first_future_ = transition_prior_ = transition_future_ = ones;
+}
+
+void interface_filter::set_if_changed(propagation<sum_product<double>>& in, std::size_t f,
+                                      const std::vector<double>& values, std::vector<double>& now) {
+  if (values == now) return;
+  in.set_factor(f, values);
+  now = values;
+}
+
+interface_filter::step_answer interface_filter::step(bool first, const std::vector<double>& prior,
+                                                     const std::vector<double>& future, const evidence_set& observed,
+                                                     std::size_t step) {
+  const std::size_t n = model_.size();
+  auto& in = first ? *first_ : *transition_;
+  if (!interface_.empty()) {
+    if (first) {
+      set_if_changed(in, n, future, first_future_);
+    } else {
+      set_if_changed(in, n, prior, transition_prior_);
+      set_if_changed(in, n + 1, future, transition_future_);
+    }
+  }
+  in.set_evidence(observed);
+  std::vector<variable_id> every(n);
+  for (std::size_t i = 0; i < n; ++i) every[i] = variable_id(static_cast<variable_id::rep>(i));
+  step_answer answer;
+  answer.marginals = in.marginals(every);
+  double total = 0.0;
+  if (n > 0) {
+    for (double p : answer.marginals.front()) total += p;
+  }
+  if (!(total > 0.0) || !std::isfinite(total)) {
+    throw impossible_evidence("the evidence at step " + std::to_string(step) + " (" +
+                              detail::describe(model_.variables(), observed) +
+                              ") has probability 0 given the steps before");
+  }
+  for (auto& m : answer.marginals) {
+    for (auto& p : m) p /= total;
+  }
+  if (!interface_.empty()) {
+    const auto joint = in.joint(interface_);
+    answer.interface.assign(joint.values().begin(), joint.values().end());
+    for (auto& p : answer.interface) p /= total;
+  } else {
+    answer.interface = {1.0};
+  }
+  answer.log_total = std::log(total);
+  return answer;
+}
+
+std::vector<double> interface_filter::backward(const std::vector<double>& future, const evidence_set& observed,
+                                               std::size_t step) {
+  const std::size_t n = model_.size();
+  set_if_changed(*transition_, n, std::vector<double>(interface_cells_, 1.0), transition_prior_);
+  set_if_changed(*transition_, n + 1, future, transition_future_);
+  transition_->set_evidence(observed);
+  const auto joint = transition_->joint(previous_interface_);
+  std::vector<double> beta(joint.values().begin(), joint.values().end());
+  double total = 0.0;
+  for (double b : beta) total += b;
+  if (!(total > 0.0) || !std::isfinite(total)) {
+    throw impossible_evidence("the evidence from step " + std::to_string(step) + " on has probability 0");
+  }
+  for (auto& b : beta) b /= total;
+  return beta;
+}
+
+PGM_DECL dynamic_marginals interface_filter::filter(std::span<const evidence_set> steps, std::size_t predict) {
+  dynamic_marginals result;
+  const std::vector<double> ones(interface_cells_, 1.0);
+  const evidence_set none;
+  std::vector<double> prior;
+  for (std::size_t t = 0; t < steps.size() + predict; ++t) {
+    auto answer = step(t == 0, prior, ones, t < steps.size() ? steps[t] : none, t);
+    if (t < steps.size()) result.log_evidence_probability += answer.log_total;
+    result.steps.push_back(std::move(answer.marginals));
+    prior = std::move(answer.interface);
+  }
+  return result;
+}
+
+PGM_DECL dynamic_marginals interface_filter::smooth(std::span<const evidence_set> steps) {
+  dynamic_marginals result;
+  if (steps.empty()) return result;
+  const std::vector<double> ones(interface_cells_, 1.0);
+  // Forward: every step's filtered interface (the prior of the next).
+  std::vector<std::vector<double>> alpha;
+  for (std::size_t t = 0; t < steps.size(); ++t) {
+    auto answer = step(t == 0, t == 0 ? ones : alpha.back(), ones, steps[t], t);
+    result.log_evidence_probability += answer.log_total;
+    alpha.push_back(std::move(answer.interface));
+  }
+  if (interface_.empty()) {
+    // Nothing carries from one slice to the next: smoothing is filtering.
+    return filter(steps);
+  }
+  // Backward: β_t, the evidence after t given slice t's interface.
+  std::vector<std::vector<double>> beta(steps.size());
+  beta.back() = ones;
+  for (std::size_t t = steps.size() - 1; t > 0; --t) beta[t - 1] = backward(beta[t], steps[t], t);
+  for (std::size_t t = 0; t < steps.size(); ++t) {
+    result.steps.push_back(step(t == 0, t == 0 ? ones : alpha[t - 1], beta[t], steps[t], t).marginals);
+  }
+  return result;
+}
+
+}  // namespace pgm

@@ -1,0 +1,235 @@
+// Inference over time (pgm/inference/dynamic_inference.hpp): filtering, prediction, smoothing,
+// P(evidence) and do() at a step, by the interface algorithm, against the junction tree on the
+// network unrolled over every step, on random 2-TBNs and horizons up to 20.
+
+#include "pgm/inference/dynamic_inference.hpp"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "pgm/core/dynamic_network.hpp"
+#include "pgm/inference/junction_tree_engine.hpp"
+#include "support/random_network.hpp"
+
+namespace pgm {
+namespace dynamic_inference_test {
+
+using ::testing::HasSubstr;
+
+// A random 2-TBN: a random first slice over v0 … v(n−1); in the transition, each variable has up
+// to two parents among the earlier ones of its slice and up to two in the previous slice (any
+// variable, itself included), its tables from a flat Dirichlet (a zero among them with `zeros`).
+dynamic_network random_dynamic(std::uint64_t seed, std::size_t n, bool zeros = false) {
+  testing::random_network_options shape;
+  shape.nodes = n;
+  shape.max_parents = 2;
+  shape.max_states = 3;
+  const auto first = testing::random_network(seed, shape);
+  std::mt19937_64 engine(seed * 977);
+  std::exponential_distribution<double> gamma1(1.0);
+  std::vector<cpt<double>> tables;
+  for (std::size_t i = 0; i < n; ++i) {
+    std::vector<variable> parents;
+    for (std::size_t k = 0; k < i; ++k) {
+      if (engine() % 3 == 0 && parents.size() < 2) parents.push_back(first.variables()[k]);
+    }
+    std::size_t before = 0;
+    for (std::size_t k = 0; k < n && before < 2; ++k) {
+      if (engine() % 3 != 0) continue;
+      parents.push_back(detail::renamed(first.variables()[k], slice_name(first.variables()[k].name(), -1)));
+      ++before;
+    }
+    cpt<double> shape_of(first.variables()[i], parents);
+    const auto j = first.variables()[i].cardinality();
+    std::vector<double> values(shape_of.size());
+    for (std::size_t u = 0; u < shape_of.configurations(); ++u) {
+      double sum = 0.0;
+      for (std::size_t x = 0; x < j; ++x) {
+        values[u * j + x] = zeros && engine() % 4 == 0 ? 0.0 : gamma1(engine);
+        sum += values[u * j + x];
+      }
+      if (sum == 0.0) values[u * j] = sum = 1.0;
+      for (std::size_t x = 0; x < j; ++x) values[u * j + x] /= sum;
+    }
+    tables.emplace_back(first.variables()[i], parents, values);
+  }
+  return dynamic_network(first, tables);
+}
+
+// Random evidence at each of `horizon` steps: hard on about a third of the variables, soft on
+// some, do() on a few when `interventions`.
+std::vector<evidence_set> random_steps(const dynamic_network& model, std::size_t horizon, std::uint64_t seed,
+                                       bool interventions) {
+  std::mt19937_64 engine(seed);
+  std::uniform_real_distribution<double> weight(0.1, 2.0);
+  std::vector<evidence_set> steps(horizon);
+  for (auto& e : steps) {
+    for (std::size_t i = 0; i < model.size(); ++i) {
+      const variable_id id(static_cast<variable_id::rep>(i));
+      const auto states = model.variables()[i].cardinality();
+      const auto roll = engine() % 12;
+      if (roll < 4) {
+        e.hard.push_back({id, state_index(static_cast<state_index::rep>(engine() % states))});
+      } else if (roll == 4) {
+        std::vector<double> weights;
+        for (std::size_t s = 0; s < states; ++s) weights.push_back(weight(engine));
+        e.soft.push_back({id, weights});
+      } else if (roll == 5 && interventions) {
+        e.intervened.push_back({id, state_index(static_cast<state_index::rep>(engine() % states))});
+      }
+    }
+  }
+  return steps;
+}
+
+// The evidence of steps [0, upto) on the unrolled network: template id i at step t is X@t.
+evidence_set unrolled_evidence(const dynamic_network& model, const bayesian_network& unrolled,
+                               const std::vector<evidence_set>& steps, std::size_t upto) {
+  evidence_set all;
+  const auto at = [&](variable_id id, std::size_t t) {
+    return unrolled.id(slice_name(model.variables()[id.value()].name(), static_cast<long>(t)));
+  };
+  for (std::size_t t = 0; t < upto; ++t) {
+    for (const auto& o : steps[t].hard) all.hard.push_back({at(o.variable, t), o.state});
+    for (const auto& l : steps[t].soft) all.soft.push_back({at(l.variable, t), l.weights});
+    for (const auto& o : steps[t].intervened) all.intervened.push_back({at(o.variable, t), o.state});
+  }
+  return all;
+}
+
+// Every template variable's marginal at step t, from the engine on the unrolled network.
+std::vector<std::vector<double>> unrolled_marginals(const dynamic_network& model, junction_tree_engine<>& engine,
+                                                    std::size_t t) {
+  std::vector<std::vector<double>> result;
+  for (const auto& v : model.variables()) {
+    const variable_id one[] = {engine.model().id(slice_name(v.name(), static_cast<long>(t)))};
+    const auto answer = engine.joint(one);
+    result.emplace_back(answer.table.values().begin(), answer.table.values().end());
+  }
+  return result;
+}
+
+// An observed or intervened variable is the point it is set to (the engines are not asked about
+// one: they answer with no distribution of it).
+void expect_near(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b,
+                 const evidence_set& step = {}) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    const variable_id id(static_cast<variable_id::rep>(i));
+    if (step.fixes(id)) {
+      for (const auto* fixed : {&step.hard, &step.intervened}) {
+        for (const auto& o : *fixed) {
+          if (o.variable != id) continue;
+          for (std::size_t s = 0; s < a[i].size(); ++s) EXPECT_NEAR(a[i][s], s == o.state.value() ? 1.0 : 0.0, 1e-15);
+        }
+      }
+      continue;
+    }
+    ASSERT_EQ(a[i].size(), b[i].size());
+    for (std::size_t s = 0; s < a[i].size(); ++s) EXPECT_NEAR(a[i][s], b[i][s], 1e-9) << "variable " << i;
+  }
+}
+
+TEST(dynamic_inference_test, filtering_prediction_and_smoothing_equal_the_unrolled_junction_tree) {
+  for (std::uint64_t seed = 1; seed <= 24; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const auto model = random_dynamic(seed, 2 + seed % 4);
+    const std::size_t horizon = seed % 3 == 0 ? 20 : 1 + seed % 7;
+    const std::size_t predict = seed % 4;
+    const auto steps = random_steps(model, horizon, seed * 13, seed % 2 == 0);
+    interface_filter filter(model);
+    const auto filtered = filter.filter(steps, predict);
+    const auto smoothed = filter.smooth(steps);
+    ASSERT_EQ(filtered.steps.size(), horizon + predict);
+    ASSERT_EQ(smoothed.steps.size(), horizon);
+
+    const auto unrolled = model.unroll(horizon + predict);
+    junction_tree_engine<> engine(unrolled);
+    for (std::size_t t = 0; t < horizon + predict; ++t) {
+      SCOPED_TRACE("filtering, step " + std::to_string(t));
+      engine.set_evidence(unrolled_evidence(model, unrolled, steps, std::min(t + 1, horizon)));
+      expect_near(filtered.steps[t], unrolled_marginals(model, engine, t), t < horizon ? steps[t] : evidence_set{});
+    }
+    engine.set_evidence(unrolled_evidence(model, unrolled, steps, horizon));
+    EXPECT_NEAR(filtered.log_evidence_probability, engine.log_probability_of_evidence(), 1e-9);
+    EXPECT_NEAR(smoothed.log_evidence_probability, engine.log_probability_of_evidence(), 1e-9);
+    for (std::size_t t = 0; t < horizon; ++t) {
+      SCOPED_TRACE("smoothing, step " + std::to_string(t));
+      expect_near(smoothed.steps[t], unrolled_marginals(model, engine, t), steps[t]);
+    }
+  }
+}
+
+TEST(dynamic_inference_test, zeros_in_the_tables_and_kept_messages_between_episodes) {
+  // One filter over several episodes: what a step leaves in the trees must not leak into the next.
+  std::size_t impossible = 0;
+  std::size_t checked = 0;
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const auto model = random_dynamic(seed + 100, 3 + seed % 3, true);
+    interface_filter filter(model);
+    for (std::uint64_t episode = 0; episode < 3; ++episode) {
+      const std::size_t horizon = 3 + (seed + episode) % 5;
+      const auto steps = random_steps(model, horizon, seed * 101 + episode, false);
+      const auto unrolled = model.unroll(horizon);
+      junction_tree_engine<> engine(unrolled);
+      engine.set_evidence(unrolled_evidence(model, unrolled, steps, horizon));
+      if (!std::isfinite(engine.log_probability_of_evidence())) {
+        EXPECT_THROW(static_cast<void>(filter.smooth(steps)), impossible_evidence);
+        ++impossible;
+        continue;
+      }
+      ++checked;
+      const auto smoothed = filter.smooth(steps);
+      for (std::size_t t = 0; t < horizon; ++t) {
+        expect_near(smoothed.steps[t], unrolled_marginals(model, engine, t), steps[t]);
+      }
+    }
+  }
+  EXPECT_GT(impossible, 0U);
+  EXPECT_GT(checked, 10U);
+}
+
+TEST(dynamic_inference_test, the_interface_is_what_the_next_slice_depends_on) {
+  const auto model = random_dynamic(5, 4);
+  interface_filter filter(model);
+  std::vector<variable_id> expected;
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    const auto name = slice_name(model.variables()[i].name(), -1);
+    for (const auto& table : model.transition_tables()) {
+      const auto& parents = table.parents();
+      if (std::any_of(parents.begin(), parents.end(), [&](const variable& p) { return p.name() == name; })) {
+        expected.push_back(variable_id(static_cast<variable_id::rep>(i)));
+        break;
+      }
+    }
+  }
+  EXPECT_EQ(filter.interface(), expected);
+}
+
+TEST(dynamic_inference_test, evidence_of_probability_zero_names_its_step) {
+  // a stays as it was: a@-1 → a with the identity; seeing a = on after a = off is impossible.
+  const variable a("a", {"off", "on"});
+  const variable a_before("a@-1", {"off", "on"});
+  const dynamic_network model(bayesian_network::from_tables({cpt<double>(a, {}, {0.5, 0.5})}),
+                              {cpt<double>(a, {a_before}, {1.0, 0.0, 0.0, 1.0})});
+  interface_filter filter(model);
+  std::vector<evidence_set> steps(4);
+  steps[1].hard.push_back({variable_id(0), state_index(0)});
+  steps[3].hard.push_back({variable_id(0), state_index(1)});
+  EXPECT_THAT([&] { static_cast<void>(filter.filter(steps)); },
+              ::testing::ThrowsMessage<impossible_evidence>(HasSubstr("the evidence at step 3 (a=on)")));
+  steps[3].hard.clear();
+  const auto filtered = filter.filter(steps);
+  EXPECT_NEAR(filtered.steps[3][0][0], 1.0, 1e-15);
+  EXPECT_NEAR(filtered.log_evidence_probability, std::log(0.5), 1e-15);
+}
+
+}  // namespace dynamic_inference_test
+}  // namespace pgm
