@@ -117,6 +117,7 @@ int main(int argc, char** argv) {
   pgm::cli::add_check_command(app);
   pgm::cli::add_sample_command(app);
   pgm::cli::add_unroll_command(app);
+  pgm::cli::add_filter_command(app);
   std::exception_ptr failure;
   try {
     app.parse(argc, argv);

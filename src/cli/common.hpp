@@ -148,5 +148,6 @@ void add_dsep_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_sample_command(CLI::App& app);
 void add_unroll_command(CLI::App& app);
+void add_filter_command(CLI::App& app);
 
 }  // namespace pgm::cli

@@ -15,6 +15,9 @@
 
 #include "pgm/core/dynamic_network.hpp"
 #include "pgm/inference/junction_tree_engine.hpp"
+#include "pgm/io/csv.hpp"
+#include "pgm/io/json_model.hpp"
+#include "support/program_test.hpp"
 #include "support/random_network.hpp"
 
 namespace pgm {
@@ -229,6 +232,82 @@ TEST(dynamic_inference_test, evidence_of_probability_zero_names_its_step) {
   const auto filtered = filter.filter(steps);
   EXPECT_NEAR(filtered.steps[3][0][0], 1.0, 1e-15);
   EXPECT_NEAR(filtered.log_evidence_probability, std::log(0.5), 1e-15);
+}
+
+using filter_cli_test = pgm::testing::program_test;
+
+// pgm filter on a random 2-TBN and one episode with gaps: every row it writes is the unrolled
+// junction tree's marginal, for filtering, smoothing and prediction; bad input is refused with
+// nothing written.
+TEST_F(filter_cli_test, writes_the_unrolled_trees_marginals_and_refuses_bad_input) {
+  const auto model = random_dynamic(7, 3);
+  const auto model_file = file("m.json", to_json(model).dump(2));
+  std::mt19937_64 engine(3);
+  std::string data = "episode,t";
+  for (const auto& v : model.variables()) data += "," + v.name();
+  data += "\n";
+  std::vector<evidence_set> steps(6);
+  for (std::size_t t = 0; t < steps.size(); ++t) {
+    data += "e7," + std::to_string(t);
+    for (std::size_t i = 0; i < model.size(); ++i) {
+      data += ",";
+      if (engine() % 2 == 0) continue;  // unobserved: an empty cell
+      const auto s = engine() % model.variables()[i].cardinality();
+      data += model.variables()[i].states()[s];
+      steps[t].hard.push_back(
+          {variable_id(static_cast<variable_id::rep>(i)), state_index(static_cast<state_index::rep>(s))});
+    }
+    data += "\n";
+  }
+  const auto episode = file("episode.csv", data);
+  for (const std::string mode : {"", " --smooth", " --predict 3"}) {
+    SCOPED_TRACE(mode);
+    const auto r = run("filter --model " + model_file.string() + " --data " + episode.string() + mode +
+                       " --digits 17 --out " + path("out.csv").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("ln P(evidence) = "));
+    const std::size_t horizon = steps.size() + (mode == " --predict 3" ? 3 : 0);
+    const auto unrolled = model.unroll(horizon);
+    junction_tree_engine<> exact(unrolled);
+    const auto rows = read_csv(path("out.csv"));
+    ASSERT_GT(rows.rows(), 0U);
+    const auto t = rows.continuous("t").values();
+    std::size_t expected_rows = 0;
+    for (std::size_t step = 0; step < horizon; ++step) {
+      const auto upto = mode == " --smooth" ? steps.size() : std::min(step + 1, steps.size());
+      exact.set_evidence(unrolled_evidence(model, unrolled, steps, upto));
+      const auto marginals = unrolled_marginals(model, exact, step);
+      for (std::size_t i = 0; i < model.size(); ++i) {
+        if (step < steps.size() && steps[step].fixes(variable_id(static_cast<variable_id::rep>(i)))) continue;
+        for (std::size_t s = 0; s < marginals[i].size(); ++s, ++expected_rows) {
+          ASSERT_LT(expected_rows, rows.rows());
+          EXPECT_EQ(t[expected_rows], static_cast<double>(step));
+          EXPECT_EQ(rows.discrete("variable").label(expected_rows), model.variables()[i].name());
+          EXPECT_EQ(rows.discrete("state").label(expected_rows), model.variables()[i].states()[s]);
+          EXPECT_NEAR(rows.continuous("probability").values()[expected_rows], marginals[i][s], 1e-12);
+        }
+      }
+    }
+    EXPECT_EQ(rows.rows(), expected_rows);
+  }
+  EXPECT_EQ(run("filter --help").code, 0);
+  const auto refused = [&](const std::string& csv, const std::string& extra, const std::string& message) {
+    const auto bad = file("bad.csv", csv);
+    expect_failure("filter --model " + model_file.string() + " --data " + bad.string() + extra + " --out " +
+                       path("refused.csv").string(),
+                   message, path("refused.csv"));
+  };
+  const auto& v0 = model.variables()[0];
+  refused("episode,t," + v0.name() + "\ne,0,\ne,2,\n", "", "row 2 has t = 2 where 1 was expected");
+  refused("episode,t," + v0.name() + "\ne,0,\nf,1,\n", "", "pgm filter answers one episode at a time");
+  refused("episode,t,nope\ne,0,\n", "", "'nope' is not a variable of the model");
+  refused("episode," + v0.name() + "\ne,\n", "", "the data have no column t");
+  refused("episode,t," + v0.name() + "\ne,0,\n", " --do " + v0.name() + "@5=" + v0.states()[0], "the step must be");
+  refused("episode,t," + v0.name() + "\ne,0,\n", " --smooth --predict 2", "--smooth excludes --predict");
+  const auto static_model = file("s.json", to_json(model.initial()).dump(2));
+  expect_failure("filter --model " + static_model.string() + " --data " + episode.string() + " --out " +
+                     path("refused.csv").string(),
+                 "not a dynamic one", path("refused.csv"));
 }
 
 }  // namespace dynamic_inference_test
