@@ -47,7 +47,9 @@ inline void walk_table(std::span<const std::size_t> cards, std::span<const std::
     visit(std::size_t{0}, std::size_t{0});
     return;
   }
-  const auto [inner, step] = fused.front();
+  // Plain variables, not a structured binding: clang 14 cannot capture one in the lambda.
+  const std::size_t inner = fused.front().first;
+  const std::size_t step = fused.front().second;
   const auto run = [&](std::size_t i, std::size_t j) {
     if (step == 0) {
       for (std::size_t k = 0; k < inner; ++k) visit(i + k, j);
