@@ -4,7 +4,7 @@ the one before), read from pgm's JSON model of "kind": "dynamic" (docs/dynamic.m
 it into a pgm.Network of T slices whose variables are named X@0 … X@(T−1)."""
 
 from . import _core
-from ._checks import _path, _whole
+from ._checks import _did_you_mean, _evidence, _path, _whole
 
 
 class DynamicNetwork:
@@ -43,6 +43,73 @@ class DynamicNetwork:
         from . import Network
 
         return Network(self._model.unroll(_whole(steps, "steps", 1, 1 << 20)))
+
+    def filter(self, data, predict=0, do=None):
+        """Every variable's distribution at each step of one episode given the steps up to it,
+        P(X_t | e_0..t), then `predict` steps past its end, by the interface algorithm: two junction
+        trees compiled once, so a step costs the same however long the episode (docs/dynamic.md).
+
+        data: a DataFrame with one row per step, in order, and a column per observed template
+        variable (a missing value is unobserved); an "episode" column (one value) and a "t" column
+        (0, 1, … in order) may be there, as pgm filter reads them. do: {"x@3": "on"} sets x at step
+        3, its table left out there. Returns a DataFrame of t, variable, state, probability for
+        every variable neither observed nor set at that step; attrs["log_evidence_probability"]
+        is ln P(evidence)."""
+        return self._over_time(data, _whole(predict, "predict", 0, 1 << 20), do, smooth=False)
+
+    def smooth(self, data, do=None):
+        """Every variable's distribution at each step given the whole episode, P(X_t | e_0..T−1);
+        data and do as filter takes them."""
+        return self._over_time(data, 0, do, smooth=True)
+
+    def _over_time(self, data, predict, do, smooth):
+        import pandas as pd
+
+        if not isinstance(data, pd.DataFrame):
+            raise TypeError(f"data must be a pandas DataFrame with one row per step, got {type(data).__name__}")
+        names = self.variables
+        for column in data.columns:
+            if column not in ("episode", "t") and column not in names:
+                raise _core.Error(
+                    f"data: column '{column}' is neither episode, t nor a variable of the model{_did_you_mean(str(column), names)}"
+                )
+        if "episode" in data.columns and data["episode"].nunique(dropna=False) > 1:
+            raise _core.Error("data: the rows are of several episodes; filter answers one episode at a time")
+        if "t" in data.columns:
+            for row, t in enumerate(data["t"]):
+                if pd.isna(t) or float(t) != row:
+                    raise _core.Error(f"data: row {row} has t = {t} where {row} was expected (t = 0, 1, 2, … in order)")
+        observed = []
+        variables = [c for c in data.columns if c in names]
+        for values in data[variables].itertuples(index=False, name=None):
+            observed.append({name: str(v) for name, v in zip(variables, values) if not pd.isna(v)})
+        interventions = []
+        for key, state in _evidence(do, "do").items():
+            name, at, step = key.rpartition("@")[0], "@" in key, key.rpartition("@")[2]
+            if not at or not step.isdigit():
+                raise _core.Error(f"do: '{key}' is not variable@step (e.g. 'x@3')")
+            step = int(step)
+            if step >= len(observed) + predict:
+                raise _core.Error(f"do: '{key}': the step must be from 0 to {len(observed) + predict - 1}")
+            while len(interventions) <= step:
+                interventions.append({})
+            interventions[step][name] = state
+        if smooth and len(interventions) > len(observed):
+            raise _core.Error("do: a step past the data is not smoothed; filter with predict reaches it")
+        steps, log_evidence = self._model.filter(observed, interventions, predict, smooth)
+        rows = []
+        for t, marginals in enumerate(steps):
+            fixed = set(observed[t]) if t < len(observed) else set()
+            if t < len(interventions):
+                fixed |= set(interventions[t])
+            for name, probabilities in zip(names, marginals):
+                if name in fixed:
+                    continue
+                for state, p in zip(self.states(name), probabilities):
+                    rows.append((t, name, state, p))
+        answer = pd.DataFrame(rows, columns=["t", "variable", "state", "probability"])
+        answer.attrs["log_evidence_probability"] = log_evidence
+        return answer
 
     def write(self, path):
         """Writes the model as pgm's JSON ("kind": "dynamic"), atomically."""

@@ -5,13 +5,17 @@
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "network_handle.hpp"
 #include "pgm/core/dynamic_network.hpp"
 #include "pgm/core/file.hpp"
+#include "pgm/inference/dynamic_inference.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 
@@ -25,6 +29,45 @@ py::object read_dynamic_json(const std::filesystem::path& path) {
   const auto text = read_model_text(path);
   if (declared_model_kind(text) != "dynamic") return py::none();
   return py::cast(parse_dynamic_json(text, path.string()));
+}
+
+using step_evidence = std::vector<std::map<std::string, std::string>>;  // per step: {variable: state}
+using step_interventions = std::vector<std::map<std::string, std::string>>;
+
+/// The evidence of each step over the template variables' ids; a step of `intervened` past the
+/// observed ones adds steps (prediction reaches them).
+std::vector<evidence_set> resolve_steps(const dynamic_network& d, const step_evidence& observed,
+                                        const step_interventions& intervened) {
+  std::vector<evidence_set> steps(std::max(observed.size(), intervened.size()));
+  const auto add = [&](const step_evidence& given, bool by_do) {
+    for (std::size_t t = 0; t < given.size(); ++t) {
+      for (const auto& [name, state] : given[t]) {
+        const auto id = d.initial().id(name);  // an unknown name is an error saying the closest
+        const auto s = d.variables()[id.value()].state(state);
+        (by_do ? steps[t].intervened : steps[t].hard).push_back({id, s});
+      }
+    }
+  };
+  add(observed, false);
+  add(intervened, true);
+  return steps;
+}
+
+/// ([step][variable][probability], ln P(evidence)) of filtering (with `predict` steps more) or
+/// smoothing.
+std::pair<std::vector<std::vector<std::vector<double>>>, double> filter_steps(const dynamic_network& d,
+                                                                              const step_evidence& observed,
+                                                                              const step_interventions& intervened,
+                                                                              std::size_t predict, bool smooth) {
+  const auto steps = resolve_steps(d, observed, intervened);
+  dynamic_marginals answer;
+  {
+    const py::gil_scoped_release release;
+    interface_filter filter(d);
+    const auto beyond = predict > steps.size() - observed.size() ? predict - (steps.size() - observed.size()) : 0;
+    answer = smooth ? filter.smooth(steps) : filter.filter(steps, beyond);
+  }
+  return {std::move(answer.steps), answer.log_evidence_probability};
 }
 
 }  // namespace
@@ -52,6 +95,7 @@ void add_dynamic(py::module_& m) {
            [](const dynamic_network& d, std::size_t slices) {
              return network_handle{d.unroll(slices), {}, {}, {}};
            })
+      .def("filter", &filter_steps)
       .def("to_json", [](const dynamic_network& d) { return to_json(d).dump(2); })
       .def("write", [](const dynamic_network& d, const std::filesystem::path& path) {
         const auto text = to_json(d).dump(2) + "\n";

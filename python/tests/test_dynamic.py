@@ -46,3 +46,51 @@ def test_bad_input_is_an_error_naming_it(tmp_path):
     (tmp_path / "later.json").write_text(text)
     with pytest.raises(pgm.Error, match=r"/transition/edges/0: the parent 'a@\+1' of 'a' lies in a later slice"):
         pgm.read_network(tmp_path / "later.json")
+
+
+def test_filter_and_smooth_equal_the_unrolled_networks_engine(tmp_path):
+    import pandas as pd
+
+    model = pgm.read_network(example(tmp_path))
+    data = pd.DataFrame({"episode": ["e"] * 4, "t": [0, 1, 2, 3], "a": [None, "on", None, None],
+                         "b": ["high", None, None, "low"]})
+    observed = [(t, v, s) for t, row in data.iterrows() for v, s in (("a", row["a"]), ("b", row["b"])) if s]
+    unrolled = model.unroll(6)
+    engine = pgm.InferenceEngine(unrolled, "jt")
+    filtered = model.filter(data, predict=2)
+    smoothed = model.smooth(data)
+    assert filtered.attrs["log_evidence_probability"] == pytest.approx(smoothed.attrs["log_evidence_probability"])
+    for answer, smooth in ((filtered, False), (smoothed, True)):
+        assert list(answer.columns) == ["t", "variable", "state", "probability"]
+        assert not any((t, v) == (o[0], o[1]) for o in observed for t, v in zip(answer["t"], answer["variable"]))
+        for t, variable, state, p in answer.itertuples(index=False):
+            known = {f"{v}@{u}": s for u, v, s in observed if smooth or u <= t}
+            engine.set_evidence(known)
+            assert p == pytest.approx(engine.marginal(f"{variable}@{t}")[state], abs=1e-12)
+    assert sorted(set(filtered["t"])) == [0, 1, 2, 3, 4, 5]
+    engine.set_evidence({f"{v}@{u}": s for u, v, s in observed})
+    assert filtered.attrs["log_evidence_probability"] == pytest.approx(engine.log_probability_of_evidence(), abs=1e-12)
+    # do() at a step: that variable leaves the answer there, its table left out.
+    moved = model.filter(data, predict=2, do={"a@4": "off"})
+    assert not ((moved["t"] == 4) & (moved["variable"] == "a")).any()
+    assert moved[(moved["t"] == 5) & (moved["variable"] == "a") & (moved["state"] == "off")]["probability"].item() == (
+        pytest.approx(0.9)
+    )
+
+
+def test_filter_refuses_what_it_cannot_read(tmp_path):
+    import pandas as pd
+
+    model = pgm.read_network(example(tmp_path))
+    with pytest.raises(TypeError, match="DataFrame"):
+        model.filter([{"a": "on"}])
+    with pytest.raises(pgm.Error, match="column 'c' is neither episode, t nor a variable of the model"):
+        model.filter(pd.DataFrame({"c": ["on"]}))
+    with pytest.raises(pgm.Error, match="one episode at a time"):
+        model.filter(pd.DataFrame({"episode": ["x", "y"], "a": ["on", "off"]}))
+    with pytest.raises(pgm.Error, match="row 1 has t = 2"):
+        model.filter(pd.DataFrame({"t": [0, 2], "a": ["on", "off"]}))
+    with pytest.raises(pgm.Error, match="no state 'maybe'"):
+        model.filter(pd.DataFrame({"a": ["maybe"]}))
+    with pytest.raises(pgm.Error, match="the step must be from 0 to 0"):
+        model.filter(pd.DataFrame({"a": ["on"]}), do={"a@3": "on"})
