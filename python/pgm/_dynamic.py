@@ -62,7 +62,50 @@ class DynamicNetwork:
         data and do as filter takes them."""
         return self._over_time(data, 0, do, smooth=True)
 
+    def most_probable_sequence(self, data, do=None):
+        """The most probable joint state of every variable at every step given the episode
+        (Viterbi through the interface); data and do as filter takes them. Returns a DataFrame of
+        t, variable, state for every variable neither observed nor set at that step;
+        attrs["log_probability"] is ln P(x*, evidence)."""
+        import pandas as pd
+
+        observed, interventions = self._steps(data, do, 0)
+        if len(interventions) > len(observed):
+            raise _core.Error("do: a step past the data has no most probable state; filter with predict reaches it")
+        states, log_probability = self._model.most_probable(observed, interventions)
+        rows = []
+        for t, chosen in enumerate(states):
+            fixed = set(observed[t]) | (set(interventions[t]) if t < len(interventions) else set())
+            for name, state in zip(self.variables, chosen):
+                if name not in fixed:
+                    rows.append((t, name, self.states(name)[state]))
+        answer = pd.DataFrame(rows, columns=["t", "variable", "state"])
+        answer.attrs["log_probability"] = log_probability
+        return answer
+
     def _over_time(self, data, predict, do, smooth):
+        import pandas as pd
+
+        observed, interventions = self._steps(data, do, predict)
+        if smooth and len(interventions) > len(observed):
+            raise _core.Error("do: a step past the data is not smoothed; filter with predict reaches it")
+        steps, log_evidence = self._model.filter(observed, interventions, predict, smooth)
+        rows = []
+        for t, marginals in enumerate(steps):
+            fixed = set(observed[t]) if t < len(observed) else set()
+            if t < len(interventions):
+                fixed |= set(interventions[t])
+            for name, probabilities in zip(self.variables, marginals):
+                if name in fixed:
+                    continue
+                for state, p in zip(self.states(name), probabilities):
+                    rows.append((t, name, state, p))
+        answer = pd.DataFrame(rows, columns=["t", "variable", "state", "probability"])
+        answer.attrs["log_evidence_probability"] = log_evidence
+        return answer
+
+    def _steps(self, data, do, predict):
+        """Each step's observed states from the DataFrame and each step's do() from the dict."""
         import pandas as pd
 
         if not isinstance(data, pd.DataFrame):
@@ -94,22 +137,7 @@ class DynamicNetwork:
             while len(interventions) <= step:
                 interventions.append({})
             interventions[step][name] = state
-        if smooth and len(interventions) > len(observed):
-            raise _core.Error("do: a step past the data is not smoothed; filter with predict reaches it")
-        steps, log_evidence = self._model.filter(observed, interventions, predict, smooth)
-        rows = []
-        for t, marginals in enumerate(steps):
-            fixed = set(observed[t]) if t < len(observed) else set()
-            if t < len(interventions):
-                fixed |= set(interventions[t])
-            for name, probabilities in zip(names, marginals):
-                if name in fixed:
-                    continue
-                for state, p in zip(self.states(name), probabilities):
-                    rows.append((t, name, state, p))
-        answer = pd.DataFrame(rows, columns=["t", "variable", "state", "probability"])
-        answer.attrs["log_evidence_probability"] = log_evidence
-        return answer
+        return observed, interventions
 
     def write(self, path):
         """Writes the model as pgm's JSON ("kind": "dynamic"), atomically."""

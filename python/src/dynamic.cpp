@@ -70,6 +70,20 @@ std::pair<std::vector<std::vector<std::vector<double>>>, double> filter_steps(co
   return {std::move(answer.steps), answer.log_evidence_probability};
 }
 
+/// ([step][variable] state index, ln P(x*, e)) of the most probable sequence.
+std::pair<std::vector<std::vector<std::size_t>>, double> most_probable_steps_of(const dynamic_network& d,
+                                                                                const step_evidence& observed,
+                                                                                const step_interventions& intervened) {
+  const auto steps = resolve_steps(d, observed, intervened);
+  most_probable_steps best;
+  {
+    const py::gil_scoped_release release;
+    interface_filter filter(d);
+    best = filter.most_probable(steps);
+  }
+  return {std::move(best.states), best.log_probability};
+}
+
 }  // namespace
 
 void add_dynamic(py::module_& m) {
@@ -96,6 +110,7 @@ void add_dynamic(py::module_& m) {
              return network_handle{d.unroll(slices), {}, {}, {}};
            })
       .def("filter", &filter_steps)
+      .def("most_probable", &most_probable_steps_of)
       .def("to_json", [](const dynamic_network& d) { return to_json(d).dump(2); })
       .def("write", [](const dynamic_network& d, const std::filesystem::path& path) {
         const auto text = to_json(d).dump(2) + "\n";

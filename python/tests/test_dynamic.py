@@ -1,6 +1,7 @@
 """pgm.DynamicNetwork: read from pgm's JSON of "kind": "dynamic" (docs/dynamic.md's example),
 unrolled into a Network whose slices follow the transition, written back the same."""
 
+import math
 import re
 
 import pytest
@@ -94,3 +95,18 @@ def test_filter_refuses_what_it_cannot_read(tmp_path):
         model.filter(pd.DataFrame({"a": ["maybe"]}))
     with pytest.raises(pgm.Error, match="the step must be from 0 to 0"):
         model.filter(pd.DataFrame({"a": ["on"]}), do={"a@3": "on"})
+
+
+def test_the_most_probable_sequence_is_the_unrolled_networks_most_probable_explanation(tmp_path):
+    import pandas as pd
+
+    model = pgm.read_network(example(tmp_path))
+    data = pd.DataFrame({"a": [None, "on", None, None, None], "b": ["high", None, None, "low", None]})
+    best = model.most_probable_sequence(data)
+    engine = pgm.InferenceEngine(model.unroll(5), "jt")
+    engine.set_evidence({"b@0": "high", "a@1": "on", "b@3": "low"})
+    states, probability = engine.mpe()
+    assert {f"{v}@{t}": s for t, v, s in best.itertuples(index=False)} == states
+    # ln P(x*, e) = ln P(x* | e) + ln P(e)
+    expected = math.log(probability) + engine.log_probability_of_evidence()
+    assert best.attrs["log_probability"] == pytest.approx(expected, abs=1e-12)

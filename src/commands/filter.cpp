@@ -24,6 +24,7 @@ struct filter_arguments {
   std::string model;
   std::string data;
   bool smooth = false;
+  bool most_probable = false;
   std::size_t predict = 0;
   std::string query;
   std::string intervene;
@@ -130,21 +131,49 @@ void add_interventions(const dynamic_network& model, const std::string& list, st
   }
 }
 
+/// The most probable sequence: t,variable,state for the variables asked and not observed nor set,
+/// P(x*, e) on standard error.
+void write_most_probable(const dynamic_network& model, const most_probable_steps& best,
+                         const std::vector<evidence_set>& steps, const std::vector<char>& asked,
+                         const filter_arguments& args) {
+  std::ostringstream table;
+  table << "t,variable,state\n";
+  for (std::size_t t = 0; t < best.states.size(); ++t) {
+    for (std::size_t i = 0; i < model.size(); ++i) {
+      if (!asked[i] || steps[t].fixes(variable_id(static_cast<variable_id::rep>(i)))) continue;
+      const auto& v = model.variables()[i];
+      table << t << ',' << text::csv_escape(v.name(), ',') << ','
+            << text::csv_escape(v.states()[best.states[t][i]], ',') << '\n';
+    }
+  }
+  note("P(x*, e) = " + text::format_short(std::exp(best.log_probability), args.digits) +
+       ", ln P(x*, e) = " + text::format_double(best.log_probability));
+  std::ostringstream summary;
+  summary << "the most probable sequence of " << steps.size() << " steps of " << args.data << " -> " << args.out
+          << '\n';
+  pgm::write_file_atomically(
+      args.out, [&](std::ostream& out) { out << table.str(); }, summary_before_replacing(summary.str(), args.out));
+}
+
 void run_filter(const filter_arguments& args) {
   pgm::check_output_path(args.out);
   const auto model = read_dynamic(args.model);
   auto steps = read_episode(model, args.data);
   const std::size_t observed_steps = steps.size();
   if (!args.intervene.empty()) add_interventions(model, args.intervene, steps, args.predict);
-  if (steps.size() > observed_steps && args.smooth) {
+  if (steps.size() > observed_steps && (args.smooth || args.most_probable)) {
     throw error("--do: a step past the data (" + std::to_string(observed_steps) +
-                " steps) is not smoothed; use --predict");
+                " steps) is reached only by --predict");
   }
   std::vector<char> asked(model.size(), args.query.empty() ? 1 : 0);
   if (!args.query.empty()) {
     for (const auto& name : split_list(args.query, "--query")) asked[template_id(model, name, "--query").value()] = 1;
   }
   interface_filter filter(model);
+  if (args.most_probable) {
+    write_most_probable(model, filter.most_probable(steps), steps, asked, args);
+    return;
+  }
   const std::size_t beyond =
       args.predict > steps.size() - observed_steps ? args.predict - (steps.size() - observed_steps) : 0;
   const auto answer = args.smooth ? filter.smooth(steps) : filter.filter(steps, beyond);
@@ -192,9 +221,14 @@ void add_filter_command(CLI::App& app) {
       ->required();
   auto* smooth =
       cmd->add_flag("--smooth", args->smooth, "Condition every step on the whole episode, not on the steps up to it");
+  auto* most_probable = cmd->add_flag("--most-probable", args->most_probable,
+                                      "Write the most probable sequence instead: t,variable,state for the unobserved "
+                                      "variables, P(x*, e) on standard error");
+  most_probable->excludes(smooth);
   cmd->add_option("--predict", args->predict, "Steps past the data to predict, without evidence (default 0)")
       ->check(whole_number(0, max_unrolled_variables))
-      ->excludes(smooth);
+      ->excludes(smooth)
+      ->excludes(most_probable);
   cmd->add_option("--query", args->query, "Only these variables, comma-separated (default: every one)");
   cmd->add_option("--do", args->intervene,
                   "Interventions at steps: x@3=on,y@0=off (the variable's table left out there)");

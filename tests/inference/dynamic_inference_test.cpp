@@ -7,6 +7,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "pgm/core/dynamic_network.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/inference/junction_tree_engine.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/io/json_model.hpp"
@@ -169,6 +171,36 @@ TEST(dynamic_inference_test, filtering_prediction_and_smoothing_equal_the_unroll
   }
 }
 
+// The most probable sequence: its ln P(x*, e) is the unrolled tree's most probable explanation's,
+// and so is every state (random tables leave no ties), observed and set ones as given.
+TEST(dynamic_inference_test, the_most_probable_sequence_is_the_unrolled_trees_most_probable_explanation) {
+  for (std::uint64_t seed = 1; seed <= 24; ++seed) {
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    const auto model = random_dynamic(seed + 50, 2 + seed % 4);
+    const std::size_t horizon = seed % 3 == 0 ? 20 : 1 + seed % 7;
+    const auto steps = random_steps(model, horizon, seed * 17, seed % 2 == 0);
+    interface_filter filter(model);
+    const auto best = filter.most_probable(steps);
+    ASSERT_EQ(best.states.size(), horizon);
+    const auto unrolled = model.unroll(horizon);
+    junction_tree_engine<> engine(unrolled);
+    engine.set_evidence(unrolled_evidence(model, unrolled, steps, horizon));
+    const auto expected = engine.mpe();
+    EXPECT_NEAR(best.log_probability, expected.log_joint_probability, 1e-9);
+    for (std::size_t k = 0; k < expected.variables.size(); ++k) {
+      const auto& name = expected.variables[k].name();
+      const auto at = name.rfind('@');
+      const auto t = std::stoul(name.substr(at + 1));
+      const auto i = model.initial().id(name.substr(0, at)).value();
+      EXPECT_EQ(best.states[t][i], expected.states[k].value()) << name;
+    }
+    for (std::size_t t = 0; t < horizon; ++t) {
+      for (const auto& o : steps[t].hard) EXPECT_EQ(best.states[t][o.variable.value()], o.state.value());
+      for (const auto& o : steps[t].intervened) EXPECT_EQ(best.states[t][o.variable.value()], o.state.value());
+    }
+  }
+}
+
 TEST(dynamic_inference_test, zeros_in_the_tables_and_kept_messages_between_episodes) {
   // One filter over several episodes: what a step leaves in the trees must not leak into the next.
   std::size_t impossible = 0;
@@ -289,6 +321,29 @@ TEST_F(filter_cli_test, writes_the_unrolled_trees_marginals_and_refuses_bad_inpu
       }
     }
     EXPECT_EQ(rows.rows(), expected_rows);
+  }
+  {
+    // The most probable sequence: the unrolled tree's most probable explanation, row by row.
+    const auto r = run("filter --model " + model_file.string() + " --data " + episode.string() +
+                       " --most-probable --out " + path("best.csv").string());
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_THAT(r.err, HasSubstr("ln P(x*, e) = "));
+    const auto unrolled = model.unroll(steps.size());
+    junction_tree_engine<> exact(unrolled);
+    exact.set_evidence(unrolled_evidence(model, unrolled, steps, steps.size()));
+    const auto expected = exact.mpe();
+    const auto rows = read_csv(path("best.csv"));
+    ASSERT_EQ(rows.rows(), expected.variables.size());
+    for (std::size_t k = 0; k < rows.rows(); ++k) {
+      const auto name =
+          rows.discrete("variable").label(k) + "@" + text::format_double(rows.continuous("t").values()[k]);
+      const auto at = std::find(expected.variables.begin(), expected.variables.end(),
+                                unrolled.variables()[unrolled.id(name).value()]);
+      ASSERT_NE(at, expected.variables.end()) << name;
+      EXPECT_EQ(rows.discrete("state").label(k),
+                at->states()[expected.states[static_cast<std::size_t>(at - expected.variables.begin())].value()])
+          << name;
+    }
   }
   EXPECT_EQ(run("filter --help").code, 0);
   const auto refused = [&](const std::string& csv, const std::string& extra, const std::string& message) {

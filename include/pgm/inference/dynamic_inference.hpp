@@ -13,6 +13,9 @@
 /// - prediction: the same steps past the last, without evidence;
 /// - smoothing: P(X_t | e_0..T−1), forward then backward: β_t(I_t) = P(e_t+1..T−1 | I_t) enters the
 ///   tree as a factor over slice t's interface;
+/// - the most probable sequence: the joint state of every variable at every step of highest
+///   probability with the evidence (Viterbi through the interface): max-product forward, then
+///   back, each step maximised with its interface held at the state the next step chose;
 /// - do(X = x) at a step: the intervention of that step's propagation (X's table left out).
 ///
 /// Evidence is given per step over the template variables' ids.
@@ -38,6 +41,12 @@ struct dynamic_marginals {
   double log_evidence_probability = 0.0;  ///< ln P(every step's evidence)
 };
 
+/// The most probable joint state of every template variable at every step: [step][variable].
+struct most_probable_steps {
+  std::vector<std::vector<std::size_t>> states;
+  double log_probability = 0.0;  ///< ln P(x*, every step's evidence)
+};
+
 class interface_filter {
  public:
   /// Compiles the two trees. Throws table_too_large as a junction tree does.
@@ -54,6 +63,10 @@ class interface_filter {
 
   /// P(X_t | e_0..T−1) for every step t.
   [[nodiscard]] PGM_DECL dynamic_marginals smooth(std::span<const evidence_set> steps);
+
+  /// The most probable joint state of every variable at every step given the evidence (ties
+  /// settled the same way every time). Throws impossible_evidence as filter does.
+  [[nodiscard]] PGM_DECL most_probable_steps most_probable(std::span<const evidence_set> steps);
 
  private:
   struct step_answer {
@@ -74,8 +87,13 @@ class interface_filter {
 
   /// Sets factor f of `in` to `values` unless `now` (what it holds) is the same already: each set
   /// drops the messages from its clique.
-  static void set_if_changed(propagation<sum_product<double>>& in, std::size_t f, const std::vector<double>& values,
-                             std::vector<double>& now);
+  template <class Propagation>
+  static void set_if_changed(Propagation& in, std::size_t f, const std::vector<double>& values,
+                             std::vector<double>& now) {
+    if (values == now) return;
+    in.set_factor(f, values);
+    now = values;
+  }
 
   dynamic_network model_;
   std::vector<variable_id> interface_;
@@ -83,8 +101,11 @@ class interface_filter {
   std::vector<variable_id> previous_interface_;  ///< the interface's ids in the transition's tree
   std::unique_ptr<propagation<sum_product<double>>> first_;
   std::unique_ptr<propagation<sum_product<double>>> transition_;
+  // The same trees in max-product, for the most probable sequence.
+  std::unique_ptr<propagation<max_product<double>>> first_max_;
+  std::unique_ptr<propagation<max_product<double>>> transition_max_;
   // What the prior and β factors of each tree hold now.
-  std::vector<double> first_future_, transition_prior_, transition_future_;
+  std::vector<double> first_future_, transition_prior_, transition_future_, max_prior_;
 };
 
 }  // namespace pgm

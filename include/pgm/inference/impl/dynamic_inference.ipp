@@ -17,21 +17,20 @@ namespace pgm {
 
 namespace detail {
 
-/// A tree and its propagation over these factors.
-inline std::unique_ptr<propagation<sum_product<double>>> propagation_over(
-    std::vector<std::size_t> cardinalities, std::vector<factor_of<sum_product<double>>> factors,
-    const junction_tree_options& options) {
+/// The junction tree of these factors, over variables of these cardinalities.
+inline std::shared_ptr<const junction_tree> tree_over(std::vector<std::size_t> cardinalities,
+                                                      const std::vector<factor_of<sum_product<double>>>& factors,
+                                                      const junction_tree_options& options) {
   std::vector<std::vector<variable_id>> scopes;
   for (const auto& f : factors) scopes.push_back(f.scope());
-  auto tree = std::make_shared<const junction_tree>(std::move(cardinalities), scopes, options);
-  return std::make_unique<propagation<sum_product<double>>>(std::move(tree), std::move(factors));
+  return std::make_shared<const junction_tree>(std::move(cardinalities), scopes, options);
 }
 
 }  // namespace detail
 
 PGM_DECL interface_filter::interface_filter(dynamic_network model, const junction_tree_options& options)
     : model_(std::move(model)) {
-  using factor = factor_of<sum_product<double>>;
+  using table = factor_of<sum_product<double>>;  // probabilities: the same values in max-product
   const std::size_t n = model_.size();
   // Two slices unrolled: slice 1's tables are the transition's, over slice 0 and slice 1.
   const auto two = model_.unroll(2);
@@ -65,13 +64,15 @@ PGM_DECL interface_filter::interface_filter(dynamic_network model, const junctio
 
   // The first slice: its tables as factors 0 … n−1 (factor i is variable i's, as interventions
   // need), then β over the interface.
-  std::vector<factor> first;
+  std::vector<table> first;
   for (std::size_t i = 0; i < n; ++i) {
     first.push_back(
         detail::table_factor<sum_product<double>>(model_.initial(), variable_id(static_cast<variable_id::rep>(i))));
   }
   if (!interface_.empty()) first.emplace_back(interface_, interface_cards, ones);
-  first_ = detail::propagation_over(cards, std::move(first), options);
+  const auto first_tree = detail::tree_over(cards, first, options);
+  first_max_ = std::make_unique<propagation<max_product<double>>>(first_tree, first);
+  first_ = std::make_unique<propagation<sum_product<double>>>(first_tree, std::move(first));
 
   // The transition: this slice's variables keep their template ids, the previous slice's
   // interface follows them; its tables, then the prior over the previous interface, then β.
@@ -86,14 +87,14 @@ PGM_DECL interface_filter::interface_filter(dynamic_network model, const junctio
       renumbered[id] = previous_interface_[static_cast<std::size_t>(at - interface_.begin())];
     }
   }
-  std::vector<factor> transition;
+  std::vector<table> transition;
   for (std::size_t i = 0; i < n; ++i) {
     const auto node = two.id(slice_name(model_.variables()[i].name(), 1));
-    const auto table = detail::table_factor<sum_product<double>>(two, node);
+    const auto given = detail::table_factor<sum_product<double>>(two, node);
     std::vector<variable_id> scope;
-    for (auto v : table.scope()) scope.push_back(renumbered[v.value()]);
-    transition.emplace_back(std::move(scope), table.cardinalities(),
-                            std::vector<double>(table.values().begin(), table.values().end()));
+    for (auto v : given.scope()) scope.push_back(renumbered[v.value()]);
+    transition.emplace_back(std::move(scope), given.cardinalities(),
+                            std::vector<double>(given.values().begin(), given.values().end()));
   }
   auto transition_cards = cards;
   if (!interface_.empty()) {
@@ -101,15 +102,10 @@ PGM_DECL interface_filter::interface_filter(dynamic_network model, const junctio
     transition.emplace_back(interface_, interface_cards, ones);
     transition_cards.insert(transition_cards.end(), interface_cards.begin(), interface_cards.end());
   }
-  transition_ = detail::propagation_over(std::move(transition_cards), std::move(transition), options);
-  first_future_ = transition_prior_ = transition_future_ = ones;
-}
-
-void interface_filter::set_if_changed(propagation<sum_product<double>>& in, std::size_t f,
-                                      const std::vector<double>& values, std::vector<double>& now) {
-  if (values == now) return;
-  in.set_factor(f, values);
-  now = values;
+  const auto transition_tree = detail::tree_over(std::move(transition_cards), transition, options);
+  transition_max_ = std::make_unique<propagation<max_product<double>>>(transition_tree, transition);
+  transition_ = std::make_unique<propagation<sum_product<double>>>(transition_tree, std::move(transition));
+  first_future_ = transition_prior_ = transition_future_ = max_prior_ = ones;
 }
 
 interface_filter::step_answer interface_filter::step(bool first, const std::vector<double>& prior,
@@ -205,6 +201,57 @@ PGM_DECL dynamic_marginals interface_filter::smooth(std::span<const evidence_set
   for (std::size_t t = steps.size() - 1; t > 0; --t) beta[t - 1] = backward(beta[t], steps[t], t);
   for (std::size_t t = 0; t < steps.size(); ++t) {
     result.steps.push_back(step(t == 0, t == 0 ? ones : alpha[t - 1], beta[t], steps[t], t).marginals);
+  }
+  return result;
+}
+
+PGM_DECL most_probable_steps interface_filter::most_probable(std::span<const evidence_set> steps) {
+  most_probable_steps result;
+  const std::size_t n = model_.size();
+  // Forward: δ_t, the largest joint with the evidence so far for each state of slice t's
+  // interface, scaled so that its largest is 1 (the scales' logarithms add up to ln P(x*, e)).
+  std::vector<std::vector<double>> delta;
+  for (std::size_t t = 0; t < steps.size(); ++t) {
+    auto& in = t == 0 ? *first_max_ : *transition_max_;
+    if (t > 0 && !interface_.empty()) set_if_changed(in, n, delta.back(), max_prior_);
+    in.set_evidence(steps[t]);
+    std::vector<double> best;
+    if (interface_.empty()) {
+      best = {in.total()};
+    } else {
+      const auto joint = in.joint(interface_);
+      best.assign(joint.values().begin(), joint.values().end());
+    }
+    const double top = *std::max_element(best.begin(), best.end());
+    if (!(top > 0.0) || !std::isfinite(top)) {
+      throw impossible_evidence("the evidence at step " + std::to_string(t) + " (" +
+                                detail::describe(model_.variables(), steps[t]) +
+                                ") has probability 0 given the steps before");
+    }
+    for (auto& b : best) b /= top;
+    result.log_probability += std::log(top);
+    delta.push_back(std::move(best));
+  }
+  // Back: each step maximised with the step before's δ as its prior and its own interface held
+  // where the step after it put it.
+  result.states.resize(steps.size());
+  std::vector<std::size_t> held;  // slice t's interface states, chosen at step t + 1
+  for (std::size_t t = steps.size(); t-- > 0;) {
+    auto& in = t == 0 ? *first_max_ : *transition_max_;
+    if (t > 0 && !interface_.empty()) set_if_changed(in, n, delta[t - 1], max_prior_);
+    auto observed = steps[t];
+    for (std::size_t k = 0; k < held.size(); ++k) {
+      if (!observed.fixes(interface_[k])) {
+        observed.hard.push_back({interface_[k], state_index(static_cast<state_index::rep>(held[k]))});
+      }
+    }
+    in.set_evidence(observed);
+    const auto best = in.maximize();
+    result.states[t].assign(best.states.begin(), best.states.begin() + static_cast<std::ptrdiff_t>(n));
+    held.clear();
+    if (t > 0) {
+      for (auto id : previous_interface_) held.push_back(best.states[id.value()]);
+    }
   }
   return result;
 }
