@@ -73,6 +73,18 @@ any_model read_any_model_file(const std::filesystem::path& path) {
   return read_network_file(path);
 }
 
+dynamic_network read_dynamic_model_file(const std::string& path) {
+  if (find_format_of(path) != network_format("json")) {
+    throw error("'" + path + "' is not a pgm JSON model: a dynamic network is written in pgm's JSON (docs/dynamic.md)");
+  }
+  const auto text = read_model_text(path);
+  if (const auto kind = declared_model_kind(text); kind != "dynamic") {
+    throw error("'" + path + "' holds a " + (kind == "markov" ? "Markov" : "Bayesian") +
+                " network, not a dynamic one (\"kind\": \"dynamic\")");
+  }
+  return parse_dynamic_json(text, path);
+}
+
 namespace {
 
 // Outside values go to the outer bins by design; many of them suggest the wrong edges, or data

@@ -13,6 +13,7 @@
 #include <variant>
 #include <vector>
 
+#include "pgm/core/dynamic_network.hpp"
 #include "pgm/core/markov_network.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
@@ -97,6 +98,10 @@ using any_model = std::variant<bayesian_network, markov_network>;
 /// "kind": "markov", else the Bayesian network of any network format (printing the reader's
 /// notes).
 [[nodiscard]] any_model read_any_model_file(const std::filesystem::path& path);
+
+/// The dynamic network of a pgm JSON model of "kind": "dynamic"; an error naming what the file
+/// holds otherwise.
+[[nodiscard]] dynamic_network read_dynamic_model_file(const std::string& path);
 
 /// Accepts only a whole number in [lo, hi], so that "-5" is an error rather than 2^64 - 5.
 CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi);

@@ -14,8 +14,6 @@
 #include "pgm/core/text.hpp"
 #include "pgm/inference/dynamic_inference.hpp"
 #include "pgm/io/csv.hpp"
-#include "pgm/io/json_model.hpp"
-#include "pgm/io/network_file.hpp"
 
 namespace pgm::cli {
 namespace {
@@ -31,18 +29,6 @@ struct filter_arguments {
   int digits = 6;
   std::string out;
 };
-
-dynamic_network read_dynamic(const std::string& path) {
-  if (find_format_of(path) != network_format("json")) {
-    throw error("'" + path + "' is not a pgm JSON model: a dynamic network is written in pgm's JSON (docs/dynamic.md)");
-  }
-  const auto text = read_model_text(path);
-  if (const auto kind = declared_model_kind(text); kind != "dynamic") {
-    throw error("'" + path + "' holds a " + (kind == "markov" ? "Markov" : "Bayesian") +
-                " network, not a dynamic one (\"kind\": \"dynamic\"); pgm query answers a static one");
-  }
-  return parse_dynamic_json(text, path);
-}
 
 /// A template variable by name, or an error naming the closest.
 variable_id template_id(const dynamic_network& model, const std::string& name, const std::string& where) {
@@ -157,7 +143,7 @@ void write_most_probable(const dynamic_network& model, const most_probable_steps
 
 void run_filter(const filter_arguments& args) {
   pgm::check_output_path(args.out);
-  const auto model = read_dynamic(args.model);
+  const auto model = read_dynamic_model_file(args.model);
   auto steps = read_episode(model, args.data);
   const std::size_t observed_steps = steps.size();
   if (!args.intervene.empty()) add_interventions(model, args.intervene, steps, args.predict);

@@ -24,16 +24,7 @@ struct unroll_arguments {
 void run_unroll(const unroll_arguments& args) {
   const auto to = format_of(args.out);  // fails, listing the extensions, before anything is read
   pgm::check_output_path(args.out);
-  if (find_format_of(args.model) != network_format("json")) {
-    throw error("'" + args.model +
-                "' is not a pgm JSON model: a dynamic network is written in pgm's JSON (docs/dynamic.md)");
-  }
-  const auto text = read_model_text(args.model);
-  if (const auto kind = declared_model_kind(text); kind != "dynamic") {
-    throw error("'" + args.model + "' holds a " + (kind == "markov" ? "Markov" : "Bayesian") +
-                " network, not a dynamic one (\"kind\": \"dynamic\")");
-  }
-  const auto dynamic = parse_dynamic_json(text, args.model);
+  const auto dynamic = read_dynamic_model_file(args.model);
   // BIF's and NET's names hold letters, digits, '_', '-' and '.' only.
   const bool plain_names = to == network_format("bif") || to == network_format("net");
   const auto network = dynamic.unroll(args.steps, plain_names ? '_' : '@');
