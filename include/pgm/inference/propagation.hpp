@@ -700,13 +700,27 @@ class propagation {
       std::stable_sort(to_send.begin(), to_send.end(),
                        [&](std::size_t a, std::size_t b) { return group_of_[c][a] < group_of_[c][b]; });
       product_into(belief_buffer_, c, q.edges.size());
+      // In logarithms, the folds are plain sums of the belief's exps where no digit is lost that
+      // way, as in divide_out: one exp per cell for all of them, not one per cell and fold.
+      std::optional<value_type> top;
+      if constexpr (std::same_as<S, log_sum_product<value_type>>) {
+        if (!to_send.empty()) top = detail::shifted_exp<value_type>(belief_buffer_, plain_buffer_);
+      }
       for (std::size_t first = 0; first < to_send.size(); ++first) {
         const auto g = group_of_[c][to_send[first]];
         if (first > 0 && g == group_of_[c][to_send[first - 1]]) continue;
         const auto& strides = q.strides[to_send[first]];
-        fold.assign(tree_->edges()[q.edges[to_send[first]]].cells, S::zero());
-        detail::fold_onto<S, value_type>(std::span<const value_type>(belief_buffer_), q.cardinalities, strides,
-                                         std::span<value_type>(fold));
+        const auto cells = tree_->edges()[q.edges[to_send[first]]].cells;
+        if (top) {
+          fold.assign(cells, value_type{0});
+          detail::fold_onto<sum_product<value_type>, value_type>(std::span<const value_type>(plain_buffer_),
+                                                                 q.cardinalities, strides, std::span<value_type>(fold));
+          detail::unshift_log<value_type>(fold, *top);
+        } else {
+          fold.assign(cells, S::zero());
+          detail::fold_onto<S, value_type>(std::span<const value_type>(belief_buffer_), q.cardinalities, strides,
+                                           std::span<value_type>(fold));
+        }
         for (auto k = first; k < to_send.size() && group_of_[c][to_send[k]] == g; ++k) {
           send_by_division(c, to_send[k], fold);
         }
