@@ -81,6 +81,9 @@ class interface_filter {
   step_answer step(bool first, const std::vector<double>& prior, const std::vector<double>& future,
                    const evidence_set& observed, std::size_t step);
 
+  /// "the evidence at step t (…) has probability 0 given the steps before".
+  [[nodiscard]] impossible_evidence impossible_at(std::size_t step, const evidence_set& observed) const;
+
   /// β_{t−1} from β_t and step t's evidence: the previous interface's joint in the transition
   /// with no prior, normalised (its scale does not matter to smoothing).
   std::vector<double> backward(const std::vector<double>& future, const evidence_set& observed, std::size_t step);
@@ -96,6 +99,7 @@ class interface_filter {
   }
 
   dynamic_network model_;
+  std::vector<variable_id> every_;  ///< every template variable's id, for a step's marginals
   std::vector<variable_id> interface_;
   std::size_t interface_cells_ = 1;
   std::vector<variable_id> previous_interface_;  ///< the interface's ids in the transition's tree

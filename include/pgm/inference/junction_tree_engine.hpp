@@ -314,12 +314,15 @@ std::size_t junction_tree_engine<M>::elimination_work(variable_id node) const {
     const auto relevant = detail::relevant_set(*model_, one, evidence_);
     std::size_t variables = 0;
     for (std::size_t i = 0; i < model_->size(); ++i) variables += relevant[i] ? 1 : 0;
+    std::vector<char> eliminated(relevant.begin(), relevant.end());  // relevant and not observed
+    for (const auto& o : evidence_.hard) eliminated[o.variable.value()] = 0;
+    for (const auto& o : evidence_.intervened) eliminated[o.variable.value()] = 0;
     std::size_t cells = 0;
     for (const auto& clique : tree_->cliques()) {
       std::size_t cut = 1;
       bool any = false;
       for (auto v : clique.variables) {
-        if (!relevant[v.value()] || evidence_.fixes(v)) continue;
+        if (!eliminated[v.value()]) continue;
         any = true;
         cut = detail::saturating_multiply(cut, tree_->cardinality(v));
       }

@@ -106,6 +106,13 @@ PGM_DECL interface_filter::interface_filter(dynamic_network model, const junctio
   transition_max_ = std::make_unique<propagation<max_product<double>>>(transition_tree, transition);
   transition_ = std::make_unique<propagation<sum_product<double>>>(transition_tree, std::move(transition));
   first_future_ = transition_prior_ = transition_future_ = max_prior_ = ones;
+  for (std::size_t i = 0; i < n; ++i) every_.push_back(variable_id(static_cast<variable_id::rep>(i)));
+}
+
+impossible_evidence interface_filter::impossible_at(std::size_t step, const evidence_set& observed) const {
+  return impossible_evidence("the evidence at step " + std::to_string(step) + " (" +
+                             detail::describe(model_.variables(), observed) +
+                             ") has probability 0 given the steps before");
 }
 
 interface_filter::step_answer interface_filter::step(bool first, const std::vector<double>& prior,
@@ -122,19 +129,13 @@ interface_filter::step_answer interface_filter::step(bool first, const std::vect
     }
   }
   in.set_evidence(observed);
-  std::vector<variable_id> every(n);
-  for (std::size_t i = 0; i < n; ++i) every[i] = variable_id(static_cast<variable_id::rep>(i));
   step_answer answer;
-  answer.marginals = in.marginals(every);
+  answer.marginals = in.marginals(every_);
   double total = 0.0;
   if (n > 0) {
     for (double p : answer.marginals.front()) total += p;
   }
-  if (!(total > 0.0) || !std::isfinite(total)) {
-    throw impossible_evidence("the evidence at step " + std::to_string(step) + " (" +
-                              detail::describe(model_.variables(), observed) +
-                              ") has probability 0 given the steps before");
-  }
+  if (!(total > 0.0) || !std::isfinite(total)) throw impossible_at(step, observed);
   for (auto& m : answer.marginals) {
     for (auto& p : m) p /= total;
   }
@@ -181,6 +182,8 @@ PGM_DECL dynamic_marginals interface_filter::filter(std::span<const evidence_set
 }
 
 PGM_DECL dynamic_marginals interface_filter::smooth(std::span<const evidence_set> steps) {
+  // Nothing carries from one slice to the next: smoothing is filtering.
+  if (interface_.empty()) return filter(steps);
   dynamic_marginals result;
   if (steps.empty()) return result;
   const std::vector<double> ones(interface_cells_, 1.0);
@@ -190,10 +193,6 @@ PGM_DECL dynamic_marginals interface_filter::smooth(std::span<const evidence_set
     auto answer = step(t == 0, t == 0 ? ones : alpha.back(), ones, steps[t], t);
     result.log_evidence_probability += answer.log_total;
     alpha.push_back(std::move(answer.interface));
-  }
-  if (interface_.empty()) {
-    // Nothing carries from one slice to the next: smoothing is filtering.
-    return filter(steps);
   }
   // Backward: β_t, the evidence after t given slice t's interface.
   std::vector<std::vector<double>> beta(steps.size());
@@ -223,11 +222,7 @@ PGM_DECL most_probable_steps interface_filter::most_probable(std::span<const evi
       best.assign(joint.values().begin(), joint.values().end());
     }
     const double top = *std::max_element(best.begin(), best.end());
-    if (!(top > 0.0) || !std::isfinite(top)) {
-      throw impossible_evidence("the evidence at step " + std::to_string(t) + " (" +
-                                detail::describe(model_.variables(), steps[t]) +
-                                ") has probability 0 given the steps before");
-    }
+    if (!(top > 0.0) || !std::isfinite(top)) throw impossible_at(t, steps[t]);
     for (auto& b : best) b /= top;
     result.log_probability += std::log(top);
     delta.push_back(std::move(best));
