@@ -109,13 +109,13 @@ PGM_DECL interface_filter::interface_filter(dynamic_network model, const junctio
   for (std::size_t i = 0; i < n; ++i) every_.push_back(variable_id(static_cast<variable_id::rep>(i)));
 }
 
-impossible_evidence interface_filter::impossible_at(std::size_t step, const evidence_set& observed) const {
+PGM_DECL impossible_evidence interface_filter::impossible_at(std::size_t step, const evidence_set& observed) const {
   return impossible_evidence("the evidence at step " + std::to_string(step) + " (" +
                              detail::describe(model_.variables(), observed) +
                              ") has probability 0 given the steps before");
 }
 
-interface_filter::step_answer interface_filter::step(bool first, const std::vector<double>& prior,
+PGM_DECL interface_filter::step_answer interface_filter::step(bool first, const std::vector<double>& prior,
                                                      const std::vector<double>& future, const evidence_set& observed,
                                                      std::size_t step) {
   const std::size_t n = model_.size();
@@ -150,7 +150,7 @@ interface_filter::step_answer interface_filter::step(bool first, const std::vect
   return answer;
 }
 
-std::vector<double> interface_filter::backward(const std::vector<double>& future, const evidence_set& observed,
+PGM_DECL std::vector<double> interface_filter::backward(const std::vector<double>& future, const evidence_set& observed,
                                                std::size_t step) {
   const std::size_t n = model_.size();
   set_if_changed(*transition_, n, std::vector<double>(interface_cells_, 1.0), transition_prior_);
