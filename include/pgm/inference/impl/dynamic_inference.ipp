@@ -116,8 +116,8 @@ PGM_DECL impossible_evidence interface_filter::impossible_at(std::size_t step, c
 }
 
 PGM_DECL interface_filter::step_answer interface_filter::step(bool first, const std::vector<double>& prior,
-                                                     const std::vector<double>& future, const evidence_set& observed,
-                                                     std::size_t step) {
+                                                              const std::vector<double>& future,
+                                                              const evidence_set& observed, std::size_t step) {
   const std::size_t n = model_.size();
   auto& in = first ? *first_ : *transition_;
   if (!interface_.empty()) {
@@ -151,7 +151,7 @@ PGM_DECL interface_filter::step_answer interface_filter::step(bool first, const 
 }
 
 PGM_DECL std::vector<double> interface_filter::backward(const std::vector<double>& future, const evidence_set& observed,
-                                               std::size_t step) {
+                                                        std::size_t step) {
   const std::size_t n = model_.size();
   set_if_changed(*transition_, n, std::vector<double>(interface_cells_, 1.0), transition_prior_);
   set_if_changed(*transition_, n + 1, future, transition_future_);
