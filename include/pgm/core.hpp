@@ -6,6 +6,8 @@
 #include "pgm/core/assert.hpp"
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
+#include "pgm/core/component_options.hpp"
+#include "pgm/core/component_registry.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/dag.hpp"
 #include "pgm/core/dynamic_network.hpp"

@@ -24,6 +24,7 @@
 #include "pgm/learn/parameter_prior.hpp"
 #include "pgm/learn/pc.hpp"
 #include "pgm/learn/score.hpp"
+#include "pgm/learn/score_registry.hpp"
 #include "pgm/learn/structural_hamming_distance.hpp"
 #include "pgm/learn/structure_prior.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"

@@ -681,7 +681,6 @@ def learn_structure(
     missing="error",
     algorithm="pc",
     score="bic",
-    iss=1.0,
     max_parents=0,
     tabu=10,
     max_tabu=10,
@@ -696,8 +695,9 @@ def learn_structure(
     """Structure learning on the frame's columns (all discrete), as `pgm learn-structure`: the
     edges of the learned DAG as (parent, child) pairs. algorithm: "pc" (PC-stable; the DAG is one
     of its equivalence class), "hc" (hill climbing), "tabu" or "mmhc" (PC-stable's skeleton
-    restricts hill climbing). test ("chi2" by default, as the program's, or "g2"), alpha, max_cond: PC's tests. score ("bic", "aic", "bdeu",
-    "k2", "loglik"), iss, max_parents (0: no limit), tabu, max_tabu, restarts, perturb, seed and
+    restricts hill climbing). test ("chi2" by default, as the program's, or "g2"), alpha, max_cond: PC's tests. score ("bic",
+    "aic[k=1]", "bdeu[iss=1]", "k2", "loglik", or a registered score; NAME[KEY=VALUE,...] sets
+    an option), max_parents (0: no limit), tabu, max_tabu, restarts, perturb, seed and
     start (a pgm.Network, (parent, child) pairs or "pc" to start from): the score searches', as
     docs/structure-learning.md says. prior_model (a pgm.Network of a related task), map (its
     correspondence, as for pgm.fit) and prior_weight: the structure prior, a score bonus per edge
@@ -732,7 +732,6 @@ def learn_structure(
         _threads(threads),
         _text(algorithm, "algorithm"),
         _text(score, "score"),
-        _real(iss, "iss"),
         _whole(max_parents, "max_parents", 0, 1024),
         _whole(tabu, "tabu", 1, 100_000),
         _whole(max_tabu, "max_tabu", 0, 100_000),
@@ -763,9 +762,10 @@ def _start_from_pc(start):
     return False
 
 
-def score(network, data, score="bic", *, iss=1.0, by_node=False, threads=0, missing="error"):
+def score(network, data, score="bic", *, by_node=False, threads=0, missing="error"):
     """The score of the network's structure on the frame, as `pgm score` and bnlearn's score()
-    (larger is better): "bic", "aic", "bdeu" (with iss), "k2" or "loglik". The frame's columns
+    (larger is better): "bic", "aic[k=1]", "bdeu[iss=1]", "k2", "loglik" or a registered score;
+    NAME[KEY=VALUE,...] sets an option, as "bdeu[iss=10]". The frame's columns
     are read as the network's states. Returns the total, or with by_node a dict of each node's
     term in the network's order."""
     handle = _handle(network)
@@ -775,7 +775,7 @@ def score(network, data, score="bic", *, iss=1.0, by_node=False, threads=0, miss
     if missing_names:
         raise Error(f"data: there is no column '{missing_names[0]}' (the network's variables: {', '.join(names)})")
     total, nodes = _core.score(
-        handle, _frame.columns_of(data, names), _text(score, "score"), _real(iss, "iss"), _threads(threads)
+        handle, _frame.columns_of(data, names), _text(score, "score"), _threads(threads)
     )
     return dict(zip(names, nodes)) if by_node else total
 

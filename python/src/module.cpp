@@ -373,8 +373,7 @@ struct learn_arguments {
   std::string require;
   unsigned threads = 0;
   std::string algorithm = "pc";
-  std::string score = "bic";
-  double iss = 1.0;
+  std::string score = family_score().text();
   std::size_t max_parents = 0;
   std::size_t tabu = 10;
   std::size_t max_tabu = 10;
@@ -406,8 +405,7 @@ edge_pairs learn_frame(const py::list& columns, const learn_arguments& args) {
   if (!args.forbid.empty()) choice.knowledge.forbidden = parse_edge_list(args.forbid);
   if (!args.require.empty()) choice.knowledge.required = parse_edge_list(args.require);
   auto& search = choice.search;
-  search.score = {parse_score_type(args.score), args.iss};
-  check_score_choice(search.score);
+  search.score = make_score(args.score);
   if (args.max_parents > 0) search.max_parents = args.max_parents;
   if (args.tabu == 0) throw error("tabu must be at least 1");
   search.tabu = args.tabu;
@@ -463,20 +461,19 @@ discrete_column with_model_states(const discrete_column& column, const variable&
   return discrete_column(model, std::move(codes), std::in_place, column.missing());
 }
 
-py::tuple score_frame(const network_handle& handle, const py::list& columns, const std::string& score, double iss,
+py::tuple score_frame(const network_handle& handle, const py::list& columns, const std::string& score_text,
                       unsigned threads) {
   std::vector<py::array> keep;
   const auto buffers = read_column_buffers(columns, keep);
   network_score result;
   {
     const py::gil_scoped_release release;
-    const score_choice choice{parse_score_type(score), iss};
-    check_score_choice(choice);
+    const auto score = make_score(score_text);
     const auto& structure = handle.network.structure();
     const auto data = make_dataset(buffers, "DataFrame");
     dataset recoded;
     for (const auto& v : structure.variables()) recoded.add(with_model_states(data.discrete(v.name()), v));
-    result = score_network(structure, recoded, choice, threads);
+    result = score_network(structure, recoded, score, threads);
   }
   return py::make_tuple(result.total, result.nodes);
 }
@@ -625,6 +622,8 @@ PYBIND11_MODULE(_core, m) {
   m.attr("__version__") = pgm::version;
   // The library's defaults, which the package's own default None stands for (as the program's).
   m.attr("default_ci_test") = std::string(to_string(pgm::pc_options{}.test));
+  m.attr("default_score") = pgm::family_score().text();
+  m.def("score_listing", [] { return pgm::scores().listing(); });
   m.attr("missing_policies") = pgm::known_missing_policies();
 
   py::class_<network_handle>(m, "Network")
@@ -720,14 +719,13 @@ PYBIND11_MODULE(_core, m) {
   m.def("learn_structure",
         [](const py::list& columns, const std::string& test, double alpha, std::size_t max_conditioning,
            const std::string& tiers, const std::string& forbid, const std::string& require, unsigned threads,
-           const std::string& algorithm, const std::string& score, double iss, std::size_t max_parents,
-           std::size_t tabu, std::size_t max_tabu, std::size_t restarts, std::size_t perturb, std::uint64_t seed,
-           const edge_pairs& start, bool start_from_pc, const std::optional<edge_pairs>& prior_edges,
-           const std::string& map, double prior_weight) {
-          return learn_frame(columns,
-                             {test,  alpha,         max_conditioning, tiers, forbid,      require,  threads, algorithm,
-                              score, iss,           max_parents,      tabu,  max_tabu,    restarts, perturb, seed,
-                              start, start_from_pc, prior_edges,      map,   prior_weight});
+           const std::string& algorithm, const std::string& score, std::size_t max_parents, std::size_t tabu,
+           std::size_t max_tabu, std::size_t restarts, std::size_t perturb, std::uint64_t seed, const edge_pairs& start,
+           bool start_from_pc, const std::optional<edge_pairs>& prior_edges, const std::string& map,
+           double prior_weight) {
+          return learn_frame(columns, {test,      alpha, max_conditioning, tiers,       forbid,   require,     threads,
+                                       algorithm, score, max_parents,      tabu,        max_tabu, restarts,    perturb,
+                                       seed,      start, start_from_pc,    prior_edges, map,      prior_weight});
         });
   m.def("score", &score_frame);
   m.def("discretize", &discretize_frame);

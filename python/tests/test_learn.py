@@ -1,6 +1,7 @@
 """pgm.learn_structure: PC-stable, hill climbing, tabu and the hybrid as `pgm learn-structure`, the same
 DAG from the same data; pgm.score."""
 
+import inspect
 import json
 
 import numpy as np
@@ -69,7 +70,8 @@ def test_learning_errors(data):
     "kwargs, arguments",
     [
         ({"algorithm": "hc"}, ["--algorithm", "hc"]),
-        ({"algorithm": "hc", "score": "bdeu", "iss": 10}, ["--algorithm", "hc", "--score", "bdeu", "--iss", "10"]),
+        ({"algorithm": "hc", "score": "bdeu[iss=10]"}, ["--algorithm", "hc", "--score", "bdeu", "--iss", "10"]),
+        ({"algorithm": "hc", "score": "aic[k=3]"}, ["--algorithm", "hc", "--score", "aic[k=3]"]),
         ({"algorithm": "tabu", "score": "k2", "max_parents": 2},
          ["--algorithm", "tabu", "--score", "k2", "--max-parents", "2"]),
         ({"algorithm": "hc", "restarts": 2, "perturb": 3, "seed": 7},
@@ -87,8 +89,8 @@ def test_score_by_node_and_against_pc(data):
     terms = pgm.score(net, data, score="bic", by_node=True)
     assert list(terms) == list(net.variables)
     assert pgm.score(net, data) == pytest.approx(sum(terms.values()), rel=1e-12)
-    for score in ("bic", "aic", "bdeu", "k2", "loglik"):
-        value = pgm.score(net, data, score=score, iss=5)
+    for score in ("bic", "aic", "bdeu[iss=5]", "k2", "loglik"):
+        value = pgm.score(net, data, score=score)
         assert np.isfinite(value)
     # Hill climbing ends no worse than the PC network, by BIC.
     pc = pgm.fit(data, pgm.learn_structure(data))
@@ -106,23 +108,38 @@ def test_start_and_score_errors(data):
     with pytest.raises(pgm.Error, match="unknown score 'mdl'"):
         pgm.learn_structure(data, algorithm="hc", score="mdl")
     net = pgm.fit(data, pc)
-    with pytest.raises(pgm.Error, match="iss"):
-        pgm.score(net, data, score="bdeu", iss=0)
+    with pytest.raises(pgm.Error, match="option iss of the score 'bdeu' must be a number > 0, got '0'"):
+        pgm.score(net, data, score="bdeu[iss=0]")
+    with pytest.raises(pgm.Error, match="the score 'bic' takes no options, got 'iss'"):
+        pgm.score(net, data, score="bic[iss=2]")
+    with pytest.raises(TypeError):
+        pgm.score(net, data, score="bdeu", iss=2)
     with pytest.raises(pgm.Error, match="there is no column 'onTop2'"):
         pgm.score(net, data.drop(columns=["onTop2"]))
     with pytest.raises(TypeError):
         pgm.score(pc, data)
 
 
+def test_the_default_score_is_the_librarys_everywhere(program):
+    declared = pgm._core.default_score
+    assert declared == "bic"
+    for function in (pgm.learn_structure, pgm.score):
+        assert inspect.signature(function).parameters["score"].default == declared
+    for command in ("score", "learn-structure"):
+        assert f"NAME[KEY=VALUE,...]={declared}\n" in program.run(command, "--help").stdout
+    listing = pgm._core.score_listing()
+    assert "bdeu[iss=1]" in listing and declared in listing
+
+
 def test_score_equals_the_programs(program, tmp_path, data):
     net = pgm.fit(data, pgm.learn_structure(data, algorithm="hc"))
     net.write(tmp_path / "m.json")
     data.to_csv(tmp_path / "data.csv", index=False)
-    for score in ("bic", "bdeu"):
-        out = program.run("score", "--model", tmp_path / "m.json", "--data", tmp_path / "data.csv", "--score", score,
-                          "--iss", "3").stdout
+    for score in ("bic", "bdeu[iss=3]", "aic[k=2.5]"):
+        out = program.run("score", "--model", tmp_path / "m.json", "--data", tmp_path / "data.csv", "--score",
+                          score).stdout
         total = float(out.splitlines()[0].rsplit(": ", 1)[1])
-        assert pgm.score(net, data, score=score, iss=3) == pytest.approx(total, rel=1e-12)
+        assert pgm.score(net, data, score=score) == pytest.approx(total, rel=1e-12)
 
 
 def test_structure_prior_and_start_from_pc(data):

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "cli/common.hpp"
+#include "cli/component_options.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/text.hpp"
 #include "pgm/io/json_model.hpp"
@@ -34,8 +35,7 @@ void require_prior_variable(const network_structure& prior, const std::string& n
 struct learn_structure_arguments {
   std::string data;
   std::string algorithm = "pc";
-  std::string score = "bic";
-  double iss = 1.0;
+  score_arguments score;
   std::size_t max_parents = 0;
   std::size_t tabu = 10;
   std::size_t max_tabu = 10;
@@ -76,8 +76,7 @@ void write_searched(const learn_structure_arguments& args, const structure_choic
   out << (choice.algorithm == structure_algorithm::tabu   ? "tabu search"
           : choice.algorithm == structure_algorithm::mmhc ? "hybrid (PC-stable skeleton, then hill climbing)"
                                                           : "hill climbing")
-      << " on " << data.rows() << " rows, " << data.size() << " variables: " << to_string(search.score.type);
-  if (search.score.type == score_type::bdeu) out << " (iss " << text::format_short(search.score.iss) << ")";
+      << " on " << data.rows() << " rows, " << data.size() << " variables: " << described(search.score);
   out << " = " << text::format_double(result.score - result.prior_bonus);
   if (!search.favoured.empty()) {
     out << " + structure prior " << text::format_double(result.prior_bonus) << " = "
@@ -94,13 +93,17 @@ void write_searched(const learn_structure_arguments& args, const structure_choic
   const network_structure structure(variables, result.edges);
   auto document = to_json(structure);
   document["learned"] = {{"algorithm", to_string(choice.algorithm)},
-                         {"score", to_string(search.score.type)},
+                         {"score", search.score.name()},
                          {"score_value", result.score - result.prior_bonus},
                          {"rows", data.rows()},
                          {"moves", result.moves},
                          {"restarts", result.restarts},
                          {"seed", search.seed}};
-  if (search.score.type == score_type::bdeu) document["learned"]["iss"] = search.score.iss;
+  const auto& options = search.score.options();
+  for (std::size_t i = 0; i < options.declarations().size(); ++i) {
+    std::visit([&](const auto& value) { document["learned"][options.declarations()[i].name] = value; },
+               options.values()[i]);
+  }
   if (choice.algorithm == structure_algorithm::tabu) document["learned"]["tabu"] = search.tabu;
   write_model_json(document, args.out, summary_before_replacing(out.str() + "-> " + args.out + "\n", args.out));
 }
@@ -155,7 +158,7 @@ void run_learn_structure(const learn_structure_arguments& args) {
   if (!args.forbid.empty()) choice.knowledge.forbidden = parse_edge_list(args.forbid);
   if (!args.require.empty()) choice.knowledge.required = parse_edge_list(args.require);
   auto& search = choice.search;
-  search.score = {parse_score_type(args.score), args.iss};
+  search.score = chosen_score(args.score);
   if (args.max_parents > 0) search.max_parents = args.max_parents;
   search.tabu = args.tabu;
   search.max_tabu = args.max_tabu;
@@ -282,12 +285,7 @@ void add_learn_structure_command(CLI::App& app) {
                   "hill climbing)")
       ->check(CLI::IsMember(known_structure_algorithms()))
       ->capture_default_str();
-  cmd->add_option("--score", args->score, "Score of hc, tabu and mmhc: bic, aic, bdeu, k2 or loglik (bnlearn's)")
-      ->check(CLI::IsMember(known_score_types()))
-      ->capture_default_str();
-  cmd->add_option("--iss", args->iss, "Imaginary sample size of bdeu, a number > 0")
-      ->check(number_between(0, std::numeric_limits<double>::infinity(), true, true))
-      ->capture_default_str();
+  add_score_options(*cmd, args->score);
   cmd->add_option("--max-parents", args->max_parents, "The most parents a node may get (0: no limit)")
       ->check(whole_number(0, 1024))
       ->capture_default_str();

@@ -53,9 +53,23 @@ TEST_F(structure_cli_test, score_bad_input) {
     EXPECT_THAT(help.out, HasSubstr(option));
   }
   const auto model = " --model " + path("m.bif").string();
-  EXPECT_THAT(run("score" + model + " --data " + data.string() + " --score mdl").err, HasSubstr("mdl not in"));
-  EXPECT_THAT(run("score" + model + " --data " + data.string() + " --iss 0").err,
-              HasSubstr("expected a finite number > 0"));
+  EXPECT_THAT(help.out, HasSubstr("aic[k=1], bdeu[iss=1], bic, k2, loglik"));
+  const auto scored = [&](const std::string& options) {
+    return run("score" + model + " --data " + data.string() + " " + options);
+  };
+  EXPECT_THAT(scored("--score mdl").err, HasSubstr("--score: unknown score 'mdl' (known: aic, bdeu, bic, k2, loglik)"));
+  EXPECT_THAT(scored("--score 'bdeu[iss=0]'").err,
+              HasSubstr("option iss of the score 'bdeu' must be a number > 0, got '0'"));
+  EXPECT_THAT(scored("--score 'bdeu[iss=1'").err, HasSubstr("expected ']' at column 11"));
+  EXPECT_THAT(scored("--iss 0").err, HasSubstr("expected a finite number > 0"));
+  EXPECT_THAT(scored("--iss 2").err, HasSubstr("--iss sets the imaginary sample size of a score that has one (bdeu); "
+                                               "bic has none"));
+  EXPECT_THAT(scored("--score 'bdeu[iss=2]' --iss 3").err, HasSubstr("both set iss; give it once"));
+  // The shorthand and the brackets choose the same score.
+  const auto shorthand = scored("--score bde --iss 7");
+  EXPECT_EQ(shorthand.code, 0) << shorthand.err;
+  EXPECT_THAT(shorthand.out, HasSubstr("bdeu (iss 7) of"));
+  EXPECT_EQ(shorthand.out, scored("--score 'bdeu[iss=7]'").out);
   const auto other = file("o.csv", "a,c\n0,1\n");
   const auto missing = run("score" + model + " --data " + other.string());
   EXPECT_EQ(missing.code, 1);

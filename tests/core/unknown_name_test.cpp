@@ -14,7 +14,7 @@
 #include "pgm/learn/estimate.hpp"
 #include "pgm/learn/independence_test.hpp"
 #include "pgm/learn/learn_structure.hpp"
-#include "pgm/learn/score.hpp"
+#include "pgm/learn/score_registry.hpp"
 #include "pgm/transfer/registry.hpp"
 #include "pgm/transfer/state_map.hpp"
 
@@ -47,7 +47,7 @@ TEST(unknown_name_test, every_parser_of_a_choice_throws_it) {
               ThrowsMessage<unknown_name>(HasSubstr("did you mean 'chi2'?")));
   EXPECT_THAT([] { static_cast<void>(parse_continuity_correction("yate")); },
               ThrowsMessage<unknown_name>(HasSubstr("did you mean 'yates'?")));
-  EXPECT_THAT([] { static_cast<void>(parse_score_type("bicc")); },
+  EXPECT_THAT([] { static_cast<void>(make_score("bicc")); },
               ThrowsMessage<unknown_name>(HasSubstr("did you mean 'bic'?")));
   EXPECT_THAT([] { static_cast<void>(parse_structure_algorithm("tabo")); },
               ThrowsMessage<unknown_name>(HasSubstr("did you mean 'tabu'?")));

@@ -21,7 +21,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/detail/parallel_for.hpp"
-#include "pgm/learn/score.hpp"
+#include "pgm/learn/score_registry.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
@@ -41,13 +41,13 @@ struct family_key_hash {
 class family_score_cache {
  public:
   /// Scores families of `columns` (node i is columns[i]), which must outlive the cache.
-  /// Throws model_error for bad score options, data_error for columns of different lengths.
-  PGM_DECL family_score_cache(std::span<const discrete_column* const> columns, score_choice choice,
+  /// Throws data_error for columns of different lengths.
+  PGM_DECL family_score_cache(std::span<const discrete_column* const> columns, family_score score,
                               unsigned threads = 0);
 
   [[nodiscard]] std::size_t size() const noexcept { return columns_.size(); }
   [[nodiscard]] const discrete_column& column(std::size_t node) const { return *columns_.at(node); }
-  [[nodiscard]] const score_choice& choice() const noexcept { return choice_; }
+  [[nodiscard]] const family_score& scored_by() const noexcept { return score_; }
 
   /// The score of one family (computed now if not known).
   [[nodiscard]] PGM_DECL double score(const family_key& key);
@@ -63,7 +63,7 @@ class family_score_cache {
   [[nodiscard]] PGM_DECL double compute(const family_key& key, unsigned threads) const;
 
   std::vector<const discrete_column*> columns_;
-  score_choice choice_;
+  family_score score_;
   unsigned threads_;
   std::unordered_map<family_key, double, family_key_hash> known_;
   std::size_t computed_ = 0;

@@ -47,12 +47,13 @@
 #include "pgm/data/dataset.hpp"
 #include "pgm/learn/background_knowledge.hpp"
 #include "pgm/learn/family_score_cache.hpp"
-#include "pgm/learn/score.hpp"
+#include "pgm/learn/score_registry.hpp"
 
 namespace pgm {
 
 struct search_options {
-  score_choice score;
+  /// Any family score (pgm/learn/score_registry.hpp); bic by default.
+  family_score score;
   /// The most parents a node may have.
   std::size_t max_parents = std::numeric_limits<std::size_t>::max();
   /// Tiers and forbidden edges restrict the moves; required edges are in the start network

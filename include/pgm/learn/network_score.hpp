@@ -12,7 +12,7 @@
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/learn/family_score_cache.hpp"
-#include "pgm/learn/score.hpp"
+#include "pgm/learn/score_registry.hpp"
 
 namespace pgm {
 
@@ -24,9 +24,9 @@ struct network_score {
 
 /// Scores `structure` on `data`, which must hold a discrete column for each of its variables
 /// with the same number of states. Throws data_error for a missing or continuous column or one
-/// whose states differ, model_error for bad score options.
+/// whose states differ.
 [[nodiscard]] PGM_DECL network_score score_network(const network_structure& structure, const dataset& data,
-                                                   const score_choice& choice = {}, unsigned threads = 0);
+                                                   const family_score& score = {}, unsigned threads = 0);
 
 }  // namespace pgm
 

@@ -12,47 +12,25 @@
 ///            a = iss / (r q), a_u = r a = iss / q        (bnlearn's "bde", iss 1 by default)
 ///   k2     = the same with a = 1 per cell: a_u = r
 ///
+/// Each is a FamilyScore; pgm/learn/score_registry.hpp gives them their names and options.
 /// docs/structure-learning.md says how pgmpy's scores differ.
 
-#include <boost/math/special_functions/gamma.hpp>
 #include <cmath>
-#include <cstddef>
-#include <string>
-#include <string_view>
+#include <concepts>
+#include <vector>
 
 #include "pgm/core/compilation.hpp"
-#include "pgm/core/error.hpp"
-#include "pgm/core/unknown_name.hpp"
-#include "pgm/detail/text.hpp"
-#include "pgm/learn/log_gamma_ratio.hpp"
+#include "pgm/core/component_options.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 
-enum class score_type { loglik, aic, bic, bdeu, k2 };
-
-struct score_choice {
-  score_type type = score_type::bic;
-  /// The imaginary (equivalent) sample size of bdeu.
-  double iss = 1.0;
-  /// The penalty per free parameter of aic.
-  double aic_k = 1.0;
+/// A decomposable score: the term of one family, from its counts alone (larger is better). A
+/// search calls it from several threads at once, so it must not change when called.
+template <class S>
+concept FamilyScore = std::copy_constructible<S> && requires(const S& score, const count_table& counts) {
+  { score(counts) } -> std::convertible_to<double>;
 };
-
-[[nodiscard]] PGM_DECL std::string to_string(score_type type);
-
-inline constexpr std::array score_types{score_type::bic, score_type::aic, score_type::bdeu, score_type::k2,
-                                        score_type::loglik};
-
-/// The scores' names, and bnlearn's "bde" for bdeu: what parse_score_type and the command
-/// line accept.
-[[nodiscard]] PGM_DECL std::vector<std::string> known_score_types();
-
-/// "bic", "aic", "bdeu" (or bnlearn's "bde"), "k2", "loglik"; throws unknown_name otherwise.
-[[nodiscard]] PGM_DECL score_type parse_score_type(std::string_view text);
-
-/// Throws model_error for an iss or k that is not a finite positive number.
-PGM_DECL void check_score_choice(const score_choice& choice);
 
 /// The log-likelihood term sum_{x,u} M[x,u] log(M[x,u] / N_u) of a family at its MLE.
 [[nodiscard]] PGM_DECL double family_loglik(const count_table& counts);
@@ -65,9 +43,50 @@ PGM_DECL void check_score_choice(const score_choice& choice);
 /// The log marginal likelihood of a family under a Dirichlet prior of `alpha` per cell.
 [[nodiscard]] PGM_DECL double family_dirichlet(const count_table& counts, double alpha);
 
-/// A family's term of the score; bic's n is the rows the family was counted over (all of them
-/// for complete data).
-[[nodiscard]] PGM_DECL double family_score(const count_table& counts, const score_choice& choice);
+struct loglik_score {
+  [[nodiscard]] double operator()(const count_table& counts) const { return family_loglik(counts); }
+};
+
+struct aic_score {
+  [[nodiscard]] static std::vector<option_declaration> options() {
+    return {number_option("k", 1.0, "the penalty per free parameter").at_least(0.0)};
+  }
+  explicit aic_score(const option_values& options) : k(options.number("k")) {}
+  explicit aic_score(double penalty) : k(penalty) {}
+  [[nodiscard]] double operator()(const count_table& counts) const {
+    return family_loglik(counts) - k * family_parameters(counts);
+  }
+  double k;
+};
+
+/// n is the rows the family was counted over (all of them for complete data).
+struct bic_score {
+  [[nodiscard]] double operator()(const count_table& counts) const {
+    const auto rows = static_cast<double>(counts.total());
+    const double penalty = rows > 0 ? std::log(rows) / 2.0 : 0.0;
+    return family_loglik(counts) - penalty * family_parameters(counts);
+  }
+};
+
+struct bdeu_score {
+  [[nodiscard]] static std::vector<option_declaration> options() {
+    return {number_option("iss", 1.0, "the imaginary (equivalent) sample size").greater_than(0.0)};
+  }
+  explicit bdeu_score(const option_values& options) : iss(options.number("iss")) {}
+  explicit bdeu_score(double imaginary_sample_size) : iss(imaginary_sample_size) {}
+  [[nodiscard]] double operator()(const count_table& counts) const {
+    return family_dirichlet(
+        counts, iss / (static_cast<double>(counts.child_cardinality()) * static_cast<double>(counts.configurations())));
+  }
+  double iss;
+};
+
+struct k2_score {
+  [[nodiscard]] double operator()(const count_table& counts) const { return family_dirichlet(counts, 1.0); }
+};
+
+static_assert(FamilyScore<loglik_score> && FamilyScore<aic_score> && FamilyScore<bic_score> &&
+              FamilyScore<bdeu_score> && FamilyScore<k2_score>);
 
 }  // namespace pgm
 

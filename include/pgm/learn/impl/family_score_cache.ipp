@@ -14,10 +14,9 @@ PGM_DECL std::size_t family_key_hash::operator()(const family_key& key) const no
   return static_cast<std::size_t>(h);
 }
 
-PGM_DECL family_score_cache::family_score_cache(std::span<const discrete_column* const> columns, score_choice choice,
+PGM_DECL family_score_cache::family_score_cache(std::span<const discrete_column* const> columns, family_score score,
                                                 unsigned threads)
-    : columns_(columns.begin(), columns.end()), choice_(choice), threads_(threads) {
-  check_score_choice(choice_);
+    : columns_(columns.begin(), columns.end()), score_(std::move(score)), threads_(threads) {
   for (const auto* c : columns_) {
     if (c->size() != columns_.front()->size()) {
       throw data_error("column '" + c->name() + "' has " + std::to_string(c->size()) + " rows, '" +
@@ -71,7 +70,7 @@ PGM_DECL double family_score_cache::compute(const family_key& key, unsigned thre
   parents.reserve(key.parents.size());
   for (auto p : key.parents) parents.push_back(columns_.at(p));
   const auto counts = count_family(*columns_.at(key.node), parents, {.threads = threads});
-  return family_score(counts, choice_);
+  return score_(counts);
 }
 
 }  // namespace pgm

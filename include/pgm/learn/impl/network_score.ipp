@@ -6,8 +6,8 @@
 
 namespace pgm {
 
-PGM_DECL network_score score_network(const network_structure& structure, const dataset& data,
-                                     const score_choice& choice, unsigned threads) {
+PGM_DECL network_score score_network(const network_structure& structure, const dataset& data, const family_score& score,
+                                     unsigned threads) {
   std::vector<const discrete_column*> columns;
   for (const auto& v : structure.variables()) {
     const auto& column = data.discrete(v.name());
@@ -17,7 +17,7 @@ PGM_DECL network_score score_network(const network_structure& structure, const d
     }
     columns.push_back(&column);
   }
-  family_score_cache cache(columns, choice, threads);
+  family_score_cache cache(columns, score, threads);
   std::vector<family_key> keys;
   for (std::size_t i = 0; i < structure.size(); ++i) {
     family_key key{i, {}};
