@@ -30,7 +30,7 @@ const pgm::dataset& data(std::size_t rows) {
 void pc_stable_12x5(benchmark::State& state) {
   const auto rows = static_cast<std::size_t>(state.range(0));
   const auto& d = data(rows);
-  const pgm::pc_options options{.test = pgm::ci_test::g_squared,
+  const pgm::pc_options options{.test = pgm::make_independence_test("g2"),
                                 .alpha = 0.01,
                                 .max_conditioning = 3,
                                 .threads = static_cast<unsigned>(state.range(1))};

@@ -17,6 +17,7 @@
 #include "pgm/learn/fit_statistics.hpp"
 #include "pgm/learn/hill_climbing.hpp"
 #include "pgm/learn/independence_test.hpp"
+#include "pgm/learn/independence_test_registry.hpp"
 #include "pgm/learn/learn_structure.hpp"
 #include "pgm/learn/log_gamma_ratio.hpp"
 #include "pgm/learn/network_score.hpp"

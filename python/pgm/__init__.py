@@ -621,13 +621,14 @@ def backdoor_sets(network, x, y, *, limit=100_000):
     return _core.backdoor_sets(handle, x, y, _whole(limit, "limit", 1, _checks.UINT64_MAX))
 
 
-def check(network, data, test=None, alpha=0.05, *, threads=0):
+def check(network, data, test="chi2", alpha=0.05, *, threads=0):
     """Tests every independence the network's DAG implies (one per pair of variables without an
     edge: each given the parents of the one that does not descend from the other) on the frame
     `data`, as `pgm check`: a DataFrame x, y, given, statistic, df, p_value, rejected, the
-    smallest p-value first."""
+    smallest p-value first. test: "chi2", "g2" or a registered test; NAME[KEY=VALUE,...] sets an
+    option, as "chi2[correction=yates]" or "g2[min_rows_per_cell=5]"."""
     handle = _handle(network)
-    test = _core.default_ci_test if test is None else _choice(test, "test", ("chi2", "g2"), "independence test")
+    test = _text(test, "test")
     alpha = _real(alpha, "alpha")
     if not 0.0 < alpha < 1.0:
         raise Error(f"alpha must lie strictly between 0 and 1, got {alpha}")
@@ -670,7 +671,7 @@ def prevent(network, assign, controllable=None, epsilon=0.8, success=None, dista
 
 def learn_structure(
     data,
-    test=None,
+    test="chi2",
     alpha=0.01,
     tiers=None,
     forbid=None,
@@ -695,7 +696,8 @@ def learn_structure(
     """Structure learning on the frame's columns (all discrete), as `pgm learn-structure`: the
     edges of the learned DAG as (parent, child) pairs. algorithm: "pc" (PC-stable; the DAG is one
     of its equivalence class), "hc" (hill climbing), "tabu" or "mmhc" (PC-stable's skeleton
-    restricts hill climbing). test ("chi2" by default, as the program's, or "g2"), alpha, max_cond: PC's tests. score ("bic",
+    restricts hill climbing). test ("chi2", "g2" or a registered test; NAME[KEY=VALUE,...] sets an
+    option, as "chi2[correction=yates]"), alpha, max_cond: PC's tests. score ("bic",
     "aic[k=1]", "bdeu[iss=1]", "k2", "loglik", or a registered score; NAME[KEY=VALUE,...] sets
     an option), max_parents (0: no limit), tabu, max_tabu, restarts, perturb, seed and
     start (a pgm.Network, (parent, child) pairs or "pc" to start from): the score searches', as
@@ -723,7 +725,7 @@ def learn_structure(
         tiers_text = ";".join(",".join(_names(tier, "each tier")) for tier in tiers)
     return _core.learn_structure(
         columns,
-        _core.default_ci_test if test is None else _text(test, "test"),
+        _text(test, "test"),
         _real(alpha, "alpha"),
         _whole(max_cond, "max_cond", 0, 64),
         tiers_text,

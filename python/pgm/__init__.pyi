@@ -179,7 +179,7 @@ def backdoor_sets(network: Network, x: _Names, y: _Names, *, limit: int = 100_00
 def check(
     network: Network,
     data: pd.DataFrame,
-    test: Optional[Literal["chi2", "g2"]] = None,
+    test: str = "chi2",
     alpha: float = 0.05,
     *,
     threads: int = 0,
@@ -198,7 +198,7 @@ def prevent(
 ) -> dict[str, Any]: ...
 def learn_structure(
     data: pd.DataFrame,
-    test: Optional[Literal["chi2", "g2"]] = None,
+    test: str = "chi2",
     alpha: float = 0.01,
     tiers: Union[str, Sequence[Sequence[str]], None] = None,
     forbid: Optional[_Edges] = None,

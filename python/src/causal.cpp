@@ -38,7 +38,7 @@ py::dict check_frame(const network_handle& handle, const py::list& columns, cons
     const py::gil_scoped_release release;
     const auto data = make_dataset(buffers, "DataFrame");
     dag_check_options options;
-    options.test.test = parse_ci_test(test);
+    options.test = make_independence_test(test);
     options.alpha = alpha;
     options.threads = threads;
     result = check_dag(handle.network.structure(), data, options);

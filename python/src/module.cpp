@@ -365,7 +365,7 @@ py::dict prevent_plan(const network_handle& handle, const py::object& planned,
 // ---- structure, discretization, simulation, experiments --------------------------------------
 
 struct learn_arguments {
-  std::string test{to_string(pc_options{}.test)};
+  std::string test = independence_test().name();
   double alpha = 0.01;
   std::size_t max_conditioning = 3;
   std::string tiers;
@@ -373,7 +373,7 @@ struct learn_arguments {
   std::string require;
   unsigned threads = 0;
   std::string algorithm = "pc";
-  std::string score = family_score().text();
+  std::string score = family_score().name();
   std::size_t max_parents = 0;
   std::size_t tabu = 10;
   std::size_t max_tabu = 10;
@@ -394,7 +394,7 @@ edge_pairs learn_frame(const py::list& columns, const learn_arguments& args) {
   structure_choice choice;
   choice.algorithm = parse_structure_algorithm(args.algorithm);
   auto& options = choice.pc;
-  options.test = parse_ci_test(args.test);
+  options.test = make_independence_test(args.test);
   if (!(args.alpha > 0.0 && args.alpha < 1.0)) {
     throw error("alpha must lie strictly between 0 and 1, got " + text::format_double(args.alpha));
   }
@@ -621,8 +621,9 @@ PYBIND11_MODULE(_core, m) {
   py::register_exception<pgm::error>(m, "Error", PyExc_ValueError);
   m.attr("__version__") = pgm::version;
   // The library's defaults, which the package's own default None stands for (as the program's).
-  m.attr("default_ci_test") = std::string(to_string(pgm::pc_options{}.test));
-  m.attr("default_score") = pgm::family_score().text();
+  m.attr("default_ci_test") = pgm::independence_test().name();
+  m.def("ci_test_listing", [] { return pgm::independence_tests().listing(); });
+  m.attr("default_score") = pgm::family_score().name();
   m.def("score_listing", [] { return pgm::scores().listing(); });
   m.attr("missing_policies") = pgm::known_missing_policies();
 

@@ -28,6 +28,9 @@ def cli_edges(program, tmp_path, frame, *arguments):
     [
         ({}, []),  # the same default test (chi2)
         ({"test": "g2"}, ["--test", "g2"]),
+        ({"test": "chi2[correction=yates,min_rows_per_cell=5]"},
+         ["--test", "chi2", "--correction", "yates", "--min-rows-per-cell", "5"]),
+        ({"test": "g2[min_rows_per_cell=2]"}, ["--test", "g2[min_rows_per_cell=2]"]),
         ({"test": "chi2", "alpha": 0.05}, ["--test", "chi2", "--alpha", "0.05"]),
         ({"tiers": [["xOff1", "yOff1", "xOff2", "yOff2", "colour"], ["onTop1"], ["onTop2"]]},
          ["--tiers", "xOff1,yOff1,xOff2,yOff2,colour;onTop1;onTop2"]),
@@ -120,7 +123,7 @@ def test_start_and_score_errors(data):
         pgm.score(pc, data)
 
 
-def test_the_default_score_is_the_librarys_everywhere(program):
+def test_the_default_score_and_test_are_the_librarys_everywhere(program):
     declared = pgm._core.default_score
     assert declared == "bic"
     for function in (pgm.learn_structure, pgm.score):
@@ -129,6 +132,14 @@ def test_the_default_score_is_the_librarys_everywhere(program):
         assert f"NAME[KEY=VALUE,...]={declared}\n" in program.run(command, "--help").stdout
     listing = pgm._core.score_listing()
     assert "bdeu[iss=1]" in listing and declared in listing
+
+    declared = pgm._core.default_ci_test
+    assert declared == "chi2"
+    for function in (pgm.learn_structure, pgm.check):
+        assert inspect.signature(function).parameters["test"].default == declared
+    for command in ("check", "learn-structure"):
+        assert f"--test TEXT:NAME[KEY=VALUE,...]={declared}\n" in program.run(command, "--help").stdout
+    assert "g2[correction=none,min_rows_per_cell=0]" in pgm._core.ci_test_listing()
 
 
 def test_score_equals_the_programs(program, tmp_path, data):

@@ -11,6 +11,18 @@ std::string choices_help(const std::vector<std::string>& listing) {
   return "one of " + text::join(listing) + " (the options at their defaults); NAME[KEY=VALUE,...] sets an option";
 }
 
+std::string with_shorthand(const std::string& text, const component_choice& choice, const std::string& key,
+                           const std::string& value) {
+  const auto spec = parse_component_spec(text, "choice");
+  for (const auto& [set, unused] : spec.settings) {
+    if (set == key) throw error("sets " + key + ", which '" + text + "' sets already; give it once");
+  }
+  if (!choice.options.declares(key)) throw error("sets the option " + key + ", which " + choice.name + " has not");
+  std::string settings;
+  for (const auto& [set, set_value] : spec.settings) settings += set + "=" + set_value + ",";
+  return choice.name + "[" + settings + key + "=" + value + "]";
+}
+
 std::string described(const std::string& name, const option_values& options) {
   if (options.empty()) return name;
   std::vector<std::string> settings;
@@ -24,28 +36,15 @@ std::string described(const std::string& name, const option_values& options) {
 }
 
 void add_score_options(CLI::App& cmd, score_arguments& args) {
-  cmd.add_option("--score", args.score,
-                 "The decomposable score, as bnlearn's score() defines it: " + choices_help(scores().listing()) +
-                     "; 'bde' is bdeu")
-      ->check(component_check(scores()))
-      ->capture_default_str();
+  add_component_option(cmd, "--score", args.score,
+                       "The decomposable score, as bnlearn's score() defines it ('bde' is bdeu)", scores());
   cmd.add_option("--iss", args.iss, "Shorthand for --score bdeu[iss=N]: bdeu's imaginary sample size, a number > 0")
       ->check(number_between(0, std::numeric_limits<double>::infinity(), true, true));
 }
 
 family_score chosen_score(const score_arguments& args) {
-  if (!args.iss) return make_score(args.score);
-  const auto spec = parse_component_spec(args.score, "score");
-  for (const auto& [key, value] : spec.settings) {
-    if (key == "iss") throw error("--iss and --score " + args.score + " both set iss; give it once");
-  }
-  const auto choice = scores().choose(args.score);
-  if (!choice.options.declares("iss")) {
-    throw error("--iss sets the imaginary sample size of a score that has one (bdeu); " + choice.name + " has none");
-  }
-  std::string settings;
-  for (const auto& [key, value] : spec.settings) settings += key + "=" + value + ",";
-  return make_score(choice.name + "[" + settings + "iss=" + text::format_double(*args.iss) + "]");
+  const auto iss = args.iss ? std::optional(text::format_double(*args.iss)) : std::nullopt;
+  return chosen_with(scores(), args.score, {{"--iss", "iss", iss}});
 }
 
 }  // namespace pgm::cli

@@ -1,8 +1,8 @@
 #pragma once
 // Command-line options that choose a registered component (pgm/core/component_registry.hpp),
 // written NAME or NAME[KEY=VALUE,...]: their help lists each component with its declared
-// defaults, and a bad choice is refused while the arguments are parsed, with the registry's
-// message.
+// defaults, a bad choice is refused while the arguments are parsed with the registry's
+// message, and a shorthand option (--iss N) sets one option of the choice.
 
 #include <CLI/CLI.hpp>
 #include <optional>
@@ -10,11 +10,14 @@
 #include <vector>
 
 #include "pgm/core/component_registry.hpp"
+#include "pgm/core/error.hpp"
+#include "pgm/learn/independence_test_registry.hpp"
 #include "pgm/learn/score_registry.hpp"
 
 namespace pgm::cli {
 
-/// "one of aic[k=1], bdeu[iss=1], bic; NAME[KEY=VALUE,...] sets an option": the end of a help text.
+/// "one of aic[k=1], bdeu[iss=1], bic (the options at their defaults); NAME[KEY=VALUE,...]
+/// sets an option": the end of a help text.
 [[nodiscard]] std::string choices_help(const std::vector<std::string>& listing);
 
 /// Refuses a text the registry cannot choose from, with its message.
@@ -32,16 +35,55 @@ template <class Product>
       "NAME[KEY=VALUE,...]");
 }
 
+/// `flag` choosing from `registry` into `text`, its help `what` and the registry's listing.
+template <class Product>
+CLI::Option* add_component_option(CLI::App& cmd, const std::string& flag, std::string& text, const std::string& what,
+                                  const component_registry<Product>& registry) {
+  return cmd.add_option(flag, text, what + ": " + choices_help(registry.listing()))
+      ->check(component_check(registry))
+      ->capture_default_str();
+}
+
+/// A shorthand option that sets one option of a choice: --iss N for bdeu[iss=N].
+struct shorthand {
+  std::string flag;
+  std::string key;
+  std::optional<std::string> value;
+};
+
+/// The choice `text` with `key`=`value` added. Throws error (a sentence after the shorthand's
+/// flag) when the brackets set `key` too, or the component chosen has no option `key`.
+[[nodiscard]] std::string with_shorthand(const std::string& text, const component_choice& choice,
+                                         const std::string& key, const std::string& value);
+
+/// The component `text` chooses, with the shorthands given set on it. A shorthand that cannot
+/// be set, or whose value its option refuses, is a usage error naming its flag.
+template <class Product>
+[[nodiscard]] Product chosen_with(const component_registry<Product>& registry, std::string text,
+                                  const std::vector<shorthand>& shorthands) {
+  for (const auto& given : shorthands) {
+    if (!given.value) continue;
+    try {
+      text = with_shorthand(text, registry.choose(text), given.key, *given.value);
+      static_cast<void>(registry.choose(text));
+    } catch (const error& refused) {
+      throw CLI::ValidationError(given.flag, refused.what());
+    }
+  }
+  return registry.make(text);
+}
+
 /// "bdeu (iss 10)", "bic": a component and its options for people, numbers to 6 digits.
 [[nodiscard]] std::string described(const std::string& name, const option_values& options);
 
-[[nodiscard]] inline std::string described(const family_score& score) {
-  return described(score.name(), score.options());
+template <class Signature>
+[[nodiscard]] std::string described(const chosen_function<Signature>& component) {
+  return described(component.name(), component.options());
 }
 
 /// --score, with --iss as the shorthand of a score's iss option.
 struct score_arguments {
-  std::string score = family_score().text();
+  std::string score = family_score().name();
   std::optional<double> iss;
 };
 

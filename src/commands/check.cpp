@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/common.hpp"
+#include "cli/component_options.hpp"
 #include "pgm/causal/dag_check.hpp"
 #include "pgm/core/file.hpp"
 #include "pgm/core/text.hpp"
@@ -20,7 +21,7 @@ namespace {
 struct check_arguments {
   std::string model;
   std::string data;
-  std::string test{to_string(ci_test_options{}.test)};
+  std::string test = independence_test().name();
   double alpha = 0.05;
   bool all = false;
   std::string format = "text";
@@ -40,7 +41,7 @@ void run_check(const check_arguments& args) {
   for (const auto& v : structure.variables()) columns.push_back(v.name());
   const auto data = read_discrete_data(args.data, columns, {.missing = missing_of(args.missing)});
   dag_check_options options;
-  options.test.test = parse_ci_test(args.test);
+  options.test = make_independence_test(args.test);
   options.alpha = args.alpha;
   options.threads = args.threads;
   const auto result = check_dag(structure, data, options);
@@ -85,9 +86,7 @@ void add_check_command(CLI::App& app) {
       ->required();
   cmd->add_option("--data", args->data, std::string("Discrete data with a column per variable") + data_file_help)
       ->required();
-  cmd->add_option("--test", args->test, "Independence test: chi2 (Pearson) or g2 (likelihood ratio)")
-      ->check(CLI::IsMember(known_ci_tests()))
-      ->capture_default_str();
+  add_component_option(*cmd, "--test", args->test, "Independence test", independence_tests());
   cmd->add_option("--alpha", args->alpha, "A test with p at most alpha rejects its independence, 0 < alpha < 1")
       ->check(number_between(0, 1, true, true))
       ->capture_default_str();

@@ -12,6 +12,7 @@
 #include <optional>
 #include <sstream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "cli/common.hpp"
@@ -48,10 +49,10 @@ struct learn_structure_arguments {
   std::string map;
   double prior_weight = 5.0;
   std::optional<double> threshold;
-  std::string test{to_string(pc_options{}.test)};  // the library's default, as Python's
+  std::string test = independence_test().name();
   double alpha = 0.01;
-  std::string correction = "none";
-  double min_rows_per_cell = 0.0;
+  std::optional<std::string> correction;
+  std::optional<double> min_rows_per_cell;
   std::size_t max_conditioning = 3;
   std::string tiers;
   std::string forbid;
@@ -61,6 +62,39 @@ struct learn_structure_arguments {
   std::string out;
   missing_arguments missing;
 };
+
+/// Each option of a component as a member of `object`, under its name.
+void add_options(nlohmann::json& object, const option_values& options) {
+  for (std::size_t i = 0; i < options.declarations().size(); ++i) {
+    std::visit([&](const auto& value) { object[options.declarations()[i].name] = value; }, options.values()[i]);
+  }
+}
+
+/// The built-in tests' settings as PC's summary line has always shown them, other options as
+/// "key value": ", yates correction, independent below 5 rows per cell".
+std::string test_settings(const independence_test& test) {
+  std::string shown;
+  const auto& options = test.options();
+  for (std::size_t i = 0; i < options.declarations().size(); ++i) {
+    const auto& name = options.declarations()[i].name;
+    const auto& value = options.values()[i];
+    if (name == "correction") {
+      if (options.word(name) != "none") shown += ", " + options.word(name) + " correction";
+    } else if (name == "min_rows_per_cell") {
+      if (options.number(name) > 0)
+        shown += ", independent below " + text::format_short(options.number(name)) + " rows per cell";
+    } else {
+      shown += ", " + name + " " + format_option_value(value);
+    }
+  }
+  return shown;
+}
+
+/// The rows per cell below which the test declares independence untested (0 for a test
+/// without that option).
+double min_rows_per_cell(const independence_test& test) {
+  return test.options().declares("min_rows_per_cell") ? test.options().number("min_rows_per_cell") : 0.0;
+}
 
 std::string format_set(const cpdag& graph, const std::vector<variable_id>& given) {
   std::vector<std::string> names;
@@ -99,11 +133,7 @@ void write_searched(const learn_structure_arguments& args, const structure_choic
                          {"moves", result.moves},
                          {"restarts", result.restarts},
                          {"seed", search.seed}};
-  const auto& options = search.score.options();
-  for (std::size_t i = 0; i < options.declarations().size(); ++i) {
-    std::visit([&](const auto& value) { document["learned"][options.declarations()[i].name] = value; },
-               options.values()[i]);
-  }
+  add_options(document["learned"], search.score.options());
   if (choice.algorithm == structure_algorithm::tabu) document["learned"]["tabu"] = search.tabu;
   write_model_json(document, args.out, summary_before_replacing(out.str() + "-> " + args.out + "\n", args.out));
 }
@@ -148,10 +178,11 @@ void run_learn_structure(const learn_structure_arguments& args) {
   structure_choice choice;
   choice.algorithm = parse_structure_algorithm(args.algorithm);
   auto& options = choice.pc;
-  options.test = parse_ci_test(args.test);
+  const auto rows = args.min_rows_per_cell ? std::optional(text::format_double(*args.min_rows_per_cell)) : std::nullopt;
+  options.test = chosen_with(
+      independence_tests(), args.test,
+      {{"--correction", "correction", args.correction}, {"--min-rows-per-cell", "min_rows_per_cell", rows}});
   options.alpha = args.alpha;
-  options.correction = parse_continuity_correction(args.correction);
-  options.min_rows_per_cell = args.min_rows_per_cell;
   options.max_conditioning = args.max_conditioning;
   choice.threads = args.threads;
   if (!args.tiers.empty()) choice.knowledge.tiers = parse_tiers(args.tiers);
@@ -207,12 +238,8 @@ void run_learn_structure(const learn_structure_arguments& args) {
 
   std::ostringstream out;
   out << "PC-stable on " << data.rows() << " rows, " << data.size() << " variables: " << result.tests << " tests ("
-      << to_string(options.test) << ", alpha " << text::format_short(options.alpha) << ", conditioning sets up to "
-      << options.max_conditioning;
-  if (options.correction != continuity_correction::none) out << ", " << to_string(options.correction) << " correction";
-  if (options.min_rows_per_cell > 0) {
-    out << ", independent below " << text::format_short(options.min_rows_per_cell) << " rows per cell";
-  }
+      << options.test.name() << ", alpha " << text::format_short(options.alpha) << ", conditioning sets up to "
+      << options.max_conditioning << test_settings(options.test);
   out << ")\n";
   const auto directed = graph.directed_edges();
   const auto undirected = graph.undirected_edges();
@@ -230,10 +257,10 @@ void run_learn_structure(const learn_structure_arguments& args) {
       }
       if (s.test.too_few_rows) {
         out << "independent given " << format_set(graph, s.given) << " (too few rows: " << s.test.rows << " < "
-            << text::format_short(options.min_rows_per_cell) << " per cell)\n";
+            << text::format_short(min_rows_per_cell(options.test)) << " per cell)\n";
         continue;
       }
-      out << "independent given " << format_set(graph, s.given) << " (" << to_string(options.test) << " = "
+      out << "independent given " << format_set(graph, s.given) << " (" << options.test.name() << " = "
           << text::format_short(s.test.statistic, 5) << ", df = " << text::format_short(s.test.df)
           << ", p = " << text::format_short(s.test.p_value, 4) << ")\n";
     }
@@ -247,14 +274,10 @@ void run_learn_structure(const learn_structure_arguments& args) {
   for (const auto& name : data.names()) variables.push_back(data.discrete(name).var());
   const network_structure structure(variables, edges);
   auto document = to_json(structure);
-  document["learned"] = {{"algorithm", "pc-stable"},
-                         {"test", to_string(options.test)},
-                         {"alpha", options.alpha},
-                         {"correction", to_string(options.correction)},
-                         {"min_rows_per_cell", options.min_rows_per_cell},
-                         {"max_conditioning", options.max_conditioning},
-                         {"rows", data.rows()},
-                         {"undirected_in_cpdag", nlohmann::json::array()}};
+  document["learned"] = {{"algorithm", "pc-stable"}, {"test", options.test.name()},
+                         {"alpha", options.alpha},   {"max_conditioning", options.max_conditioning},
+                         {"rows", data.rows()},      {"undirected_in_cpdag", nlohmann::json::array()}};
+  add_options(document["learned"], options.test.options());
   for (const auto& e : undirected) document["learned"]["undirected_in_cpdag"].push_back({e.from, e.to});
   if (undirected.empty()) {
     out << "every edge is oriented; the DAG is the CPDAG";
@@ -328,22 +351,17 @@ void add_learn_structure_command(CLI::App& app) {
                       "), or from "
                       "PC-stable's result on the data with 'pc' (its --test, --alpha, --max-cond), instead of the "
                       "empty graph");
-  cmd->add_option("--test", args->test, "Independence test of pc and mmhc: chi2 (Pearson) or g2 (likelihood ratio)")
-      ->check(CLI::IsMember(known_ci_tests()))
-      ->capture_default_str();
+  add_component_option(*cmd, "--test", args->test, "Independence test of pc and mmhc", independence_tests());
   cmd->add_option("--alpha", args->alpha,
                   "Significance level, strictly between 0 and 1: an edge goes when a test has p > alpha")
       ->check(number_between(0, 1, true, true))
       ->capture_default_str();
   cmd->add_option("--correction", args->correction,
-                  "Continuity correction of 2x2 strata: none, or yates as pgmpy applies it")
-      ->check(CLI::IsMember(known_continuity_corrections()))
-      ->capture_default_str();
+                  "Shorthand for --test NAME[correction=C]: none, or yates as pgmpy applies it");
   cmd->add_option("--min-rows-per-cell", args->min_rows_per_cell,
-                  "Declare independence, untested, when a test has fewer rows than K per cell of its table "
-                  "(5: bnlearn's rule; 0: always test)")
-      ->check(non_negative_number())
-      ->capture_default_str();
+                  "Shorthand for --test NAME[min_rows_per_cell=K]: declare independence, untested, when a test has "
+                  "fewer rows than K per cell of its table (5: bnlearn's rule; 0: always test)")
+      ->check(non_negative_number());
   cmd->add_option("--max-cond", args->max_conditioning, "Largest conditioning set tried")
       ->check(whole_number(0, 64))
       ->capture_default_str();

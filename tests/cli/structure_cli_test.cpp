@@ -62,9 +62,9 @@ TEST_F(structure_cli_test, score_bad_input) {
               HasSubstr("option iss of the score 'bdeu' must be a number > 0, got '0'"));
   EXPECT_THAT(scored("--score 'bdeu[iss=1'").err, HasSubstr("expected ']' at column 11"));
   EXPECT_THAT(scored("--iss 0").err, HasSubstr("expected a finite number > 0"));
-  EXPECT_THAT(scored("--iss 2").err, HasSubstr("--iss sets the imaginary sample size of a score that has one (bdeu); "
-                                               "bic has none"));
-  EXPECT_THAT(scored("--score 'bdeu[iss=2]' --iss 3").err, HasSubstr("both set iss; give it once"));
+  EXPECT_THAT(scored("--iss 2").err, HasSubstr("--iss: sets the option iss, which bic has not"));
+  EXPECT_THAT(scored("--score 'bdeu[iss=2]' --iss 3").err,
+              HasSubstr("--iss: sets iss, which 'bdeu[iss=2]' sets already; give it once"));
   // The shorthand and the brackets choose the same score.
   const auto shorthand = scored("--score bde --iss 7");
   EXPECT_EQ(shorthand.code, 0) << shorthand.err;

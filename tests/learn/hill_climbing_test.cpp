@@ -303,7 +303,7 @@ TEST(learn_structure_test, one_entry_point_for_every_algorithm) {
     EXPECT_LE(structural_hamming_distance(result.graph, truth), 4u) << to_string(algorithm);
   }
   choice.algorithm = structure_algorithm::pc;
-  choice.pc.test = ci_test::g_squared;
+  choice.pc.test = make_independence_test("g2");
   const auto pc = learn_structure(data, choice);
   ASSERT_TRUE(pc.pc.has_value());
   EXPECT_EQ(pc.graph, pc_stable(data, choice.pc).graph);

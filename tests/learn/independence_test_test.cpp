@@ -12,6 +12,8 @@
 #include <vector>
 
 #include "pgm/inference/sampling.hpp"
+#include "pgm/learn/independence_test_registry.hpp"
+#include "pgm/learn/pc.hpp"
 
 namespace pgm::independence_test_tests {
 namespace {
@@ -126,15 +128,30 @@ TEST(independence_test, p_values_from_boost) {
 TEST(independence_test, bad_shapes_and_names) {
   EXPECT_THROW(static_cast<void>(test_independence(std::vector<std::uint64_t>(5), 2, 2, ci_test::chi_square)),
                model_error);
-  EXPECT_EQ(parse_ci_test("chi2"), ci_test::chi_square);
-  EXPECT_EQ(parse_ci_test("g2"), ci_test::g_squared);
-  EXPECT_EQ(to_string(ci_test::g_squared), "g2");
+  EXPECT_EQ(make_independence_test("g2").text(), "g2[correction=none,min_rows_per_cell=0]");
+  EXPECT_EQ(independence_test().name(), "chi2");
   try {
-    static_cast<void>(parse_ci_test("fisher"));
+    static_cast<void>(make_independence_test("fisher"));
     FAIL();
   } catch (const unknown_name& e) {
-    EXPECT_THAT(e.what(), HasSubstr("unknown independence test 'fisher' (known: chi2, g2)"));
+    EXPECT_THAT(e.what(), HasSubstr("unknown independence test 'fisher' (known: cautious, chi2, g2)"));
   }
+  EXPECT_THAT([] { static_cast<void>(make_independence_test("chi2[correction=fisher]")); },
+              ::testing::ThrowsMessage<model_error>(
+                  HasSubstr("option correction of the independence test 'chi2' must be one of none, yates, got "
+                            "'fisher'")));
+}
+
+// Each registered test equals the kernel with the options it was chosen with.
+TEST(independence_test, a_test_chosen_by_name_is_the_kernel_with_its_options) {
+  const std::vector<std::uint64_t> counts{10, 31, 30, 90, 3, 9, 8, 30};
+  const auto at = [&](const char* text) { return make_independence_test(text)(counts, 2, 2); };
+  EXPECT_EQ(at("chi2"), test_independence(counts, 2, 2, ci_test::chi_square));
+  EXPECT_EQ(at("g2"), test_independence(counts, 2, 2, ci_test::g_squared));
+  EXPECT_EQ(at("g2[correction=yates]"),
+            test_independence(counts, 2, 2, {.test = ci_test::g_squared, .correction = continuity_correction::yates}));
+  EXPECT_EQ(at("chi2[min_rows_per_cell=30]"), test_independence(counts, 2, 2, {.min_rows_per_cell = 30}));
+  EXPECT_TRUE(at("chi2[min_rows_per_cell=30]").too_few_rows);
 }
 
 TEST(independence_test, yates_moves_each_count_half_a_unit_toward_its_expectation) {
@@ -171,10 +188,6 @@ TEST(independence_test, yates_corrects_only_strata_with_one_degree_of_freedom) {
   EXPECT_NEAR(both.statistic, first.statistic + second_plain.statistic, 1e-12);
   EXPECT_EQ(both.df, 3.0);
   EXPECT_EQ(to_string(continuity_correction::yates), "yates");
-  EXPECT_EQ(parse_continuity_correction("none"), continuity_correction::none);
-  EXPECT_THAT([] { static_cast<void>(parse_continuity_correction("williams")); },
-              ::testing::ThrowsMessage<unknown_name>(
-                  HasSubstr("unknown continuity correction 'williams' (known: none, yates)")));
 }
 
 TEST(independence_test, too_few_rows_per_cell_declares_independence) {
@@ -234,6 +247,35 @@ TEST(independence_test, counting_threads_give_the_same_table) {
   std::uint64_t total = 0;
   for (auto c : one) total += c;
   EXPECT_EQ(total, 300000u);
+}
+
+// A user's test, in one struct and one registration line: independence declared whenever the
+// table has fewer rows than `rows`, chi-square otherwise.
+struct cautious_test {
+  static std::vector<option_declaration> options() { return {count_option("rows", 100, "the fewest rows tested")}; }
+  explicit cautious_test(const option_values& options) : rows(options.count("rows")) {}
+  ci_result operator()(std::span<const std::uint64_t> counts, std::size_t x_states, std::size_t y_states) const {
+    auto result = test_independence(counts, x_states, y_states, ci_test::chi_square);
+    if (result.rows < rows) result = {.rows = result.rows, .too_few_rows = true};
+    return result;
+  }
+  std::size_t rows;
+};
+
+const register_independence_test<cautious_test> registered("cautious", "chi-square from `rows` rows on");
+
+TEST(independence_test, a_users_test_serves_pc_by_name) {
+  const auto data = sample(chain(), 5000, 3);
+  pc_options options;
+  options.test = make_independence_test("cautious[rows=1000000]");
+  const auto never = pc_stable(data, options);
+  EXPECT_TRUE(never.graph.undirected_edges().empty() && never.graph.directed_edges().empty());
+  options.test = make_independence_test("cautious[rows=0]");
+  options.threads = 1;
+  const auto always = pc_stable(data, options);
+  options.test = make_independence_test("chi2");
+  EXPECT_EQ(always.graph, pc_stable(data, options).graph);
+  EXPECT_EQ(always.tests, pc_stable(data, options).tests);
 }
 
 }  // namespace

@@ -76,8 +76,8 @@ TEST(pc_test, chain) {
 
 TEST(pc_test, fork) {
   const auto net = network({"a", "b", "c"}, {{"b", "a"}, {"b", "c"}});
-  for (auto test : {ci_test::chi_square, ci_test::g_squared}) {
-    const auto r = learn(sample(net, 20000, 2), {.test = test});
+  for (const auto* test : {"chi2", "g2"}) {
+    const auto r = learn(sample(net, 20000, 2), {.test = make_independence_test(test)});
     EXPECT_EQ(shd(r, net), 0u);
     EXPECT_TRUE(r.graph.directed_edges().empty());
   }
@@ -102,7 +102,7 @@ TEST(pc_test, collider_then_chain_is_oriented_by_meek) {
 TEST(pc_test, dozen_node_random_network) {
   const auto net = testing::random_network(2024, {.nodes = 12, .max_parents = 2, .min_states = 2, .max_states = 4});
   const auto data = sample(net, 100000, 5);
-  const auto r = learn(data, {.test = ci_test::g_squared, .alpha = 0.01});
+  const auto r = learn(data, {.test = make_independence_test("g2"), .alpha = 0.01});
   const auto truth = cpdag_of(net.graph());
   const auto parts = hamming_differences(r.graph, truth);
   // The skeleton is exact. Two orientations go wrong: the dependence along v5 <- v3 -> v6 is
@@ -202,14 +202,14 @@ TEST(pc_test, peer_options_reach_every_test) {
   const auto data = sample(net, 300, 3);
   const auto plain = learn(data);
   EXPECT_EQ(plain.graph.undirected_edges().size(), 2u);
-  const auto sparse = learn(data, {.min_rows_per_cell = 40});
+  const auto sparse = learn(data, {.test = make_independence_test("chi2[min_rows_per_cell=40]")});
   EXPECT_TRUE(sparse.graph.undirected_edges().empty());
   ASSERT_EQ(sparse.removed.size(), 3u);
   for (const auto& s : sparse.removed) {
     EXPECT_TRUE(s.test.too_few_rows);
     EXPECT_TRUE(s.given.empty());
   }
-  const auto yates = learn(data, {.correction = continuity_correction::yates});
+  const auto yates = learn(data, {.test = make_independence_test("chi2[correction=yates]")});
   EXPECT_EQ(yates.graph, plain.graph);
   ASSERT_EQ(yates.removed.size(), plain.removed.size());
   EXPECT_EQ(yates.removed[0].test, plain.removed[0].test);
@@ -219,8 +219,10 @@ TEST(pc_test, bad_options) {
   const auto data = sample(network({"a", "b"}, {{"a", "b"}}), 100, 1);
   EXPECT_THROW(static_cast<void>(learn(data, {.alpha = 0.0})), model_error);
   EXPECT_THROW(static_cast<void>(learn(data, {.alpha = 1.5})), model_error);
-  EXPECT_THAT([&] { static_cast<void>(learn(data, {.min_rows_per_cell = -2})); },
-              ::testing::ThrowsMessage<model_error>(::testing::HasSubstr("minimum rows per cell")));
+  EXPECT_THAT(
+      [&] { static_cast<void>(learn(data, {.test = make_independence_test("chi2[min_rows_per_cell=-2]")})); },
+      ::testing::ThrowsMessage<model_error>(::testing::HasSubstr("option min_rows_per_cell of the independence "
+                                                                 "test 'chi2' must be a number >= 0, got '-2'")));
   dataset mixed = data;
   mixed.add(continuous_column("x", std::vector<double>(100, 1.0)));
   EXPECT_THROW(static_cast<void>(learn(mixed)), data_error);
@@ -266,7 +268,7 @@ bayesian_network stacking_like() {
 TEST(pc_test, stacking_like_parents_of_on_top2) {
   const auto net = stacking_like();
   const auto data = sample(net, 100000, 12);
-  const auto r = learn(data, {.test = ci_test::g_squared, .alpha = 0.01, .max_conditioning = 3});
+  const auto r = learn(data, {.test = make_independence_test("g2"), .alpha = 0.01, .max_conditioning = 3});
   const auto& g = r.graph;
   std::vector<std::string> parents;
   for (auto p : g.parents(g.id("onTop2"))) parents.push_back(g.name(p));
@@ -279,7 +281,7 @@ TEST(pc_test, stacking_like_parents_of_on_top2) {
   EXPECT_EQ(shd(r, net), 0u);
   // With the outcomes last in tiers, the same graph.
   const auto tiered =
-      learn(data, {.test = ci_test::g_squared,
+      learn(data, {.test = make_independence_test("g2"),
                    .knowledge = {.tiers = {{"xOff1", "yOff1", "xOff2", "yOff2", "colorUp1", "colorUp2", "colorDown"},
                                            {"onTop1"},
                                            {"onTop2"}}}});
@@ -290,7 +292,7 @@ TEST(pc_test, published_sachs_network) {
   const auto path = std::filesystem::path(PGM_NETWORKS_DIR) / "sachs.bif";
   const auto net = read_bif(path);
   const auto data = sample(net, 50000, 13);
-  const auto r = learn(data, {.test = ci_test::g_squared, .alpha = 0.01});
+  const auto r = learn(data, {.test = make_independence_test("g2"), .alpha = 0.01});
   const auto parts = hamming_differences(r.graph, cpdag_of(net.graph()));
   // Sachs has 17 edges; a few weak ones may be missed or misoriented.
   EXPECT_LE(parts.missing + parts.extra, 3u) << parts.missing << " missing, " << parts.extra << " extra";

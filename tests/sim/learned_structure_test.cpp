@@ -25,7 +25,7 @@ TEST(learned_structure_test, two_stack_parents_of_on_top2_are_the_four_offsets) 
   const auto data = apply_discretization(raw, fit_discretization(raw, continuous, binning::quantile, 5));
 
   pc_options pc;
-  pc.test = ci_test::g_squared;
+  pc.test = make_independence_test("g2");
   pc.alpha = 0.01;
   // Outcomes come last, and the second cube's outcome is read as the paper's model reads it:
   // a function of the offsets, not of whether the first cube stayed.

@@ -1,9 +1,10 @@
 #pragma once
 /// \file
 /// Checking a DAG against data: every independence the DAG implies locally — each variable
-/// independent of its non-descendants given its parents — tested pair by pair with the
-/// chi-square or G² test of learn/independence_test.hpp. Each non-adjacent pair {A, B} is tested
-/// once: as A ⟂ B | Pa(A) where B does not descend from A, else as B ⟂ A | Pa(B). A test whose
+/// independent of its non-descendants given its parents — tested pair by pair with chi-square,
+/// G² or any registered test (pgm/learn/independence_test_registry.hpp). Each non-adjacent pair
+/// {A, B} is tested once: as A ⟂ B | Pa(A) where B does not descend from A, else as
+/// B ⟂ A | Pa(B). A test whose
 /// p-value is at most alpha rejects the independence: the data contradict the DAG there.
 
 #include <algorithm>
@@ -16,12 +17,13 @@
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/detail/parallel_for.hpp"
-#include "pgm/learn/independence_test.hpp"
+#include "pgm/learn/independence_test_registry.hpp"
 
 namespace pgm {
 
 struct dag_check_options {
-  ci_test_options test;
+  /// Any independence test (pgm/learn/independence_test_registry.hpp); chi2 by default.
+  independence_test test;
   double alpha = 0.05;
   /// Threads, the calling one included; 0 uses every hardware thread. The result is the same.
   unsigned threads = 0;

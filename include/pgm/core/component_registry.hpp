@@ -5,7 +5,9 @@
 /// builds the component. The scores (pgm/learn/score_registry.hpp) are kept in one; a user's
 /// component joins its registry with one line.
 
+#include <concepts>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -26,6 +28,32 @@ struct component_choice {
 
   /// "bdeu[iss=10]": what reads back to this choice.
   [[nodiscard]] std::string text() const { return spec_text(name, options); }
+};
+
+/// A component that is a function, with the choice that made it: what a registry of scores or
+/// independence tests builds. Copies share the function, which may be called from several
+/// threads at once.
+template <class Signature>
+class chosen_function;
+
+template <class Result, class... Arguments>
+class chosen_function<Result(Arguments...)> {
+ public:
+  using function_type = std::function<Result(Arguments...)>;
+
+  chosen_function(function_type call, component_choice choice)
+      : call_(std::make_shared<const function_type>(std::move(call))), choice_(std::move(choice)) {}
+
+  Result operator()(Arguments... arguments) const { return (*call_)(std::forward<Arguments>(arguments)...); }
+
+  [[nodiscard]] const std::string& name() const noexcept { return choice_.name; }
+  [[nodiscard]] const option_values& options() const noexcept { return choice_.options; }
+  /// "bdeu[iss=10]": what chooses this component again.
+  [[nodiscard]] std::string text() const { return choice_.text(); }
+
+ private:
+  std::shared_ptr<const function_type> call_;
+  component_choice choice_;
 };
 
 template <class Product>
@@ -97,5 +125,20 @@ class component_registry {
   detail::named_registry<entry> entries_;
   detail::named_registry<std::string> aliases_{"alias"};
 };
+
+/// The entry of a component type T in a registry of Products: T's declared options (none when
+/// it declares none) and how a Product is made of T built from them.
+template <class Product, class T>
+[[nodiscard]] typename component_registry<Product>::entry component_entry(std::string summary) {
+  if constexpr (requires { T::options(); }) {
+    static_assert(std::constructible_from<T, const option_values&>,
+                  "a component that declares options is constructible from the option_values they are read into");
+    return {std::move(summary), T::options(),
+            [](const component_choice& choice) { return Product(T(choice.options), choice); }};
+  } else {
+    static_assert(std::default_initializable<T>, "a component without options is default-constructible");
+    return {std::move(summary), {}, [](const component_choice& choice) { return Product(T{}, choice); }};
+  }
+}
 
 }  // namespace pgm

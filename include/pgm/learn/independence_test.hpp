@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "pgm/core/compilation.hpp"
+#include "pgm/core/component_options.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/unknown_name.hpp"
 #include "pgm/data/dataset.hpp"
@@ -43,19 +44,9 @@ enum class ci_test {
   g_squared,   ///< likelihood ratio: 2 · sum over cells of O · ln(O / E)
 };
 
-/// "chi2" or "g2", as the command line spells them.
+/// "chi2" or "g2", the names of their tests in the registry.
 [[nodiscard]] inline std::string_view to_string(ci_test test) noexcept {
   return test == ci_test::chi_square ? "chi2" : "g2";
-}
-
-inline constexpr std::array ci_tests{ci_test::chi_square, ci_test::g_squared};
-
-/// The tests' names, for parsing, messages and the command line's allowed values.
-[[nodiscard]] inline std::vector<std::string> known_ci_tests() { return names_of(ci_tests); }
-
-/// Parses "chi2" or "g2"; throws unknown_name otherwise.
-[[nodiscard]] inline ci_test parse_ci_test(std::string_view text) {
-  return parse_choice("independence test", text, ci_tests);
 }
 
 /// A continuity correction of the 2 x 2 strata (one degree of freedom).
@@ -66,21 +57,9 @@ enum class continuity_correction {
   yates,
 };
 
-/// "none" or "yates", as the command line spells them.
+/// "none" or "yates", as the tests' option spells them.
 [[nodiscard]] inline std::string_view to_string(continuity_correction correction) noexcept {
   return correction == continuity_correction::yates ? "yates" : "none";
-}
-
-inline constexpr std::array continuity_corrections{continuity_correction::none, continuity_correction::yates};
-
-/// The corrections' names, for parsing, messages and the command line's allowed values.
-[[nodiscard]] inline std::vector<std::string> known_continuity_corrections() {
-  return names_of(continuity_corrections);
-}
-
-/// Parses "none" or "yates"; throws unknown_name otherwise.
-[[nodiscard]] inline continuity_correction parse_continuity_correction(std::string_view text) {
-  return parse_choice("continuity correction", text, continuity_corrections);
 }
 
 /// How a test is computed and when it gives up on a sparse table.
@@ -125,6 +104,45 @@ struct ci_result {
   return test_independence(counts, x_states, y_states, ci_test_options{.test = test});
 }
 
+/// A test of X ⟂ Y | Z on their three-way table, laid out as test_independence reads it (X
+/// fastest, then Y, then the strata of Z). PC and the DAG check call it from several threads at
+/// once, so it must not change when called.
+template <class T>
+concept IndependenceTest = std::copy_constructible<T> &&
+    requires(const T& test, std::span<const std::uint64_t> counts, std::size_t x_states, std::size_t y_states) {
+  { test(counts, x_states, y_states) } -> std::convertible_to<ci_result>;
+};
+
+/// Pearson's chi-square ("chi2") or G² ("g2") with its options declared for the registry
+/// (pgm/learn/independence_test_registry.hpp).
+template <ci_test Statistic>
+struct contingency_test {
+  [[nodiscard]] static std::vector<option_declaration> options() {
+    return {word_option("correction", "none", {"none", "yates"},
+                        "Yates' continuity correction of the 2 x 2 strata, as pgmpy applies it"),
+            number_option("min_rows_per_cell", 0.0,
+                          "independence without a test below this many rows per cell, as bnlearn decides sparse "
+                          "tables (0: always test)")
+                .at_least(0.0)};
+  }
+  explicit contingency_test(const option_values& options)
+      : settings{Statistic,
+                 options.word("correction") == "yates" ? continuity_correction::yates : continuity_correction::none,
+                 options.number("min_rows_per_cell")} {}
+
+  [[nodiscard]] ci_result operator()(std::span<const std::uint64_t> counts, std::size_t x_states,
+                                     std::size_t y_states) const {
+    return test_independence(counts, x_states, y_states, settings);
+  }
+
+  ci_test_options settings;
+};
+
+using chi_square_test = contingency_test<ci_test::chi_square>;
+using g_squared_test = contingency_test<ci_test::g_squared>;
+
+static_assert(IndependenceTest<chi_square_test> && IndependenceTest<g_squared_test>);
+
 namespace detail {
 
 /// Counts the table (x | given..., y) into `counts` (resized and zeroed) over all rows where
@@ -148,6 +166,24 @@ PGM_DECL void count_ci_table(const discrete_column& x, const discrete_column& y,
 /// X ⟂ Y | given by column names. Throws data_error for a missing or continuous column.
 [[nodiscard]] PGM_DECL ci_result test_independence(const dataset& data, std::string_view x, std::string_view y,
                                                    std::span<const std::string> given, const ci_test_options& options);
+
+/// X ⟂ Y | given by any IndependenceTest, counted over all rows of the columns.
+template <IndependenceTest T>
+[[nodiscard]] ci_result test_independence(const discrete_column& x, const discrete_column& y,
+                                          std::span<const discrete_column* const> given, const T& test) {
+  std::vector<std::uint64_t> counts;
+  detail::count_ci_table(x, y, given, counts);
+  return test(std::span<const std::uint64_t>(counts), x.var().cardinality(), y.var().cardinality());
+}
+
+/// The same by column names. Throws data_error for a missing or continuous column.
+template <IndependenceTest T>
+[[nodiscard]] ci_result test_independence(const dataset& data, std::string_view x, std::string_view y,
+                                          std::span<const std::string> given, const T& test) {
+  std::vector<const discrete_column*> given_columns;
+  for (const auto& name : given) given_columns.push_back(&data.discrete(name));
+  return test_independence(data.discrete(x), data.discrete(y), given_columns, test);
+}
 
 /// The same without correction or minimum rows.
 [[nodiscard]] inline ci_result test_independence(const discrete_column& x, const discrete_column& y,

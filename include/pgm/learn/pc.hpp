@@ -30,18 +30,15 @@
 #include "pgm/detail/text.hpp"
 #include "pgm/learn/background_knowledge.hpp"
 #include "pgm/learn/cpdag.hpp"
-#include "pgm/learn/independence_test.hpp"
+#include "pgm/learn/independence_test_registry.hpp"
 #include "pgm/learn/orientation.hpp"
 
 namespace pgm {
 
 struct pc_options {
-  ci_test test = ci_test::chi_square;
-  /// Yates' correction of 2 x 2 strata, as pgmpy applies it (off by default).
-  continuity_correction correction = continuity_correction::none;
-  /// Independence without a test below this many rows per cell, as bnlearn decides sparse
-  /// tables (0, the default: always test).
-  double min_rows_per_cell = 0.0;
+  /// Any independence test (pgm/learn/independence_test_registry.hpp); chi2 by default, with
+  /// Yates' correction as pgmpy applies it and bnlearn's rows per cell as options.
+  independence_test test;
   /// Significance level: an edge is removed when some test has p > alpha.
   double alpha = 0.01;
   /// The largest conditioning set tried.

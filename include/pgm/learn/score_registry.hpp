@@ -28,39 +28,12 @@
 
 namespace pgm {
 
-/// Any family score, with the name and options it was chosen by. Copies share the score,
-/// which is called from several threads at once and so must not change when called.
-class family_score {
+/// Any family score, with the name and options it was chosen by.
+class family_score : public chosen_function<double(const count_table&)> {
  public:
   /// bic, the library's default.
   PGM_DECL family_score();
-
-  template <class S>
-  requires(!std::same_as<S, family_score> && FamilyScore<S>) family_score(S score, component_choice choice)
-      : self_(std::make_shared<const holder<S>>(std::move(score))), choice_(std::move(choice)) {}
-
-  /// The family's term (larger is better).
-  [[nodiscard]] double operator()(const count_table& counts) const { return self_->score(counts); }
-
-  [[nodiscard]] const std::string& name() const noexcept { return choice_.name; }
-  [[nodiscard]] const option_values& options() const noexcept { return choice_.options; }
-  /// "bdeu[iss=10]": what chooses this score again.
-  [[nodiscard]] std::string text() const { return choice_.text(); }
-
- private:
-  struct interface {
-    virtual ~interface() = default;
-    [[nodiscard]] virtual double score(const count_table& counts) const = 0;
-  };
-  template <class S>
-  struct holder final : interface {
-    explicit holder(S s) : inside(std::move(s)) {}
-    double score(const count_table& counts) const override { return static_cast<double>(inside(counts)); }
-    S inside;
-  };
-
-  std::shared_ptr<const interface> self_;
-  component_choice choice_;
+  family_score(function_type score, component_choice choice) : chosen_function(std::move(score), std::move(choice)) {}
 };
 
 static_assert(FamilyScore<family_score>);
@@ -74,29 +47,11 @@ using score_registry = component_registry<family_score>;
 /// score or option, model_error for a bad value.
 [[nodiscard]] inline family_score make_score(std::string_view text) { return scores().make(text); }
 
-namespace detail {
-
-/// The registry's entry for S: its options and how it is built from them.
-template <FamilyScore S>
-[[nodiscard]] score_registry::entry score_entry(std::string summary) {
-  if constexpr (requires { S::options(); }) {
-    static_assert(std::constructible_from<S, const option_values&>,
-                  "a score that declares options is constructible from the option_values they are read into");
-    return {std::move(summary), S::options(),
-            [](const component_choice& choice) { return family_score(S(choice.options), choice); }};
-  } else {
-    static_assert(std::default_initializable<S>, "a score without options is default-constructible");
-    return {std::move(summary), {}, [](const component_choice& choice) { return family_score(S{}, choice); }};
-  }
-}
-
-}  // namespace detail
-
 /// Registers a score type when the program starts: `static const register_score<S> r("name", "…");`.
 template <FamilyScore S>
 struct register_score {
   register_score(std::string name, std::string summary) {
-    scores().add(std::move(name), detail::score_entry<S>(std::move(summary)));
+    scores().add(std::move(name), component_entry<family_score, S>(std::move(summary)));
   }
 };
 

@@ -53,9 +53,8 @@ PGM_DECL bool skeleton_worker::search(const edge_task& task, std::size_t level,
     given_.clear();
     for (auto i : pick) given_.push_back(columns_[candidates[i]]);
     count_ci_table(*columns_[task.x], *columns_[task.y], given_, counts_, count_threads_);
-    const auto result =
-        test_independence(counts_, columns_[task.x]->var().cardinality(), columns_[task.y]->var().cardinality(),
-                          {options_.test, options_.correction, options_.min_rows_per_cell});
+    const auto result = options_.test(std::span<const std::uint64_t>(counts_), columns_[task.x]->var().cardinality(),
+                                      columns_[task.y]->var().cardinality());
     ++outcome.tests;
     if (result.independent(options_.alpha)) {
       outcome.removed = true;
@@ -70,10 +69,6 @@ PGM_DECL bool skeleton_worker::search(const edge_task& task, std::size_t level,
 PGM_DECL void check_pc_options(const pc_options& options) {
   if (!(options.alpha > 0.0 && options.alpha < 1.0)) {
     throw model_error("alpha must lie strictly between 0 and 1, got " + detail::format_short(options.alpha));
-  }
-  if (!(options.min_rows_per_cell >= 0.0) || !std::isfinite(options.min_rows_per_cell)) {
-    throw model_error("the minimum rows per cell must be a finite number >= 0, got " +
-                      detail::format_short(options.min_rows_per_cell));
   }
 }
 
