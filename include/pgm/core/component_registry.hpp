@@ -2,8 +2,9 @@
 /// \file
 /// Components by name, each with its declared options (pgm/core/component_options.hpp):
 /// `registry.make("bdeu[iss=10]")` finds "bdeu", sets iss on top of its declared defaults and
-/// builds the component. The scores (pgm/learn/score_registry.hpp) are kept in one; a user's
-/// component joins its registry with one line.
+/// builds the component. The scores (pgm/learn/score_registry.hpp) and the independence tests
+/// (pgm/learn/independence_test_registry.hpp) are kept in one each; a user's component joins
+/// its registry with one line.
 
 #include <concepts>
 #include <functional>
