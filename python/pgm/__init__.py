@@ -6,6 +6,8 @@ prediction and failure prevention, PC-stable structure learning, discretization,
 the paper's experiments), and the same results to the last bit. See docs/python.md.
 """
 
+import inspect
+import math
 import numbers
 import os
 from collections.abc import Mapping
@@ -682,7 +684,7 @@ def learn_structure(
     missing="error",
     algorithm="pc",
     score="bic",
-    max_parents=0,
+    max_parents=math.inf,
     tabu=10,
     max_tabu=10,
     restarts=0,
@@ -695,17 +697,20 @@ def learn_structure(
 ):
     """Structure learning on the frame's columns (all discrete), as `pgm learn-structure`: the
     edges of the learned DAG as (parent, child) pairs. algorithm: "pc" (PC-stable; the DAG is one
-    of its equivalence class), "hc" (hill climbing), "tabu" or "mmhc" (PC-stable's skeleton
-    restricts hill climbing). test ("chi2", "g2" or a registered test; NAME[KEY=VALUE,...] sets an
-    option, as "chi2[correction=yates]"), alpha, max_cond: PC's tests. score ("bic",
-    "aic[k=1]", "bdeu[iss=1]", "k2", "loglik", or a registered score; NAME[KEY=VALUE,...] sets
-    an option), max_parents (0: no limit), tabu, max_tabu, restarts, perturb, seed and
-    start (a pgm.Network, (parent, child) pairs or "pc" to start from): the score searches', as
-    docs/structure-learning.md says. prior_model (a pgm.Network of a related task), map (its
-    correspondence, as for pgm.fit) and prior_weight: the structure prior, a score bonus per edge
-    of the prior network that the map carries over. tiers: "a,b;c;d" or a list of lists of names, earliest
-    first; forbid and require: edges as for pgm.fit. missing: as for pgm.fit; with "available"
-    each family, or test, counts the rows where its variables are present."""
+    of its equivalence class), "hc" (hill climbing), "tabu", "mmhc" (PC-stable's skeleton
+    restricts hill climbing), "empty" or a registered learner; NAME[KEY=VALUE,...] sets its
+    options, as "tabu[tabu=20,score=bdeu[iss=10]]". The other keyword arguments each set one
+    option of the learner, or of the "pc" that start="pc" starts from, when they differ from
+    their defaults (the library's): test ("chi2", "g2" or a registered test, as
+    "chi2[correction=yates]"), alpha, max_cond: PC's tests. score ("bic", "aic[k=1]",
+    "bdeu[iss=1]", "k2", "loglik", or a registered score), max_parents (0 or math.inf: no
+    limit), tabu, max_tabu, restarts, perturb, seed: the score searches', as
+    docs/structure-learning.md says. start: a pgm.Network, (parent, child) pairs or "pc" to
+    start from. prior_model (a pgm.Network of a related task), map (its correspondence, as for
+    pgm.fit) and prior_weight: the structure prior, a score bonus per edge of the prior network
+    that the map carries over. tiers: "a,b;c;d" or a list of lists of names, earliest first;
+    forbid and require: edges as for pgm.fit. missing: as for pgm.fit; with "available" each
+    family, or test, counts the rows where its variables are present."""
     names = _frame.column_names(data)
     data = _frame.with_missing(data, names, missing)
     columns = _frame.columns_of(data, names)
@@ -723,30 +728,51 @@ def learn_structure(
         tiers_text = tiers
     else:
         tiers_text = ";".join(",".join(_names(tier, "each tier")) for tier in tiers)
+    limit = max_parents if max_parents == math.inf else _whole(max_parents, "max_parents", 0, 1024) or math.inf
+    given = {
+        "test": _text(test, "test"),
+        "alpha": _real(alpha, "alpha"),
+        "max_cond": _whole(max_cond, "max_cond", 0, 64),
+        "score": _text(score, "score"),
+        "max_parents": limit,
+        "tabu": _whole(tabu, "tabu", 1, 100_000),
+        "max_tabu": _whole(max_tabu, "max_tabu", 0, 100_000),
+        "restarts": _whole(restarts, "restarts", 0, 100_000),
+        "perturb": _whole(perturb, "perturb", 1, 100_000),
+        "seed": _seed(seed),
+    }
+    defaults = inspect.signature(learn_structure).parameters
+    settings = [(keyword, _LEARNER_OPTION.get(keyword, keyword), _option_text(value))
+                for keyword, value in given.items() if value != defaults[keyword].default]
+    if isinstance(start, str):
+        if start != "pc":
+            raise Error(f"start must be a pgm.Network, (parent, child) pairs or 'pc', got {start!r}")
+        settings.append(("start", "start", "pc"))
     return _core.learn_structure(
         columns,
-        _text(test, "test"),
-        _real(alpha, "alpha"),
-        _whole(max_cond, "max_cond", 0, 64),
+        _text(algorithm, "algorithm"),
+        settings,
         tiers_text,
         edges_text(forbid),
         edges_text(require),
         _threads(threads),
-        _text(algorithm, "algorithm"),
-        _text(score, "score"),
-        _whole(max_parents, "max_parents", 0, 1024),
-        _whole(tabu, "tabu", 1, 100_000),
-        _whole(max_tabu, "max_tabu", 0, 100_000),
-        _whole(restarts, "restarts", 0, 100_000),
-        _whole(perturb, "perturb", 1, 100_000),
-        _seed(seed),
         [] if start is None or isinstance(start, str) else
         list(start.edges if isinstance(start, Network) else _edge_pairs(start, "start")),
-        _start_from_pc(start),
         _prior_edges(prior_model),
         "" if map is None else _text(map, "map"),
         _real(prior_weight, "prior_weight"),
     )
+
+
+# learn_structure's keyword arguments named otherwise than the learners' options they set.
+_LEARNER_OPTION = {"max_cond": "max_conditioning"}
+
+
+def _option_text(value):
+    """A keyword argument's value as a learner's option is written: 0.01, 3, unlimited."""
+    if value == math.inf:
+        return "unlimited"
+    return repr(value) if isinstance(value, float) else str(value)
 
 
 def _prior_edges(prior_model):
@@ -754,14 +780,6 @@ def _prior_edges(prior_model):
         return None
     _handle(prior_model, "prior_model")
     return list(prior_model.edges)
-
-
-def _start_from_pc(start):
-    if isinstance(start, str):
-        if start != "pc":
-            raise Error(f"start must be a pgm.Network, (parent, child) pairs or 'pc', got {start!r}")
-        return True
-    return False
 
 
 def score(network, data, score="bic", *, by_node=False, threads=0, missing="error"):

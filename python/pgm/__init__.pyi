@@ -2,6 +2,7 @@
 # python/tests/test_stubs.py checks that every public function and method here has the
 # parameters, defaults and keyword-only marks of the code.
 
+import math
 import os
 from collections.abc import Iterable, Mapping, Sequence
 from typing import Any, Literal, Optional, Union
@@ -207,9 +208,9 @@ def learn_structure(
     max_cond: int = 3,
     threads: int = 0,
     missing: _MissingRule = "error",
-    algorithm: Literal["pc", "hc", "tabu", "mmhc"] = "pc",
+    algorithm: str = "pc",
     score: str = "bic",
-    max_parents: int = 0,
+    max_parents: float = math.inf,
     tabu: int = 10,
     max_tabu: int = 10,
     restarts: int = 0,

@@ -365,23 +365,15 @@ py::dict prevent_plan(const network_handle& handle, const py::object& planned,
 // ---- structure, discretization, simulation, experiments --------------------------------------
 
 struct learn_arguments {
-  std::string test = independence_test().name();
-  double alpha = 0.01;
-  std::size_t max_conditioning = 3;
+  /// The learner, and the keyword arguments that set one of its options (or its start's), as
+  /// (keyword, option, value): the ones the caller gave other than their defaults.
+  std::string algorithm;
+  std::vector<std::tuple<std::string, std::string, std::string>> settings;
   std::string tiers;
   std::string forbid;
   std::string require;
   unsigned threads = 0;
-  std::string algorithm = "pc";
-  std::string score = family_score().name();
-  std::size_t max_parents = 0;
-  std::size_t tabu = 10;
-  std::size_t max_tabu = 10;
-  std::size_t restarts = 0;
-  std::size_t perturb = 1;
-  std::uint64_t seed = 1;
   edge_pairs start;
-  bool start_from_pc = false;
   std::optional<edge_pairs> prior_edges;
   std::string map;
   double prior_weight = 5.0;
@@ -391,46 +383,37 @@ edge_pairs learn_frame(const py::list& columns, const learn_arguments& args) {
   std::vector<py::array> keep;
   const auto buffers = read_column_buffers(columns, keep);
   const py::gil_scoped_release release;
-  structure_choice choice;
-  choice.algorithm = parse_structure_algorithm(args.algorithm);
-  auto& options = choice.pc;
-  options.test = make_independence_test(args.test);
-  if (!(args.alpha > 0.0 && args.alpha < 1.0)) {
-    throw error("alpha must lie strictly between 0 and 1, got " + text::format_double(args.alpha));
-  }
-  options.alpha = args.alpha;
-  options.max_conditioning = args.max_conditioning;
-  choice.threads = args.threads;
-  if (!args.tiers.empty()) choice.knowledge.tiers = parse_tiers(args.tiers);
-  if (!args.forbid.empty()) choice.knowledge.forbidden = parse_edge_list(args.forbid);
-  if (!args.require.empty()) choice.knowledge.required = parse_edge_list(args.require);
-  auto& search = choice.search;
-  search.score = make_score(args.score);
-  if (args.max_parents > 0) search.max_parents = args.max_parents;
-  if (args.tabu == 0) throw error("tabu must be at least 1");
-  search.tabu = args.tabu;
-  search.max_tabu = args.max_tabu;
-  search.restarts = args.restarts;
-  if (args.perturb == 0) throw error("perturb must be at least 1");
-  search.perturb = args.perturb;
-  search.seed = args.seed;
-  if (!args.start.empty() && choice.algorithm == structure_algorithm::pc) {
-    throw error("start applies to hc, tabu and mmhc, not pc");
-  }
-  search.start = to_edges(args.start);
-  choice.start_from_pc = args.start_from_pc;
+  std::vector<learner_setting> settings;
+  for (const auto& [keyword, key, value] : args.settings) settings.push_back({keyword, key, value});
+  const auto learner = make_structure_learner(args.algorithm, settings);
+  structure_context context;
+  context.threads = args.threads;
+  if (!args.tiers.empty()) context.knowledge.tiers = parse_tiers(args.tiers);
+  if (!args.forbid.empty()) context.knowledge.forbidden = parse_edge_list(args.forbid);
+  if (!args.require.empty()) context.knowledge.required = parse_edge_list(args.require);
+  context.start = to_edges(args.start);
   const auto data = make_dataset(buffers, "DataFrame");
   if (args.prior_edges) {
-    if (choice.algorithm == structure_algorithm::pc) throw error("prior_model applies to hc, tabu and mmhc, not pc");
-    search.favoured =
+    context.favoured =
         mapped_prior_edges(to_edges(*args.prior_edges),
                            args.map.empty() ? correspondence{} : parse_correspondence(args.map), data.names());
-    search.favour_weight = args.prior_weight;
+    context.favour_weight = args.prior_weight;
   } else if (!args.map.empty()) {
     throw error("map applies with prior_model");
   }
   // The DAG: PC's is one member of its CPDAG's class, as pgm learn-structure writes.
-  return to_pairs(learn_structure(data, choice).edges);
+  return to_pairs(learn_structure(data, learner, context).edges);
+}
+
+/// Each learner's declared options, as "name[key=value,...]", and the defaults of the options
+/// Python's keyword arguments set: what its signature must show.
+py::dict learner_defaults() {
+  py::dict defaults;
+  for (const auto& name : structure_learners().names()) {
+    const auto entry = structure_learners().find(name).value();
+    for (const auto& option : entry.options) defaults[py::str(option.name)] = option.default_text;
+  }
+  return defaults;
 }
 
 /// The data's column under the model's variable: each value's label becomes that state's code.
@@ -624,6 +607,7 @@ PYBIND11_MODULE(_core, m) {
   m.attr("default_ci_test") = pgm::independence_test().name();
   m.def("ci_test_listing", [] { return pgm::independence_tests().listing(); });
   m.attr("default_score") = pgm::family_score().name();
+  m.attr("default_learner") = std::string(pgm::default_structure_learner);
   m.def("score_listing", [] { return pgm::scores().listing(); });
   m.attr("missing_policies") = pgm::known_missing_policies();
 
@@ -718,16 +702,15 @@ PYBIND11_MODULE(_core, m) {
   m.def("prevent", &prevent_plan);
 
   m.def("learn_structure",
-        [](const py::list& columns, const std::string& test, double alpha, std::size_t max_conditioning,
-           const std::string& tiers, const std::string& forbid, const std::string& require, unsigned threads,
-           const std::string& algorithm, const std::string& score, std::size_t max_parents, std::size_t tabu,
-           std::size_t max_tabu, std::size_t restarts, std::size_t perturb, std::uint64_t seed, const edge_pairs& start,
-           bool start_from_pc, const std::optional<edge_pairs>& prior_edges, const std::string& map,
-           double prior_weight) {
-          return learn_frame(columns, {test,      alpha, max_conditioning, tiers,       forbid,   require,     threads,
-                                       algorithm, score, max_parents,      tabu,        max_tabu, restarts,    perturb,
-                                       seed,      start, start_from_pc,    prior_edges, map,      prior_weight});
+        [](const py::list& columns, const std::string& algorithm,
+           const std::vector<std::tuple<std::string, std::string, std::string>>& settings, const std::string& tiers,
+           const std::string& forbid, const std::string& require, unsigned threads, const edge_pairs& start,
+           const std::optional<edge_pairs>& prior_edges, const std::string& map, double prior_weight) {
+          return learn_frame(
+              columns, {algorithm, settings, tiers, forbid, require, threads, start, prior_edges, map, prior_weight});
         });
+  m.def("learner_defaults", &learner_defaults);
+  m.def("learner_listing", [] { return pgm::structure_learners().listing(); });
   m.def("score", &score_frame);
   m.def("discretize", &discretize_frame);
   m.def("simulate", &simulate_task);

@@ -102,7 +102,8 @@ def test_a_variable_in_two_arguments_is_named_with_both(confounded):
 
 def test_check_refuses_an_unknown_test_in_the_librarys_words(confounded):
     # Issue 49: check's test had no "did you mean"; its message is now learn_structure's (the
-    # library's pgm::unknown_name), word for word, suggestion included.
+    # library's pgm::unknown_name), word for word, suggestion included, after the option of the
+    # learner it was given to.
     frame = pd.DataFrame({"C": [0, 1, 1, 0], "X": [1, 0, 1, 1], "Y": [0, 0, 1, 1]})
     with pytest.raises(pgm.Error, match=r"^unknown independence test 'chi'; did you mean 'chi2'\? \(known: chi2, g2\)$"):
         pgm.check(confounded, frame, test="chi")
@@ -111,4 +112,4 @@ def test_check_refuses_an_unknown_test_in_the_librarys_words(confounded):
             pgm.learn_structure(frame, test=word)
         with pytest.raises(pgm.Error) as ours:
             pgm.check(confounded, frame, test=word)
-        assert str(ours.value) == str(by_library.value), word
+        assert str(by_library.value) == "test: option test of the structure learner 'pc': " + str(ours.value), word

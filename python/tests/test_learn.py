@@ -3,6 +3,7 @@ DAG from the same data; pgm.score."""
 
 import inspect
 import json
+import math
 
 import numpy as np
 import pandas as pd
@@ -104,9 +105,9 @@ def test_start_and_score_errors(data):
     pc = pgm.learn_structure(data)
     started = pgm.learn_structure(data, algorithm="hc", start=pc)
     assert started == pgm.learn_structure(data, algorithm="hc", start=pgm.fit(data, pc))
-    with pytest.raises(pgm.Error, match="start applies to hc, tabu and mmhc, not pc"):
+    with pytest.raises(pgm.Error, match="PC-stable takes no start network; hc, tabu and mmhc do"):
         pgm.learn_structure(data, start=pc)
-    with pytest.raises(pgm.Error, match="unknown structure learning algorithm 'ges'"):
+    with pytest.raises(pgm.Error, match="unknown structure learner 'ges'"):
         pgm.learn_structure(data, algorithm="ges")
     with pytest.raises(pgm.Error, match="unknown score 'mdl'"):
         pgm.learn_structure(data, algorithm="hc", score="mdl")
@@ -142,6 +143,43 @@ def test_the_default_score_and_test_are_the_librarys_everywhere(program):
     assert "g2[correction=none,min_rows_per_cell=0]" in pgm._core.ci_test_listing()
 
 
+def test_the_learners_options_have_one_default_everywhere(program):
+    """Each keyword argument of learn_structure that sets a learner's option shows the default
+    the learner declares, and so does the program's --help."""
+    declared = pgm._core.learner_defaults()
+    assert pgm._core.default_learner == "pc"
+    parameters = inspect.signature(pgm.learn_structure).parameters
+    assert parameters["algorithm"].default == pgm._core.default_learner
+    shown = program.run("learn-structure", "--help").stdout
+    for keyword, option, flag in [("test", "test", "--test"), ("alpha", "alpha", "--alpha"),
+                                  ("max_cond", "max_conditioning", "--max-cond"), ("score", "score", "--score"),
+                                  ("max_parents", "max_parents", "--max-parents"), ("tabu", "tabu", "--tabu"),
+                                  ("max_tabu", "max_tabu", "--max-tabu"), ("restarts", "restarts", "--restarts"),
+                                  ("perturb", "perturb", "--perturb"), ("seed", "seed", "--seed")]:
+        default = parameters[keyword].default
+        text = "unlimited" if default == math.inf else str(default)
+        assert text == declared[option], keyword
+        line = next(line for line in shown.splitlines() if line.strip().startswith(flag + " "))
+        assert line.rstrip().endswith("=" + text), (flag, line)
+    assert "mmhc[test=chi2,alpha=0.01" in " ".join(pgm._core.learner_listing())
+
+
+def test_a_learner_is_chosen_with_its_options(data):
+    assert pgm.learn_structure(data, algorithm="hc[restarts=2,seed=3]") == pgm.learn_structure(
+        data, algorithm="hc", restarts=2, seed=3)
+    assert pgm.learn_structure(data, algorithm="mmhc", alpha=0.05) == pgm.learn_structure(
+        data, algorithm="mmhc[alpha=0.05]")
+    assert pgm.learn_structure(data, algorithm="hc", start="pc", alpha=0.05) == pgm.learn_structure(
+        data, algorithm="hc[start=pc[alpha=0.05]]")
+    assert pgm.learn_structure(data, algorithm="hc", max_parents=1) == pgm.learn_structure(
+        data, algorithm="hc[max_parents=1]")
+    assert pgm.learn_structure(data, algorithm="empty", require=[("colour", "onTop1")]) == [("colour", "onTop1")]
+    with pytest.raises(pgm.Error, match="alpha: sets the option alpha, which the structure learner hc has not"):
+        pgm.learn_structure(data, algorithm="hc", alpha=0.05)
+    with pytest.raises(pgm.Error, match="option tabu of the structure learner 'tabu' must be a whole number from 1"):
+        pgm.learn_structure(data, algorithm="tabu[tabu=0]")
+
+
 def test_score_equals_the_programs(program, tmp_path, data):
     net = pgm.fit(data, pgm.learn_structure(data, algorithm="hc"))
     net.write(tmp_path / "m.json")
@@ -161,7 +199,7 @@ def test_structure_prior_and_start_from_pc(data):
                                    prior_weight=1000)
     assert {("xOff1", "onTop1"), ("yOff1", "onTop1")} <= set(favoured)
     assert pgm.learn_structure(few, algorithm="hc", prior_model=prior, map="onTop2=onTop1", prior_weight=0) == scratch
-    with pytest.raises(pgm.Error, match="prior_model applies to hc, tabu and mmhc, not pc"):
+    with pytest.raises(pgm.Error, match="PC-stable takes no structure prior; hc, tabu and mmhc do"):
         pgm.learn_structure(few, prior_model=prior)
     with pytest.raises(pgm.Error, match="map applies with prior_model"):
         pgm.learn_structure(few, algorithm="hc", map="onTop2=onTop1")

@@ -3,6 +3,7 @@ same parameters, defaults and keyword-only marks, so an editor's hints never lie
 
 import ast
 import inspect
+import math
 from pathlib import Path
 
 import pytest
@@ -25,16 +26,23 @@ def stub_classes():
     return {node.name: node for node in stub_tree().body if isinstance(node, ast.ClassDef)}
 
 
+def default_of_stub(node):
+    """A stub's default: a literal, or math.inf (a count without a limit)."""
+    if ast.unparse(node) == "math.inf":
+        return math.inf
+    return ast.literal_eval(node)
+
+
 def parameters_of_stub(function):
     """[(name, kind, default)] of a stub's parameters; default is inspect's empty when none."""
     arguments = function.args
     positional = arguments.posonlyargs + arguments.args
     defaults = [inspect.Parameter.empty] * (len(positional) - len(arguments.defaults)) + [
-        ast.literal_eval(d) for d in arguments.defaults
+        default_of_stub(d) for d in arguments.defaults
     ]
     result = [(a.arg, "positional", d) for a, d in zip(positional, defaults)]
     for a, d in zip(arguments.kwonlyargs, arguments.kw_defaults):
-        result.append((a.arg, "keyword", inspect.Parameter.empty if d is None else ast.literal_eval(d)))
+        result.append((a.arg, "keyword", inspect.Parameter.empty if d is None else default_of_stub(d)))
     return result
 
 

@@ -11,16 +11,26 @@ std::string choices_help(const std::vector<std::string>& listing) {
   return "one of " + text::join(listing) + " (the options at their defaults); NAME[KEY=VALUE,...] sets an option";
 }
 
-std::string with_shorthand(const std::string& text, const component_choice& choice, const std::string& key,
-                           const std::string& value) {
-  const auto spec = parse_component_spec(text, "choice");
-  for (const auto& [set, unused] : spec.settings) {
-    if (set == key) throw error("sets " + key + ", which '" + text + "' sets already; give it once");
-  }
-  if (!choice.options.declares(key)) throw error("sets the option " + key + ", which " + choice.name + " has not");
-  std::string settings;
-  for (const auto& [set, set_value] : spec.settings) settings += set + "=" + set_value + ",";
-  return choice.name + "[" + settings + key + "=" + value + "]";
+CLI::Option* add_declared_option(CLI::App& cmd, const std::string& flag, const option_declaration& declaration,
+                                 const std::string& help) {
+  const auto type = declaration.type == option_type::number  ? "FLOAT"
+                    : declaration.type == option_type::count ? "UINT"
+                                                             : "TEXT";
+  return cmd.add_option(flag, help)
+      ->type_name(type)
+      ->default_str(declaration.default_text)
+      ->check(CLI::Validator(
+          [declaration](std::string& text) {
+            const auto refusal = option_value_refusal(declaration, text);
+            // " must be ..." or ": <the registry's message>", after the flag CLI11 puts first.
+            return refusal.empty() ? refusal : refusal.substr(refusal.find_first_not_of(": "));
+          },
+          declaration.expected()));
+}
+
+std::optional<std::string> given_value(const CLI::Option& option) {
+  if (option.count() == 0) return std::nullopt;
+  return option.results().back();
 }
 
 std::string described(const std::string& name, const option_values& options) {

@@ -44,17 +44,32 @@ CLI::Option* add_component_option(CLI::App& cmd, const std::string& flag, std::s
       ->capture_default_str();
 }
 
+/// The option `key` that `component` of `registry` declares.
+template <class Product>
+[[nodiscard]] option_declaration declared_option(const component_registry<Product>& registry,
+                                                 const std::string& component, const std::string& key) {
+  const auto entry = registry.find(component).value();
+  for (const auto& option : entry.options) {
+    if (option.name == key) return option;
+  }
+  throw error("the " + registry.kind() + " " + component + " declares no option " + key);
+}
+
+/// `flag`, which sets one declared option of a component: the declared default shown in its
+/// help, its value checked as declared while the arguments are parsed. Read its value with
+/// given_value.
+[[nodiscard]] CLI::Option* add_declared_option(CLI::App& cmd, const std::string& flag,
+                                               const option_declaration& declaration, const std::string& help);
+
+/// The text given to `option`, if it was given.
+[[nodiscard]] std::optional<std::string> given_value(const CLI::Option& option);
+
 /// A shorthand option that sets one option of a choice: --iss N for bdeu[iss=N].
 struct shorthand {
   std::string flag;
   std::string key;
   std::optional<std::string> value;
 };
-
-/// The choice `text` with `key`=`value` added. Throws error (a sentence after the shorthand's
-/// flag) when the brackets set `key` too, or the component chosen has no option `key`.
-[[nodiscard]] std::string with_shorthand(const std::string& text, const component_choice& choice,
-                                         const std::string& key, const std::string& value);
 
 /// The component `text` chooses, with the shorthands given set on it. A shorthand that cannot
 /// be set, or whose value its option refuses, is a usage error naming its flag.
@@ -64,8 +79,7 @@ template <class Product>
   for (const auto& given : shorthands) {
     if (!given.value) continue;
     try {
-      text = with_shorthand(text, registry.choose(text), given.key, *given.value);
-      static_cast<void>(registry.choose(text));
+      text = registry.with_setting(text, given.key, *given.value);
     } catch (const error& refused) {
       throw CLI::ValidationError(given.flag, refused.what());
     }

@@ -35,13 +35,16 @@ void require_prior_variable(const network_structure& prior, const std::string& n
 
 struct learn_structure_arguments {
   std::string data;
-  std::string algorithm = "pc";
-  score_arguments score;
-  std::size_t max_parents = 0;
-  std::size_t tabu = 10;
-  std::size_t max_tabu = 10;
-  std::size_t restarts = 0;
-  std::size_t perturb = 1;
+  std::string algorithm{default_structure_learner};
+  /// The options that set one option of the learner (or of its start), applied when given:
+  /// each flag and the learner option it sets.
+  std::vector<std::pair<CLI::Option*, std::string>> learner_options;
+  CLI::Option* max_parents = nullptr;
+  std::string test_text = independence_test().name();
+  CLI::Option* test = nullptr;
+  std::string score_text = family_score().name();
+  CLI::Option* score = nullptr;
+  std::optional<double> iss;
   std::uint64_t seed = 1;
   std::string start;
   std::size_t bootstrap = 0;
@@ -49,11 +52,8 @@ struct learn_structure_arguments {
   std::string map;
   double prior_weight = 5.0;
   std::optional<double> threshold;
-  std::string test = independence_test().name();
-  double alpha = 0.01;
   std::optional<std::string> correction;
   std::optional<double> min_rows_per_cell;
-  std::size_t max_conditioning = 3;
   std::string tiers;
   std::string forbid;
   std::string require;
@@ -102,17 +102,25 @@ std::string format_set(const cpdag& graph, const std::vector<variable_id>& given
   return "{" + text::join(names) + "}";
 }
 
-void write_searched(const learn_structure_arguments& args, const structure_choice& choice, const dataset& data,
-                    const structure_result& learned) {
+/// The search's heading: "tabu search", "hill climbing", or a user's learner's name.
+std::string search_heading(const std::string& learner) {
+  if (learner == "tabu") return "tabu search";
+  if (learner == "mmhc") return "hybrid (PC-stable skeleton, then hill climbing)";
+  if (learner == "hc") return "hill climbing";
+  return learner;
+}
+
+void write_searched(const learn_structure_arguments& args, const structure_learner& learner,
+                    const structure_context& context, const dataset& data, const structure_result& learned) {
   const auto& result = *learned.search;
-  const auto& search = choice.search;
+  const auto& options = learner.options();
   std::ostringstream out;
-  out << (choice.algorithm == structure_algorithm::tabu   ? "tabu search"
-          : choice.algorithm == structure_algorithm::mmhc ? "hybrid (PC-stable skeleton, then hill climbing)"
-                                                          : "hill climbing")
-      << " on " << data.rows() << " rows, " << data.size() << " variables: " << described(search.score);
+  out << search_heading(learner.name()) << " on " << data.rows() << " rows, " << data.size() << " variables";
+  std::optional<family_score> score;
+  if (options.declares("score")) score = make_score(options.component("score"));
+  if (score) out << ": " << described(*score);
   out << " = " << text::format_double(result.score - result.prior_bonus);
-  if (!search.favoured.empty()) {
+  if (!context.favoured.empty()) {
     out << " + structure prior " << text::format_double(result.prior_bonus) << " = "
         << text::format_double(result.score);
   }
@@ -126,24 +134,25 @@ void write_searched(const learn_structure_arguments& args, const structure_choic
   for (const auto& name : data.names()) variables.push_back(data.discrete(name).var());
   const network_structure structure(variables, result.edges);
   auto document = to_json(structure);
-  document["learned"] = {{"algorithm", to_string(choice.algorithm)},
-                         {"score", search.score.name()},
+  document["learned"] = {{"algorithm", learner.name()},
+                         {"score", score ? score->name() : std::string()},
                          {"score_value", result.score - result.prior_bonus},
                          {"rows", data.rows()},
                          {"moves", result.moves},
                          {"restarts", result.restarts},
-                         {"seed", search.seed}};
-  add_options(document["learned"], search.score.options());
-  if (choice.algorithm == structure_algorithm::tabu) document["learned"]["tabu"] = search.tabu;
+                         {"seed", options.declares("seed") ? options.count("seed") : std::size_t{0}}};
+  if (score) add_options(document["learned"], score->options());
+  if (options.declares("tabu")) document["learned"]["tabu"] = options.count("tabu");
   write_model_json(document, args.out, summary_before_replacing(out.str() + "-> " + args.out + "\n", args.out));
 }
 
-void write_bootstrap(const learn_structure_arguments& args, const structure_choice& choice, const dataset& data) {
+void write_bootstrap(const learn_structure_arguments& args, const structure_learner& learner,
+                     const structure_context& context, const dataset& data) {
   const auto names = data.names();
-  const auto result = bootstrap_structure(data, names, choice, {args.bootstrap, args.seed, args.threshold});
+  const auto result = bootstrap_structure(data, names, learner, context, {args.bootstrap, args.seed, args.threshold});
   std::ostringstream out;
-  out << to_string(choice.algorithm) << " on " << result.replicates << " bootstrap resamples of " << data.rows()
-      << " rows, " << data.size() << " variables\n";
+  out << learner.name() << " on " << result.replicates << " bootstrap resamples of " << data.rows() << " rows, "
+      << data.size() << " variables\n";
   out << "arc strengths (adjacent in a fraction of the resamples; direction: the fraction of those with the arc):\n";
   for (const auto& a : result.arcs) {
     if (a.strength > 0 && a.direction > 0) {
@@ -158,12 +167,9 @@ void write_bootstrap(const learn_structure_arguments& args, const structure_choi
   std::vector<variable> variables;
   for (const auto& name : names) variables.push_back(data.discrete(name).var());
   auto document = to_json(network_structure(variables, result.averaged));
-  document["learned"] = {{"algorithm", to_string(choice.algorithm)},
-                         {"bootstrap", result.replicates},
-                         {"threshold", result.threshold},
-                         {"seed", args.seed},
-                         {"rows", data.rows()},
-                         {"strength", nlohmann::json::array()}};
+  document["learned"] = {{"algorithm", learner.name()},   {"bootstrap", result.replicates},
+                         {"threshold", result.threshold}, {"seed", args.seed},
+                         {"rows", data.rows()},           {"strength", nlohmann::json::array()}};
   for (const auto& a : result.arcs) {
     if (a.strength > 0 && a.direction > 0) {
       document["learned"]["strength"].push_back(
@@ -173,73 +179,123 @@ void write_bootstrap(const learn_structure_arguments& args, const structure_choi
   write_model_json(document, args.out, summary_before_replacing(out.str() + "-> " + args.out + "\n", args.out));
 }
 
+/// A learner that reports neither PC's tests nor a search's score: its edges.
+void write_learned(const learn_structure_arguments& args, const structure_learner& learner, const dataset& data,
+                   const structure_result& learned) {
+  std::ostringstream out;
+  out << learner.name() << " on " << data.rows() << " rows, " << data.size() << " variables\n";
+  out << "edges (" << learned.edges.size() << "):\n";
+  for (const auto& e : learned.edges) out << "  " << e.from << " -> " << e.to << '\n';
+  std::vector<variable> variables;
+  for (const auto& name : data.names()) variables.push_back(data.discrete(name).var());
+  auto document = to_json(network_structure(variables, learned.edges));
+  document["learned"] = {{"algorithm", learner.name()}, {"rows", data.rows()}};
+  add_options(document["learned"], learner.options());
+  write_model_json(document, args.out, summary_before_replacing(out.str() + "-> " + args.out + "\n", args.out));
+}
+
+/// The learner the arguments choose: --algorithm with each option given that sets one of its
+/// options, or of the PC that --start pc starts from.
+structure_learner chosen_learner(const learn_structure_arguments& args) {
+  std::vector<learner_setting> settings;
+  if (args.start == "pc") settings.push_back({"--start", "start", "pc"});
+  if (args.test->count() > 0 || args.correction || args.min_rows_per_cell) {
+    const auto rows =
+        args.min_rows_per_cell ? std::optional(text::format_double(*args.min_rows_per_cell)) : std::nullopt;
+    const auto test = chosen_with(
+        independence_tests(), args.test_text,
+        {{"--correction", "correction", args.correction}, {"--min-rows-per-cell", "min_rows_per_cell", rows}});
+    settings.push_back({"--test", "test", test.text()});
+  }
+  if (args.score->count() > 0 || args.iss) {
+    const auto iss = args.iss ? std::optional(text::format_double(*args.iss)) : std::nullopt;
+    settings.push_back({"--score", "score", chosen_with(scores(), args.score_text, {{"--iss", "iss", iss}}).text()});
+  }
+  if (const auto limit = given_value(*args.max_parents)) {
+    settings.push_back({"--max-parents", "max_parents", *limit == "0" ? "unlimited" : *limit});
+  }
+  // --seed seeds the bootstrap as well, so it goes to the learner only when the learner has a seed.
+  const bool seeded = structure_learners().choose(args.algorithm).options.declares("seed");
+  for (const auto& [option, key] : args.learner_options) {
+    if (key != "seed" || seeded) settings.push_back({option->get_name(), key, given_value(*option)});
+  }
+  try {
+    return make_structure_learner(args.algorithm, settings);
+  } catch (const error& refused) {
+    throw CLI::ValidationError(refused.what());
+  }
+}
+
+/// "hc, mmhc and tabu": the learners that declare the option `key`.
+std::string learners_declaring(const std::string& key) {
+  std::vector<std::string> names;
+  for (const auto& name : structure_learners().names()) {
+    if (option_values(structure_learners().find(name)->options).declares(key)) names.push_back(name);
+  }
+  const auto last = names.back();
+  names.pop_back();
+  return names.empty() ? last : text::join(names) + " and " + last;
+}
+
 void run_learn_structure(const learn_structure_arguments& args) {
   require_extension(args.out, {".json"});
-  structure_choice choice;
-  choice.algorithm = parse_structure_algorithm(args.algorithm);
-  auto& options = choice.pc;
-  const auto rows = args.min_rows_per_cell ? std::optional(text::format_double(*args.min_rows_per_cell)) : std::nullopt;
-  options.test = chosen_with(
-      independence_tests(), args.test,
-      {{"--correction", "correction", args.correction}, {"--min-rows-per-cell", "min_rows_per_cell", rows}});
-  options.alpha = args.alpha;
-  options.max_conditioning = args.max_conditioning;
-  choice.threads = args.threads;
-  if (!args.tiers.empty()) choice.knowledge.tiers = parse_tiers(args.tiers);
-  if (!args.forbid.empty()) choice.knowledge.forbidden = parse_edge_list(args.forbid);
-  if (!args.require.empty()) choice.knowledge.required = parse_edge_list(args.require);
-  auto& search = choice.search;
-  search.score = chosen_score(args.score);
-  if (args.max_parents > 0) search.max_parents = args.max_parents;
-  search.tabu = args.tabu;
-  search.max_tabu = args.max_tabu;
-  search.restarts = args.restarts;
-  search.perturb = args.perturb;
-  search.seed = args.seed;
-  if (!args.start.empty()) {
-    if (choice.algorithm == structure_algorithm::pc) throw error("--start applies to hc, tabu and mmhc, not pc");
-    if (args.start == "pc") {
-      choice.start_from_pc = true;
-    } else {
-      search.start = read_model_file(args.start).structure.edges();
-    }
+  const auto learner = chosen_learner(args);
+  // A start network is for a search that declares a start; a structure prior, a score bonus,
+  // for a learner with a score.
+  if (!args.start.empty() && !learner.options().declares("start")) {
+    throw error("--start applies to " + learners_declaring("start") + ", not " + learner.name());
   }
+  if (!args.prior_model.empty() && !learner.options().declares("score")) {
+    throw error("--prior-model applies to " + learners_declaring("score") + ", not " + learner.name());
+  }
+  structure_context context;
+  context.threads = args.threads;
+  if (!args.tiers.empty()) context.knowledge.tiers = parse_tiers(args.tiers);
+  if (!args.forbid.empty()) context.knowledge.forbidden = parse_edge_list(args.forbid);
+  if (!args.require.empty()) context.knowledge.required = parse_edge_list(args.require);
+  if (!args.start.empty() && args.start != "pc") context.start = read_model_file(args.start).structure.edges();
 
   const auto data = read_discrete_data(args.data, {}, {.missing = missing_of(args.missing)});
   if (data.size() < 2) throw data_error("'" + args.data + "' has fewer than two columns; nothing to learn");
   if (!args.prior_model.empty()) {
-    if (choice.algorithm == structure_algorithm::pc) throw error("--prior-model applies to hc, tabu and mmhc, not pc");
     const auto prior_structure = read_model_file(args.prior_model).structure;
     const auto map = args.map.empty() ? correspondence{} : parse_correspondence(args.map);
     for (const auto& [t, p] : map.transferred) require_prior_variable(prior_structure, p, args.prior_model);
     for (const auto& [t, p] : map.identical) require_prior_variable(prior_structure, p, args.prior_model);
     for (const auto& [t, p] : map.related) require_prior_variable(prior_structure, p, args.prior_model);
-    search.favoured = mapped_prior_edges(prior_structure.edges(), map, data.names());
-    search.favour_weight = args.prior_weight;
+    context.favoured = mapped_prior_edges(prior_structure.edges(), map, data.names());
+    context.favour_weight = args.prior_weight;
     std::vector<std::string> shown;
-    for (const auto& e : search.favoured) shown.push_back(e.from + "->" + e.to);
+    for (const auto& e : context.favoured) shown.push_back(e.from + "->" + e.to);
     note("the structure prior favours " + std::to_string(shown.size()) + " edge(s) by " +
          text::format_short(args.prior_weight) + " each" + (shown.empty() ? "" : ": " + text::join(shown)));
   } else if (!args.map.empty()) {
     throw error("--map applies with --prior-model");
   }
   if (args.bootstrap > 0) {
-    write_bootstrap(args, choice, data);
+    write_bootstrap(args, learner, context, data);
     return;
   }
   if (args.threshold) throw error("--threshold applies with --bootstrap");
-  const auto learned = learn_structure(data, choice);
+  const auto learned = learn_structure(data, learner, context);
   if (learned.search) {
-    write_searched(args, choice, data, learned);
+    write_searched(args, learner, context, data, learned);
+    return;
+  }
+  if (!learned.pc || !learner.options().declares("test")) {
+    write_learned(args, learner, data, learned);
     return;
   }
   const auto& result = *learned.pc;
   const auto& graph = result.graph;
+  const auto test = make_independence_test(learner.options().component("test"));
+  const auto alpha = learner.options().number("alpha");
+  const auto max_conditioning = learner.options().count("max_conditioning");
 
   std::ostringstream out;
   out << "PC-stable on " << data.rows() << " rows, " << data.size() << " variables: " << result.tests << " tests ("
-      << options.test.name() << ", alpha " << text::format_short(options.alpha) << ", conditioning sets up to "
-      << options.max_conditioning << test_settings(options.test);
+      << test.name() << ", alpha " << text::format_short(alpha) << ", conditioning sets up to " << max_conditioning
+      << test_settings(test);
   out << ")\n";
   const auto directed = graph.directed_edges();
   const auto undirected = graph.undirected_edges();
@@ -257,10 +313,10 @@ void run_learn_structure(const learn_structure_arguments& args) {
       }
       if (s.test.too_few_rows) {
         out << "independent given " << format_set(graph, s.given) << " (too few rows: " << s.test.rows << " < "
-            << text::format_short(min_rows_per_cell(options.test)) << " per cell)\n";
+            << text::format_short(min_rows_per_cell(test)) << " per cell)\n";
         continue;
       }
-      out << "independent given " << format_set(graph, s.given) << " (" << options.test.name() << " = "
+      out << "independent given " << format_set(graph, s.given) << " (" << test.name() << " = "
           << text::format_short(s.test.statistic, 5) << ", df = " << text::format_short(s.test.df)
           << ", p = " << text::format_short(s.test.p_value, 4) << ")\n";
     }
@@ -274,10 +330,10 @@ void run_learn_structure(const learn_structure_arguments& args) {
   for (const auto& name : data.names()) variables.push_back(data.discrete(name).var());
   const network_structure structure(variables, edges);
   auto document = to_json(structure);
-  document["learned"] = {{"algorithm", "pc-stable"}, {"test", options.test.name()},
-                         {"alpha", options.alpha},   {"max_conditioning", options.max_conditioning},
+  document["learned"] = {{"algorithm", "pc-stable"}, {"test", test.name()},
+                         {"alpha", alpha},           {"max_conditioning", max_conditioning},
                          {"rows", data.rows()},      {"undirected_in_cpdag", nlohmann::json::array()}};
-  add_options(document["learned"], options.test.options());
+  add_options(document["learned"], test.options());
   for (const auto& e : undirected) document["learned"]["undirected_in_cpdag"].push_back({e.from, e.to});
   if (undirected.empty()) {
     out << "every edge is oriented; the DAG is the CPDAG";
@@ -303,31 +359,36 @@ void add_learn_structure_command(CLI::App& app) {
   cmd->add_option("--data", args->data,
                   std::string("CSV file of discrete data, one column per variable") + data_file_help)
       ->required();
-  cmd->add_option("--algorithm", args->algorithm,
-                  "pc (PC-stable), hc (hill climbing), tabu (tabu search) or mmhc (PC-stable's skeleton restricts "
-                  "hill climbing)")
-      ->check(CLI::IsMember(known_structure_algorithms()))
-      ->capture_default_str();
-  add_score_options(*cmd, args->score);
-  cmd->add_option("--max-parents", args->max_parents, "The most parents a node may get (0: no limit)")
-      ->check(whole_number(0, 1024))
-      ->capture_default_str();
-  cmd->add_option("--tabu", args->tabu, "Tabu list length of --algorithm tabu (bnlearn's default)")
-      ->check(whole_number(1, 100000))
-      ->capture_default_str();
-  cmd->add_option("--max-tabu", args->max_tabu,
-                  "Moves in a row without improving on the best network before tabu search stops")
-      ->check(whole_number(0, 100000))
-      ->capture_default_str();
-  cmd->add_option("--restarts", args->restarts, "Random restarts after the search converges")
-      ->check(whole_number(0, 100000))
-      ->capture_default_str();
-  cmd->add_option("--perturb", args->perturb, "Random moves that perturb the network at each restart")
-      ->check(whole_number(1, 100000))
-      ->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the restarts' perturbations and of the bootstrap resamples")
-      ->check(whole_number(0, UINT64_MAX))
-      ->capture_default_str();
+  add_component_option(*cmd, "--algorithm", args->algorithm,
+                       "The structure learner: pc (PC-stable), hc (hill climbing), tabu (tabu search), mmhc "
+                       "(PC-stable's skeleton restricts hill climbing), empty, or a registered one. The options below "
+                       "set the learner's own",
+                       structure_learners());
+  const auto declared = [](const std::string& learner, const std::string& key) {
+    return declared_option(structure_learners(), learner, key);
+  };
+  const auto learner_option = [&](const std::string& flag, const std::string& learner, const std::string& key,
+                                  const std::string& help) {
+    args->learner_options.emplace_back(add_declared_option(*cmd, flag, declared(learner, key), help), key);
+  };
+  args->score = add_component_option(*cmd, "--score", args->score_text,
+                                     "The decomposable score of hc, tabu and mmhc, as bnlearn's score() defines it "
+                                     "('bde' is bdeu)",
+                                     scores());
+  cmd->add_option("--iss", args->iss, "Shorthand for --score bdeu[iss=N]: bdeu's imaginary sample size, a number > 0")
+      ->check(number_between(0, std::numeric_limits<double>::infinity(), true, true));
+  args->max_parents = add_declared_option(*cmd, "--max-parents", declared("hc", "max_parents"),
+                                          "The most parents a node may get (0 or unlimited: no limit)");
+  learner_option("--tabu", "tabu", "tabu", "Tabu list length of --algorithm tabu (bnlearn's default)");
+  learner_option("--max-tabu", "tabu", "max_tabu",
+                 "Moves in a row without improving on the best network before tabu search stops");
+  learner_option("--restarts", "hc", "restarts", "Random restarts after the search converges");
+  learner_option("--perturb", "hc", "perturb", "Random moves that perturb the network at each restart");
+  auto* seed =
+      cmd->add_option("--seed", args->seed, "Seed of the restarts' perturbations and of the bootstrap resamples")
+          ->check(whole_number(0, UINT64_MAX))
+          ->capture_default_str();
+  args->learner_options.emplace_back(seed, "seed");
   cmd->add_option("--bootstrap", args->bootstrap,
                   "Learn on N bootstrap resamples (seeded by --seed, in parallel): print each arc's strength and "
                   "direction (bnlearn's boot.strength) and write the averaged network")
@@ -351,20 +412,17 @@ void add_learn_structure_command(CLI::App& app) {
                       "), or from "
                       "PC-stable's result on the data with 'pc' (its --test, --alpha, --max-cond), instead of the "
                       "empty graph");
-  add_component_option(*cmd, "--test", args->test, "Independence test of pc and mmhc", independence_tests());
-  cmd->add_option("--alpha", args->alpha,
-                  "Significance level, strictly between 0 and 1: an edge goes when a test has p > alpha")
-      ->check(number_between(0, 1, true, true))
-      ->capture_default_str();
+  args->test =
+      add_component_option(*cmd, "--test", args->test_text, "Independence test of pc and mmhc", independence_tests());
+  learner_option("--alpha", "pc", "alpha",
+                 "Significance level, strictly between 0 and 1: an edge goes when a test has p > alpha");
   cmd->add_option("--correction", args->correction,
                   "Shorthand for --test NAME[correction=C]: none, or yates as pgmpy applies it");
   cmd->add_option("--min-rows-per-cell", args->min_rows_per_cell,
                   "Shorthand for --test NAME[min_rows_per_cell=K]: declare independence, untested, when a test has "
                   "fewer rows than K per cell of its table (5: bnlearn's rule; 0: always test)")
       ->check(non_negative_number());
-  cmd->add_option("--max-cond", args->max_conditioning, "Largest conditioning set tried")
-      ->check(whole_number(0, 64))
-      ->capture_default_str();
+  learner_option("--max-cond", "pc", "max_conditioning", "Largest conditioning set tried");
   cmd->add_option("--tiers", args->tiers,
                   "Tiers, earliest first, e.g. \"xOff1,yOff1;onTop1;onTop2\": no edge points into an "
                   "earlier tier");

@@ -107,8 +107,9 @@ probability ( a ) { table 0.2, 0.8; }
   EXPECT_DOUBLE_EQ(read_network(path("f.bif")).table("b").probability("1", {"0"}), 0.5);
 
   const auto learn = "learn-structure --data " + data.string() + " --out " + path("s.json").string() + " --alpha ";
-  expect_failure(learn + "nan", "expected a number in (0, 1), got 'nan'", path("s.json"));
-  expect_failure(learn + "1", "expected a number in (0, 1), got 1", path("s.json"));
+  expect_failure(learn + "nan", "--alpha: must be a number > 0 and < 1, got 'nan' (NaN is not accepted)",
+                 path("s.json"));
+  expect_failure(learn + "1", "--alpha: must be a number > 0 and < 1, got '1'", path("s.json"));
   expect_failure(learn + "0,05", "got '0,05' (a comma is no decimal mark: write 0.05)", path("s.json"));
 
   const auto prevent = "prevent --model " + model.string() + " --assign a=0 --success a=1 --controllable a --epsilon ";

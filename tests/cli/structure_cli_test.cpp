@@ -62,7 +62,7 @@ TEST_F(structure_cli_test, score_bad_input) {
               HasSubstr("option iss of the score 'bdeu' must be a number > 0, got '0'"));
   EXPECT_THAT(scored("--score 'bdeu[iss=1'").err, HasSubstr("expected ']' at column 11"));
   EXPECT_THAT(scored("--iss 0").err, HasSubstr("expected a finite number > 0"));
-  EXPECT_THAT(scored("--iss 2").err, HasSubstr("--iss: sets the option iss, which bic has not"));
+  EXPECT_THAT(scored("--iss 2").err, HasSubstr("--iss: sets the option iss, which the score bic has not"));
   EXPECT_THAT(scored("--score 'bdeu[iss=2]' --iss 3").err,
               HasSubstr("--iss: sets iss, which 'bdeu[iss=2]' sets already; give it once"));
   // The shorthand and the brackets choose the same score.
@@ -139,10 +139,21 @@ TEST_F(structure_cli_test, learn_structure_by_score_bad_input) {
     EXPECT_THAT(help.out, HasSubstr(option));
   }
   const auto base = "learn-structure --data " + data.string() + " --out " + path("x.json").string();
-  EXPECT_THAT(run(base + " --algorithm ges").err, HasSubstr("ges not in"));
+  EXPECT_THAT(run(base + " --algorithm ges").err, HasSubstr("--algorithm: unknown structure learner 'ges'"));
   const auto pc_start = run(base + " --start " + path("nope.json").string());
   EXPECT_EQ(pc_start.code, 1);
-  EXPECT_THAT(pc_start.err, HasSubstr("--start applies to hc, tabu and mmhc, not pc"));
+  EXPECT_THAT(pc_start.err, HasSubstr("--start applies to hc, mmhc and tabu, not pc"));
+  // The options set the learner's own: refused where the learner has none.
+  const auto alpha = run(base + " --algorithm hc --alpha 0.05");
+  EXPECT_EQ(alpha.code, 2);
+  EXPECT_THAT(alpha.err, HasSubstr("--alpha: sets the option alpha, which the structure learner hc has not"));
+  EXPECT_THAT(
+      run(base + " --algorithm 'tabu[tabu=0]'").err,
+      HasSubstr("option tabu of the structure learner 'tabu' must be a whole number from 1 to 100000, got '0'"));
+  EXPECT_THAT(run(base + " --algorithm 'tabu[tabu=3]' --tabu 4").err,
+              HasSubstr("--tabu: sets tabu, which 'tabu[tabu=3]' sets already"));
+  EXPECT_THAT(run(base + " --algorithm tabu --tabu 0").err,
+              HasSubstr("--tabu: must be a whole number from 1 to 100000, got '0'"));
   const auto forbidden = run(base + " --algorithm hc --forbid \"a->c,b->c,c->a,c->b\"");
   ASSERT_EQ(forbidden.code, 0) << forbidden.err;
   EXPECT_THAT(forbidden.out, HasSubstr("edges (0)"));
@@ -152,6 +163,27 @@ TEST_F(structure_cli_test, learn_structure_by_score_bad_input) {
   const auto cyclic = file("cyclic.json", "");
   EXPECT_NE(run(base + " --algorithm hc --start " + cyclic.string()).code, 0);
   EXPECT_NE(run(base + " --algorithm hc --iss -1").code, 0);
+}
+
+TEST_F(structure_cli_test, learn_structure_takes_a_learner_with_its_options) {
+  const auto data = file("v.csv", v_structure());
+  const auto base = "learn-structure --data " + data.string();
+  const auto learned = [&](const std::string& arguments) {
+    const auto r = run(base + " " + arguments + " --out " + path("l.json").string());
+    EXPECT_EQ(r.code, 0) << arguments << ": " << r.err;
+    return detail::read_file(path("l.json"));
+  };
+  // The shorthands and the brackets choose the same learner.
+  EXPECT_EQ(learned("--algorithm hc --start pc --alpha 0.05"), learned("--algorithm 'hc[start=pc[alpha=0.05]]'"));
+  EXPECT_EQ(learned("--algorithm tabu --tabu 3 --score bdeu --iss 4"),
+            learned("--algorithm 'tabu[tabu=3,score=bdeu[iss=4]]'"));
+  EXPECT_EQ(learned("--algorithm mmhc --test g2 --max-cond 1"),
+            learned("--algorithm 'mmhc[test=g2,max_conditioning=1]'"));
+  EXPECT_EQ(learned("--algorithm hc --max-parents 0"), learned("--algorithm hc"));
+  const auto empty = run(base + " --algorithm empty --require 'a->c' --out " + path("e.json").string());
+  ASSERT_EQ(empty.code, 0) << empty.err;
+  EXPECT_THAT(empty.out, HasSubstr("empty on "));
+  EXPECT_THAT(empty.out, HasSubstr("edges (1):\n  a -> c\n"));
 }
 
 TEST_F(structure_cli_test, learn_structure_bootstrap) {
@@ -202,7 +234,7 @@ TEST_F(structure_cli_test, learn_structure_with_a_structure_prior_and_from_pc) {
   EXPECT_THAT(run("learn-structure --data " + data.string() + " --prior-model " + path("prior.bif").string() +
                   " --out " + path("m.json").string())
                   .err,
-              HasSubstr("--prior-model applies to hc, tabu and mmhc, not pc"));
+              HasSubstr("--prior-model applies to hc, mmhc and tabu, not pc"));
   // From PC's result.
   const auto from_pc =
       run("learn-structure --algorithm hc --start pc --data " + data.string() + " --out " + path("pc.json").string());

@@ -3,6 +3,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <string>
 #include <utility>
 #include <vector>
@@ -26,6 +27,12 @@ TEST(component_options_test, a_choice_is_a_name_and_its_settings) {
   const auto spec = parse_component_spec("  BP [ tol = 1e-9 , maxiter=100 ] ", "engine");
   EXPECT_EQ(spec.name, "BP");
   EXPECT_EQ(spec.settings, (settings{{"tol", "1e-9"}, {"maxiter", "100"}}));
+  // A value may be a choice of its own, its commas its own.
+  const auto nested =
+      parse_component_spec("mmhc[test=g2[correction=yates,min_rows_per_cell=5], alpha=0.05]", "learner");
+  EXPECT_EQ(nested.settings, (settings{{"test", "g2[correction=yates,min_rows_per_cell=5]"}, {"alpha", "0.05"}}));
+  EXPECT_EQ(parse_component_spec("hc[start=hc[start=pc[alpha=0.1]]]", "learner").settings,
+            (settings{{"start", "hc[start=pc[alpha=0.1]]"}}));
 }
 
 TEST(component_options_test, a_malformed_choice_says_where_and_what_was_expected) {
@@ -43,7 +50,9 @@ TEST(component_options_test, a_malformed_choice_says_where_and_what_was_expected
   refused("bdeu[=1]", "expected an option's name before '=' at column 6");
   refused("bdeu[iss=]", "expected a value for 'iss' at column 10");
   refused("bdeu[iss=1,iss=2]", "'iss' is set twice at column 12");
-  refused("bdeu[a=[1]", "unexpected '[' at column 8");
+  refused("bdeu[a=[1]", "expected ']' at column 11");
+  refused("bdeu[a[1]=2]", "expected KEY=VALUE at column 6");
+  refused("mmhc[test=g2[k=1]]]", "unexpected text after ']' at column 19");
   refused("bd,eu", "unexpected ',' at column 3");
   refused("bdeu]", "unexpected ']' at column 5");
   EXPECT_THAT([] { static_cast<void>(parse_component_spec("x[", "score")); },
@@ -124,6 +133,65 @@ TEST(component_options_test, a_registry_builds_from_a_choice_with_its_aliases) {
   EXPECT_THAT([&] { tools.add("loopy", {}); }, ThrowsMessage<model_error>(HasSubstr("named 'loopy' is registered")));
   EXPECT_THAT([&] { tools.add_alias("exact", "bp"); },
               ThrowsMessage<model_error>(HasSubstr("named 'exact' is registered")));
+}
+
+component_registry<tool>& tool_registry() {
+  static component_registry<tool> registry = [] {
+    component_registry<tool> built("tool");
+    built.add("bp", {"loopy belief propagation", declared(), [](const component_choice& choice) {
+                       return tool{choice.text(), choice.options.number("tol")};
+                     }});
+    built.add("exact", {"junction tree", {}, [](const component_choice& choice) { return tool{choice.text(), 0.0}; }});
+    return built;
+  }();
+  return registry;
+}
+
+TEST(component_options_test, a_component_option_chooses_from_another_registry) {
+  const auto inner = component_option("inner", &tool_registry, "exact", "the tool inside");
+  EXPECT_EQ(inner.expected(), "a tool, one of bp[tol=1e-09,maxiter=100,damped=false,schedule=parallel], exact");
+  option_values values({inner});
+  EXPECT_EQ(values.component("inner"), "exact");
+  values.set("inner", "bp[tol=0.5]", "wrapper", "w");
+  EXPECT_EQ(values.component("inner"), "bp[tol=0.5]");
+  EXPECT_EQ(tool_registry().make(values.component("inner")).tol, 0.5);
+  EXPECT_EQ(spec_text("w", values), "w[inner=bp[tol=0.5]]");
+  // The inner registry's own message, after the option it was given to.
+  EXPECT_THAT(
+      [&] { values.set("inner", "bp[tol=2]", "wrapper", "w"); },
+      ThrowsMessage<model_error>(HasSubstr(
+          "option inner of the wrapper 'w': option tol of the tool 'bp' must be a number > 0 and < 1, got '2'")));
+  EXPECT_THAT([&] { values.set("inner", "exac", "wrapper", "w"); },
+              ThrowsMessage<model_error>(HasSubstr("unknown tool 'exac'; did you mean 'exact'?")));
+  EXPECT_THAT([&] { static_cast<void>(values.word("inner")); },
+              ThrowsMessage<model_error>(HasSubstr("did not declare as read")));
+}
+
+TEST(component_options_test, a_count_without_a_limit_reads_and_writes_unlimited) {
+  const auto limit = count_option("max_parents", std::numeric_limits<std::size_t>::max(), "");
+  EXPECT_EQ(limit.default_text, "unlimited");
+  EXPECT_EQ(limit.expected(), "a whole number >= 0, or unlimited");
+  option_values values({limit});
+  EXPECT_EQ(values.count("max_parents"), std::numeric_limits<std::size_t>::max());
+  values.set("max_parents", "3", "learner", "hc");
+  EXPECT_EQ(values.text(), "max_parents=3");
+  values.set("max_parents", "unlimited", "learner", "hc");
+  EXPECT_EQ(values.text(), "max_parents=unlimited");
+  // Only a count declared so takes "unlimited".
+  EXPECT_FALSE(option_value_refusal(count_option("n", 3, ""), "unlimited").empty());
+  EXPECT_TRUE(option_value_refusal(count_option("n", 3, ""), "4").empty());
+}
+
+TEST(component_options_test, a_setting_joins_a_choice_once) {
+  const auto& tools = tool_registry();
+  EXPECT_EQ(tools.with_setting("bp", "tol", "0.5"), "bp[tol=0.5]");
+  EXPECT_EQ(tools.with_setting("bp[maxiter=3]", "tol", "0.5"), "bp[maxiter=3,tol=0.5]");
+  EXPECT_THAT([&] { static_cast<void>(tools.with_setting("bp[tol=0.5]", "tol", "0.25")); },
+              ThrowsMessage<model_error>(HasSubstr("sets tol, which 'bp[tol=0.5]' sets already; give it once")));
+  EXPECT_THAT([&] { static_cast<void>(tools.with_setting("exact", "tol", "0.5")); },
+              ThrowsMessage<model_error>(HasSubstr("sets the option tol, which the tool exact has not")));
+  EXPECT_THAT([&] { static_cast<void>(tools.with_setting("bp", "tol", "5")); },
+              ThrowsMessage<model_error>(HasSubstr("must be a number > 0 and < 1, got '5'")));
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "pgm/learn/independence_test_registry.hpp"
 #include "pgm/learn/learn_structure.hpp"
 #include "pgm/learn/score_registry.hpp"
+#include "pgm/learn/structure_learner_registry.hpp"
 #include "pgm/transfer/registry.hpp"
 #include "pgm/transfer/state_map.hpp"
 
@@ -48,7 +49,7 @@ TEST(unknown_name_test, every_parser_of_a_choice_throws_it) {
               ThrowsMessage<unknown_name>(HasSubstr("did you mean 'chi2'?")));
   EXPECT_THAT([] { static_cast<void>(make_score("bicc")); },
               ThrowsMessage<unknown_name>(HasSubstr("did you mean 'bic'?")));
-  EXPECT_THAT([] { static_cast<void>(parse_structure_algorithm("tabo")); },
+  EXPECT_THAT([] { static_cast<void>(make_structure_learner("tabo")); },
               ThrowsMessage<unknown_name>(HasSubstr("did you mean 'tabu'?")));
   EXPECT_THAT([] { static_cast<void>(parse_posterior_format("jsn")); },
               ThrowsMessage<unknown_name>(HasSubstr("did you mean 'json'?")));

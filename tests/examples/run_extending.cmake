@@ -37,6 +37,8 @@ expect(inference_engine "engines: auto bp enumerate gibbs jt lw ve\n"
        "jt: P\\(rain=yes \\| grass=wet\\) = 0.413086, P\\(grass=wet\\) = 0.43618\n")
 expect(family_score "scores: aic\\[k=1\\] bdeu\\[iss=1\\] bic heavy-bic\\[weight=2\\] k2 loglik \n"
        "bic: a->c b->c\n" "heavy-bic\\[weight=3\\]: a->c\n")
+expect(structure_learner "learners: chow-liu empty hc mmhc pc tabu\n" "hc: a->b b->c\n" "chow-liu: a->b b->c b->d\n"
+       "chow-liu\\[min_information=0.01\\]: a->b b->c\n")
 expect(network_format "formats: bif xmlbif net json uai fg\n" "files: .bif, .xml, .net, .json, .uai or .fg\n"
        "read back: 3 variables, 7 free parameters\n"
        "P\\(grass=wet \\| rain=yes, sprinkler=off\\) = 0.9, P\\(v2=1 \\| v0=1, v1=0\\) = 0.9\n"

@@ -27,11 +27,9 @@ TEST(bootstrap_test, strengths_directions_and_the_averaged_network) {
   const auto net = read_bif(std::filesystem::path(PGM_NETWORKS_DIR) / "asia.bif");
   const auto data = sample(net, 3000, 8);
   const auto names = data.names();
-  structure_choice choice;
-  choice.threads = 1;
-  const auto one = bootstrap_structure(data, names, choice, {.replicates = 12, .seed = 3});
-  choice.threads = 2;
-  const auto two = bootstrap_structure(data, names, choice, {.replicates = 12, .seed = 3});
+  const auto hc = make_structure_learner("hc");
+  const auto one = bootstrap_structure(data, names, hc, {.threads = 1}, {.replicates = 12, .seed = 3});
+  const auto two = bootstrap_structure(data, names, hc, {.threads = 2}, {.replicates = 12, .seed = 3});
   ASSERT_EQ(one.arcs.size(), names.size() * (names.size() - 1));
   for (std::size_t k = 0; k < one.arcs.size(); ++k) {
     EXPECT_EQ(one.arcs[k].strength, two.arcs[k].strength);
@@ -66,13 +64,13 @@ TEST(bootstrap_test, strengths_directions_and_the_averaged_network) {
   }
   EXPECT_GE(one.averaged.size(), 4u);
   // Another seed, other resamples.
-  const auto other = bootstrap_structure(data, names, choice, {.replicates = 12, .seed = 4});
+  const auto other = bootstrap_structure(data, names, hc, {}, {.replicates = 12, .seed = 4});
   bool differs = false;
   for (std::size_t k = 0; k < one.arcs.size(); ++k) differs = differs || other.arcs[k].strength != one.arcs[k].strength;
   EXPECT_TRUE(differs);
-  EXPECT_THAT([&] { static_cast<void>(bootstrap_structure(data, names, choice, {.replicates = 0})); },
+  EXPECT_THAT([&] { static_cast<void>(bootstrap_structure(data, names, hc, {}, {.replicates = 0})); },
               ThrowsMessage<model_error>(HasSubstr("at least one replicate")));
-  EXPECT_THAT([&] { static_cast<void>(bootstrap_structure(data, names, choice, {.replicates = 2, .threshold = 2.0})); },
+  EXPECT_THAT([&] { static_cast<void>(bootstrap_structure(data, names, hc, {}, {.replicates = 2, .threshold = 2.0})); },
               ThrowsMessage<model_error>(HasSubstr("between 0 and 1, got 2")));
 }
 

@@ -291,32 +291,5 @@ TEST(structure_prior_test, mapped_edges_and_their_bonus) {
               ThrowsMessage<model_error>(HasSubstr("got 1e+308")));
 }
 
-TEST(learn_structure_test, one_entry_point_for_every_algorithm) {
-  const auto net = asia();
-  const auto data = sample(net, 20000, 4);
-  const auto truth = cpdag_of(net.graph());
-  structure_choice choice;
-  for (auto algorithm : {structure_algorithm::hc, structure_algorithm::tabu, structure_algorithm::mmhc}) {
-    choice.algorithm = algorithm;
-    const auto result = learn_structure(data, choice);
-    ASSERT_TRUE(result.search.has_value());
-    EXPECT_LE(structural_hamming_distance(result.graph, truth), 4u) << to_string(algorithm);
-  }
-  choice.algorithm = structure_algorithm::pc;
-  choice.pc.test = make_independence_test("g2");
-  const auto pc = learn_structure(data, choice);
-  ASSERT_TRUE(pc.pc.has_value());
-  EXPECT_EQ(pc.graph, pc_stable(data, choice.pc).graph);
-  // mmhc keeps to PC's skeleton.
-  choice.algorithm = structure_algorithm::mmhc;
-  const auto mmhc = learn_structure(data, choice);
-  const auto skeleton = pc_skeleton(columns_of(data), edge_constraints(data.size()), choice.pc);
-  for (const auto& e : mmhc.edges)
-    EXPECT_TRUE(skeleton.graph.adjacent(skeleton.graph.id(e.from), skeleton.graph.id(e.to)));
-  EXPECT_EQ(parse_structure_algorithm("tabu"), structure_algorithm::tabu);
-  EXPECT_THAT([] { static_cast<void>(parse_structure_algorithm("ges")); },
-              ThrowsMessage<unknown_name>(HasSubstr("unknown structure learning algorithm 'ges'")));
-}
-
 }  // namespace
 }  // namespace pgm::hill_climbing_tests

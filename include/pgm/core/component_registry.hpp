@@ -70,6 +70,9 @@ class component_registry {
   /// `kind` names an entry in messages ("score").
   explicit component_registry(std::string kind) : kind_(std::move(kind)), entries_(kind_) {}
 
+  /// What one component is called in messages: "score".
+  [[nodiscard]] const std::string& kind() const noexcept { return kind_; }
+
   /// Adds a component; an empty or taken name is a model_error.
   void add(std::string name, entry component) {
     if (aliases_.find(name)) throw model_error("a " + kind_ + " named '" + name + "' is registered already");
@@ -94,6 +97,27 @@ class component_registry {
     component_choice choice{spec.name, option_values(component->options)};
     for (const auto& [key, value] : spec.settings) choice.options.set(key, value, kind_, spec.name);
     return choice;
+  }
+
+  /// `text` with `key`=`value` added: "bdeu" gives "bdeu[iss=10]". Throws model_error when
+  /// `text` sets `key` already or its component has no option `key`, and what choose throws.
+  [[nodiscard]] std::string with_setting(std::string_view text, std::string_view key, std::string_view value) const {
+    const auto spec = parse_component_spec(text, kind_);
+    const auto choice = choose(text);
+    std::string settings;
+    for (const auto& [set, set_value] : spec.settings) {
+      if (set == key)
+        throw model_error("sets " + std::string(key) + ", which '" + std::string(text) +
+                          "' sets already; give it once");
+      settings += set + "=" + set_value + ",";
+    }
+    if (!choice.options.declares(key)) {
+      throw model_error("sets the option " + std::string(key) + ", which the " + kind_ + " " + choice.name +
+                        " has not");
+    }
+    auto result = spec.name + "[" + settings + std::string(key) + "=" + std::string(value) + "]";
+    static_cast<void>(choose(result));
+    return result;
   }
 
   /// The component `text` chooses.
@@ -126,6 +150,21 @@ class component_registry {
   detail::named_registry<entry> entries_;
   detail::named_registry<std::string> aliases_{"alias"};
 };
+
+/// An option whose value is a component of the registry `registry()` returns, written as that
+/// registry reads it: mmhc's `test=g2[correction=yates]`. The registry is looked up only when a
+/// value is read, so a component may choose among its own kind (hc's `start=pc`).
+template <class Product>
+[[nodiscard]] option_declaration component_option(std::string name, component_registry<Product>& (*registry)(),
+                                                  std::string default_choice, std::string help) {
+  return {.name = std::move(name),
+          .type = option_type::component,
+          .default_text = std::move(default_choice),
+          .help = std::move(help),
+          .check_choice = [registry](std::string_view text) { static_cast<void>(registry().choose(text)); },
+          .kind = [registry] { return registry().kind(); },
+          .choices = [registry] { return registry().listing(); }};
+}
 
 /// The entry of a component type T in a registry of Products: T's declared options (none when
 /// it declares none) and how a Product is made of T built from them.

@@ -67,10 +67,12 @@ namespace detail {
 
 }  // namespace detail
 
-/// Learns `choice` on `options.replicates` bootstrap resamples of the named columns. Throws
-/// model_error for no replicates or a threshold outside [0, 1], and whatever learning throws.
+/// Learns with `learner` on `options.replicates` bootstrap resamples of the named columns, in
+/// parallel on `context.threads`. Throws model_error for no replicates or a threshold outside
+/// [0, 1], and whatever learning throws.
 [[nodiscard]] PGM_DECL bootstrap_result bootstrap_structure(const dataset& data, std::span<const std::string> names,
-                                                            const structure_choice& choice,
+                                                            const structure_learner& learner,
+                                                            const structure_context& context,
                                                             const bootstrap_options& options);
 
 }  // namespace pgm

@@ -18,6 +18,7 @@
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/unknown_name.hpp"
+#include "pgm/learn/dirichlet.hpp"
 #include "pgm/learn/parameter_prior.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
@@ -53,15 +54,13 @@ struct estimate_options {
 
 namespace detail {
 
-/// θ[x,u] = (α[x,u] + M[x,u]) / (α_u + M[u]) for one column u, written to `out`; α is given
-/// cell by cell (`cell_alpha(u, x)`) and α_u per column.
-template <class Count, class CellAlpha, class ColumnAlpha>
+/// θ[x,u] = (α[x,u] + M[x,u]) / (α_u + M[u]) for one column u, written to `out` by the
+/// Dirichlet kernel, with the empty-configuration rule where there is neither data nor prior.
+template <class Count, PseudoCounts A>
 void posterior_column(const basic_count_table<Count>& counts, std::size_t u, std::span<const Count> column,
-                      CellAlpha cell_alpha, ColumnAlpha column_alpha, const estimate_options& options, double* out) {
+                      const A& alpha, const estimate_options& options, double* out) {
   const std::size_t j = counts.child_cardinality();
-  Count total = 0;
-  for (auto c : column) total += c;
-  const double denominator = column_alpha(u) + static_cast<double>(total);
+  const double denominator = dirichlet_posterior_column(column, u, alpha, out);
   auto where = [&] {
     std::string text;
     const auto codes = counts.parent_radix().decode(u);
@@ -83,20 +82,16 @@ void posterior_column(const basic_count_table<Count>& counts, std::size_t u, std
       throw data_error("no data for '" + counts.child().name() + "'" + where() + ", and no prior to fall back on");
     }
     for (std::size_t x = 0; x < j; ++x) out[x] = 1.0 / static_cast<double>(j);
-    return;
   }
-  for (std::size_t x = 0; x < j; ++x) out[x] = (cell_alpha(u, x) + static_cast<double>(column[x])) / denominator;
 }
 
-template <class Count, class CellAlpha, class ColumnAlpha>
-std::vector<double> dirichlet_posterior_mean(const basic_count_table<Count>& counts, CellAlpha cell_alpha,
-                                             ColumnAlpha column_alpha, const estimate_options& options) {
+template <class Count, PseudoCounts A>
+std::vector<double> dirichlet_posterior_mean(const basic_count_table<Count>& counts, const A& alpha,
+                                             const estimate_options& options) {
   const std::size_t j = counts.child_cardinality();
   std::vector<double> values(counts.counts().size());
   for (std::size_t u = 0; u < counts.configurations(); ++u) {
-    posterior_column(
-        counts, u, counts.column(config_index(u)), [&](std::size_t, std::size_t x) { return cell_alpha(u * j + x); },
-        column_alpha, options, values.data() + u * j);
+    posterior_column(counts, u, counts.column(config_index(u)), alpha, options, values.data() + u * j);
   }
   return values;
 }
@@ -122,15 +117,12 @@ template <class Count>
 cpt<double> sparse_dirichlet_estimate(const basic_count_table<Count>& counts, double alpha,
                                       const estimate_options& options) {
   const std::size_t j = counts.child_cardinality();
-  const double column_alpha = alpha * static_cast<double>(j);
-  const auto cell_alpha = [alpha](std::size_t, std::size_t) { return alpha; };
-  const auto same_alpha = [column_alpha](std::size_t) { return column_alpha; };
+  const uniform_pseudo_counts same{alpha, j};
   sparse_columns<double> columns;
   auto store = [&](std::size_t u, std::span<const Count> column) {
     columns.configurations.push_back(u);
     columns.values.resize(columns.values.size() + j);
-    posterior_column(counts, u, column, cell_alpha, same_alpha, options,
-                     columns.values.data() + columns.values.size() - j);
+    posterior_column(counts, u, column, same, options, columns.values.data() + columns.values.size() - j);
   };
   if (counts.is_sparse()) {
     const auto stored = counts.stored_configurations();
@@ -147,8 +139,7 @@ cpt<double> sparse_dirichlet_estimate(const basic_count_table<Count>& counts, do
   columns.rest.resize(j);
   if (empty < counts.configurations()) {
     const std::vector<Count> zeros(j, 0);
-    posterior_column(counts, empty, std::span<const Count>(zeros), cell_alpha, same_alpha, options,
-                     columns.rest.data());
+    posterior_column(counts, empty, std::span<const Count>(zeros), same, options, columns.rest.data());
   } else {
     std::fill(columns.rest.begin(), columns.rest.end(), 1.0 / static_cast<double>(j));
   }
@@ -175,9 +166,7 @@ cpt<double> estimate_from_pseudo_counts(const basic_count_table<Count>& counts, 
     check_pseudo_count(alpha[i], what.c_str());
     column_sums[i / cells] += alpha[i];
   }
-  return table_of(counts, dirichlet_posterior_mean(
-                              counts, [&](std::size_t cell) { return alpha[cell]; },
-                              [&](std::size_t u) { return column_sums[u]; }, options));
+  return table_of(counts, dirichlet_posterior_mean(counts, table_pseudo_counts{alpha, column_sums, cells}, options));
 }
 
 template <class Count>
@@ -214,6 +203,7 @@ cpt<double> sparse_weighted_estimate(const basic_count_table<Count>& counts, con
   const auto& f = p.prior;
   const double w = p.weight;
   const std::size_t j = counts.child_cardinality();
+  const weighted_pseudo_counts weighted{&f, w};
   // The configurations with rows or a column of f: both sorted lists, merged.
   std::vector<std::size_t> seen;
   if (counts.is_sparse()) {
@@ -238,9 +228,7 @@ cpt<double> sparse_weighted_estimate(const basic_count_table<Count>& counts, con
     if (w > 0.0 && counts.total(config_index(u)) == 0) {
       std::copy(prior.begin(), prior.end(), out);  // as the dense estimate: f itself
     } else {
-      posterior_column(
-          counts, u, column, [&](std::size_t, std::size_t x) { return w * prior[x]; }, [w](std::size_t) { return w; },
-          options, out);
+      posterior_column(counts, u, column, weighted, options, out);
     }
   }
   if (w > 0.0) {
@@ -252,9 +240,8 @@ cpt<double> sparse_weighted_estimate(const basic_count_table<Count>& counts, con
     while (empty < configurations.size() && configurations[empty] == empty) ++empty;
     const std::vector<Count> zeros(j, 0);
     columns.rest.resize(j);
-    posterior_column(
-        counts, empty, std::span<const Count>(zeros), [](std::size_t, std::size_t) { return 0.0; },
-        [](std::size_t) { return 0.0; }, options, columns.rest.data());
+    posterior_column(counts, empty, std::span<const Count>(zeros), uniform_pseudo_counts{0.0, j}, options,
+                     columns.rest.data());
   }
   return cpt<double>(counts.child(), counts.parents(), std::move(columns));
 }
@@ -266,9 +253,8 @@ cpt<double> sparse_weighted_estimate(const basic_count_table<Count>& counts, con
 template <class Count>
 [[nodiscard]] cpt<double> estimate_mle(const basic_count_table<Count>& counts, const estimate_options& options = {}) {
   if (detail::stores_sparse(counts, options)) return detail::sparse_dirichlet_estimate(counts, 0.0, options);
-  return detail::table_of(counts,
-                          detail::dirichlet_posterior_mean(
-                              counts, [](std::size_t) { return 0.0; }, [](std::size_t) { return 0.0; }, options));
+  return detail::table_of(counts, detail::dirichlet_posterior_mean(
+                                      counts, uniform_pseudo_counts{0.0, counts.child_cardinality()}, options));
 }
 
 /// The estimate under any parameter prior (eq. 6; eq. 7/8 for `weighted_prior`).
@@ -291,9 +277,9 @@ template <class Count>
           }
           detail::check_pseudo_count(alpha, "the Dirichlet pseudo-count alpha");
           if (detail::stores_sparse(counts, options)) return detail::sparse_dirichlet_estimate(counts, alpha, options);
-          return detail::table_of(counts, detail::dirichlet_posterior_mean(
-                                              counts, [alpha](std::size_t) { return alpha; },
-                                              [alpha, j](std::size_t) { return alpha * j; }, options));
+          return detail::table_of(
+              counts, detail::dirichlet_posterior_mean(counts, uniform_pseudo_counts{alpha, counts.child_cardinality()},
+                                                       options));
         } else if constexpr (std::is_same_v<prior_type, pseudo_counts_prior>) {
           detail::check_dense(counts, "a prior given cell by cell");
           return detail::estimate_from_pseudo_counts(counts, p.alpha, "", options);
@@ -308,9 +294,7 @@ template <class Count>
           if (counts.is_sparse() || p.prior.is_sparse()) return detail::sparse_weighted_estimate(counts, p, options);
           const auto f = p.prior.values();
           const double w = p.weight;
-          // The denominator is w + M[u] exactly as in eq. 8, not the sum of w·f over states.
-          auto values = detail::dirichlet_posterior_mean(
-              counts, [&](std::size_t cell) { return w * f[cell]; }, [w](std::size_t) { return w; }, options);
+          auto values = detail::dirichlet_posterior_mean(counts, weighted_pseudo_counts{&p.prior, w}, options);
           // Where M[u] = 0 the formula is f itself; (w·f)/w can differ from f in the last bit.
           const auto cells = counts.child_cardinality();
           for (std::size_t u = 0; u < counts.configurations(); ++u) {

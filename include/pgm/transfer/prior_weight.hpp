@@ -12,7 +12,6 @@
 /// data every w gives the prior itself (eq. 8 with M[u] = 0), so the choice cannot matter; we
 /// report the paper's best weight, 5.
 
-#include <boost/math/special_functions/gamma.hpp>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -21,7 +20,7 @@
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/detail/text.hpp"
-#include "pgm/learn/log_gamma_ratio.hpp"
+#include "pgm/learn/dirichlet.hpp"
 #include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {

@@ -23,7 +23,10 @@ namespace detail {
 [[nodiscard]] inline std::string range_text(const option_declaration& option) {
   const bool low = std::isfinite(option.minimum);
   const bool high = std::isfinite(option.maximum);
-  const auto bound = [](double value) { return text::format_double(value); };
+  const auto bound = [&](double value) {
+    return option.type == option_type::count ? std::to_string(static_cast<std::size_t>(value))
+                                             : text::format_double(value);
+  };
   if (low && high && option.minimum_included && option.maximum_included) {
     return " from " + bound(option.minimum) + " to " + bound(option.maximum);
   }
@@ -50,6 +53,7 @@ namespace detail {
       return option_value(*value);
     }
     case option_type::count: {
+      if (option.unlimited_allowed && text == "unlimited") return option_value(std::numeric_limits<std::size_t>::max());
       std::size_t value = 0;
       const auto [end, error] = std::from_chars(text.data(), text.data() + text.size(), value);
       if (error != std::errc{} || end != text.data() + text.size() || !in_range(option, static_cast<double>(value))) {
@@ -64,6 +68,9 @@ namespace detail {
     case option_type::word:
       if (std::find(option.words.begin(), option.words.end(), text) == option.words.end()) return std::nullopt;
       return option_value(std::string(text));
+    case option_type::component:
+      option.check_choice(text);  // throws the registry's own message
+      return option_value(std::string(text));
   }
   return std::nullopt;
 }
@@ -75,11 +82,16 @@ PGM_DECL std::string option_declaration::expected() const {
     case option_type::number:
       return "a number" + detail::range_text(*this);
     case option_type::count:
-      return "a whole number" + detail::range_text(*this);
+      return "a whole number" + detail::range_text(*this) + (unlimited_allowed ? ", or unlimited" : "");
     case option_type::flag:
       return "true or false";
     case option_type::word:
       return "one of " + text::join(words);
+    case option_type::component: {
+      const auto what = kind();
+      const bool vowel = !what.empty() && std::string_view("aeiou").find(what[0]) != std::string_view::npos;
+      return (vowel ? "an " : "a ") + what + ", one of " + text::join(choices());
+    }
   }
   return {};
 }
@@ -92,11 +104,13 @@ PGM_DECL option_declaration number_option(std::string name, double default_value
 }
 
 PGM_DECL option_declaration count_option(std::string name, std::size_t default_value, std::string help) {
+  const bool unlimited = default_value == std::numeric_limits<std::size_t>::max();
   return {.name = std::move(name),
           .type = option_type::count,
-          .default_text = std::to_string(default_value),
+          .default_text = format_option_value(default_value),
           .help = std::move(help),
-          .minimum = 0.0};
+          .minimum = 0.0,
+          .unlimited_allowed = unlimited};
 }
 
 PGM_DECL option_declaration flag_option(std::string name, bool default_value, std::string help) {
@@ -137,17 +151,26 @@ PGM_DECL component_spec parse_component_spec(std::string_view text, std::string_
   spec.name = name;
   if (open == std::string_view::npos) return spec;
 
-  const auto close = text.find(']', open);
-  if (close == std::string_view::npos) throw refuse(text.size(), "expected ']'");
+  // The settings' ends: each ',' and the closing ']' outside a value's own brackets.
+  std::vector<std::size_t> ends;
+  std::size_t depth = 1;
+  std::size_t close = text.size();
+  for (std::size_t at = open + 1; at < text.size() && close == text.size(); ++at) {
+    if (text[at] == '[') ++depth;
+    if (text[at] == ']' && --depth == 0) close = at;
+    if ((text[at] == ',' && depth == 1) || at == close) ends.push_back(at);
+  }
+  if (close == text.size()) throw refuse(text.size(), "expected ']'");
   const auto [after, after_at] = piece(close + 1, text.size());
   if (!after.empty()) throw refuse(after_at, "unexpected text after ']'");
-  if (const auto nested = text.find('[', open + 1); nested < close) throw refuse(nested, "unexpected '['");
   if (piece(open + 1, close).first.empty()) return spec;
-  for (std::size_t first = open + 1; first <= close;) {
-    auto last = text.find(',', first);
-    if (last == std::string_view::npos || last > close) last = close;
+  std::size_t first = open + 1;
+  for (const auto last : ends) {
     const auto equals = text.find('=', first);
-    if (equals == std::string_view::npos || equals >= last) throw refuse(first, "expected KEY=VALUE");
+    const auto nested = text.find('[', first);
+    if (equals == std::string_view::npos || equals >= last || nested < equals) {
+      throw refuse(first, "expected KEY=VALUE");
+    }
     const auto [key, key_at] = piece(first, equals);
     const auto [value, value_at] = piece(equals + 1, last);
     if (key.empty()) throw refuse(key_at, "expected an option's name before '='");
@@ -182,13 +205,19 @@ PGM_DECL void option_values::set(std::string_view key, std::string_view value, s
     throw unknown_name(std::string(name) + " option", std::string(key), known);
   }
   const auto& option = declarations_[at];
-  auto read = detail::read_option_value(option, value);
-  if (!read) {
-    throw model_error(
-        "option " + option.name + " of " + owner + " must be " + option.expected() + ", got " +
-        (option.type == option_type::number ? text::quoted_number(value) : "'" + std::string(value) + "'"));
+  const auto refusal = option_value_refusal(option, value);
+  if (!refusal.empty()) throw model_error("option " + option.name + " of " + owner + refusal);
+  values_[at] = *detail::read_option_value(option, value);
+}
+
+PGM_DECL std::string option_value_refusal(const option_declaration& option, std::string_view text) {
+  try {
+    if (detail::read_option_value(option, text)) return {};
+  } catch (const error& refused) {
+    return std::string(": ") + refused.what();
   }
-  values_[at] = std::move(*read);
+  return " must be " + option.expected() + ", got " +
+         (option.type == option_type::number ? text::quoted_number(text) : "'" + std::string(text) + "'");
 }
 
 PGM_DECL std::size_t option_values::position(std::string_view key) const noexcept {
@@ -220,6 +249,10 @@ PGM_DECL const std::string& option_values::word(std::string_view key) const {
   return std::get<std::string>(at(key, option_type::word));
 }
 
+PGM_DECL const std::string& option_values::component(std::string_view key) const {
+  return std::get<std::string>(at(key, option_type::component));
+}
+
 PGM_DECL std::string format_option_value(const option_value& value) {
   return std::visit(
       [](const auto& v) -> std::string {
@@ -227,7 +260,7 @@ PGM_DECL std::string format_option_value(const option_value& value) {
         if constexpr (std::same_as<type, double>) {
           return text::format_double(v);
         } else if constexpr (std::same_as<type, std::size_t>) {
-          return std::to_string(v);
+          return v == std::numeric_limits<std::size_t>::max() ? "unlimited" : std::to_string(v);
         } else if constexpr (std::same_as<type, bool>) {
           return v ? "true" : "false";
         } else {

@@ -74,7 +74,8 @@ PGM_DECL double l1_threshold(std::vector<double> strengths) {
 namespace pgm {
 
 PGM_DECL bootstrap_result bootstrap_structure(const dataset& data, std::span<const std::string> names,
-                                              const structure_choice& choice, const bootstrap_options& options) {
+                                              const structure_learner& learner, const structure_context& context,
+                                              const bootstrap_options& options) {
   if (options.replicates == 0) throw model_error("the bootstrap needs at least one replicate");
   if (options.threshold && !(*options.threshold >= 0.0 && *options.threshold <= 1.0)) {
     throw model_error("the bootstrap threshold must lie between 0 and 1, got " +
@@ -83,10 +84,10 @@ PGM_DECL bootstrap_result bootstrap_structure(const dataset& data, std::span<con
   const std::size_t n = names.size();
   const std::size_t rows = data.rows();
   std::vector<std::vector<unsigned char>> found(options.replicates);
-  auto inner = choice;
+  auto inner = context;
   inner.threads = 1;  // the replicates run in parallel
   static_cast<void>(detail::parallel_for(
-      options.replicates, {.threads = choice.threads}, [] { return 0; },
+      options.replicates, {.threads = context.threads}, [] { return 0; },
       [&](int&, detail::item_range chunk) {
         for (std::size_t r = chunk.begin; r < chunk.end; ++r) {
           std::uint64_t stream = detail::splitmix64(options.seed ^ detail::splitmix64(r + 0x5eed));
@@ -96,7 +97,7 @@ PGM_DECL bootstrap_result bootstrap_structure(const dataset& data, std::span<con
             p = static_cast<std::size_t>(stream % rows);
           }
           const auto resampled = detail::resample_rows(data, names, picked);
-          const auto learned = learn_structure(resampled, names, inner);
+          const auto learned = learn_structure(resampled, names, learner, inner);
           std::vector<unsigned char> edges(n * n, 0);
           dag index(std::vector<std::string>(names.begin(), names.end()));
           for (const auto& e : learned.edges) edges[index.id(e.from).value() * n + index.id(e.to).value()] = 1;

@@ -2,7 +2,7 @@
 // The definitions of pgm/learn/score.hpp: inline in a header-only build, compiled once into libpgm
 // under PGM_SEPARATE_COMPILATION (pgm/core/compilation.hpp).
 
-#include "pgm/learn/log_gamma_ratio.hpp"
+#include "pgm/learn/dirichlet.hpp"
 #include "pgm/learn/score.hpp"
 
 namespace pgm {
@@ -23,20 +23,7 @@ PGM_DECL double family_loglik(const count_table& counts) {
 }
 
 PGM_DECL double family_dirichlet(const count_table& counts, double alpha) {
-  const detail::log_gamma_ratio of_alpha(alpha);
-  const detail::log_gamma_ratio of_alpha_u(alpha * static_cast<double>(counts.child_cardinality()));
-  double total = 0.0;
-  for (std::size_t u = 0; u < counts.configurations(); ++u) {
-    const auto column = counts.column(config_index(static_cast<config_index::rep>(u)));
-    count_table::count_type n_u = 0;
-    for (auto m : column) n_u += m;
-    if (n_u == 0) continue;  // an unseen configuration contributes lgamma(a_u) - lgamma(a_u) = 0
-    total += -of_alpha_u(static_cast<double>(n_u));
-    for (auto m : column) {
-      if (m > 0) total += of_alpha(static_cast<double>(m));
-    }
-  }
-  return total;
+  return dirichlet_log_marginal(counts, uniform_pseudo_counts{alpha, counts.child_cardinality()});
 }
 
 }  // namespace pgm

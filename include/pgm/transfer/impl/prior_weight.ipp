@@ -7,23 +7,7 @@
 namespace pgm {
 
 PGM_DECL double log_evidence(const count_table& counts, const cpt<double>& prior, double weight, double floor) {
-  const std::size_t j = counts.child_cardinality();
-  const double uniform = floor / static_cast<double>(j);
-  double total = 0;
-  for (std::size_t u = 0; u < counts.configurations(); ++u) {
-    const config_index c(static_cast<config_index::rep>(u));
-    const auto m = counts.column(c);
-    const auto f = prior.column(c);
-    double n = 0;
-    for (std::size_t x = 0; x < j; ++x) {
-      if (m[x] == 0) continue;
-      const double alpha = weight * ((1 - floor) * f[x] + uniform);
-      total += detail::log_gamma_ratio(alpha)(static_cast<double>(m[x]));
-      n += static_cast<double>(m[x]);
-    }
-    if (n > 0) total += -detail::log_gamma_ratio(weight)(n);
-  }
-  return total;
+  return dirichlet_log_marginal(counts, weighted_pseudo_counts{&prior, weight, floor});
 }
 
 PGM_DECL prior_weight_choice choose_prior_weight(const count_table& counts, const cpt<double>& prior,
