@@ -51,8 +51,10 @@ class InferenceEngine:
     engine: "auto" (the junction tree unless it is too large, then likelihood weighting for a
     Bayesian network and loopy belief propagation for a Markov network), "jt", "ve", "bp",
     "gibbs", or "lw" (Bayesian networks only: it samples along the arrows); pgm.ENGINES lists
-    them with any registered from C++. samples, seed, burn_in and threads set the sampling
-    engines (the same numbers for a seed, whatever the threads). Evidence stays until replaced:
+    them with any registered from C++. A name may carry the engine's options,
+    "bp[damping=0.5,max_iterations=200]", as pgm._core.engine_listing() declares them. samples,
+    seed, burn_in and threads set the sampling engines (the same numbers for a seed, whatever
+    the threads); the brackets override them. Evidence stays until replaced:
     set_evidence({variable: state}) for observed states, set_soft_evidence({variable: [weight
     per state]}) for likelihoods."""
 

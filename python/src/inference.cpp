@@ -154,6 +154,7 @@ void add_inference(py::module_& m) {
       .def("log_probability_of_evidence", &engine_handle::log_probability_of_evidence)
       .def("log_partition_function", &engine_handle::log_partition_function);
   m.def("engine_names", [] { return engine_registry::instance().names(); });
+  m.def("engine_listing", [] { return engine_registry::instance().listing(); });
 }
 
 }  // namespace pgm::python

@@ -123,6 +123,20 @@ def test_program_prints_the_same_marginals(asia, program, tmp_path):
             assert printed["marginals"][variable][state] == p
 
 
+def test_an_engine_takes_its_options_in_brackets(asia, program):
+    sampled = pgm.InferenceEngine(asia, "lw[samples=2000,seed=5]", threads=1)
+    same = pgm.InferenceEngine(asia, "lw", samples=2000, seed=5, threads=1)
+    assert sampled.marginal("lung").tolist() == same.marginal("lung").tolist()
+    assert pgm.InferenceEngine(asia, "auto[max_cells=4]").name == "lw"
+    listing = pgm._core.engine_listing()
+    assert "bp[schedule=residual,damping=0,tolerance=1e-09,max_iterations=1000]" in listing
+    assert "bp[schedule=residual,damping=0,tolerance=1e-09,max_iterations=1000]" in program.run("query", "--help").stdout
+    with pytest.raises(pgm.Error, match=r"unknown jt option 'samples'"):
+        pgm.InferenceEngine(asia, "jt[samples=5]")
+    with pytest.raises(pgm.Error, match=r"option damping of the inference engine 'bp' must be a number >= 0 and < 1"):
+        pgm.InferenceEngine(asia, "bp[damping=1]")
+
+
 def test_impossible_evidence_and_unknown_names(chain, asia):
     frame = pd.DataFrame({"A": [0, 0, 1, 1], "B": [0, 0, 1, 1], "C": [0, 1, 0, 1]})
     net = pgm.fit(frame, "A->B,A->C")

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "cli/common.hpp"
+#include "cli/component_options.hpp"
 #include "pgm/core/file.hpp"
 #include "pgm/inference/engine_registry.hpp"
 #include "pgm/inference/posterior_table.hpp"
@@ -184,12 +185,22 @@ void add_query_command(CLI::App& app) {
   cmd->add_option("--soft", args->soft,
                   "Soft (likelihood) evidence, one weight per state in the variable's order, e.g. \"X=0.2:0.8\": "
                   "P(x | evidence) is multiplied by its weight");
-  const auto names = engine_registry::instance().names();
+  const auto& registry = engine_registry::instance();
   cmd->add_option("--engine", args->engine,
                   "Inference engine: jt (junction tree), ve (variable elimination), bp (loopy belief propagation), lw "
                   "(likelihood weighting), gibbs (Gibbs sampling), or auto (jt unless its tree is too large, then lw, "
-                  "or bp for a Markov network; it says which)")
-      ->check(CLI::IsMember(names))
+                  "or bp for a Markov network; it says which): " +
+                      choices_help(registry.listing()) + " over --samples, --seed and --burn-in")
+      ->check(CLI::Validator(
+          [&registry](std::string& text) -> std::string {
+            try {
+              registry.check(text);
+              return {};
+            } catch (const error& refused) {
+              return refused.what();
+            }
+          },
+          "NAME[KEY=VALUE,...]"))
       ->capture_default_str();
   cmd->add_option("--samples", args->samples, "Samples for lw and gibbs")
       ->check(whole_number(1, 1'000'000'000))

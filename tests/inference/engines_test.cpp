@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <random>
@@ -22,6 +23,7 @@ namespace pgm::engines_tests {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::ThrowsMessage;
 
 /// A random query on `net`: 1–3 query variables, 0–3 hard and 0–2 soft observations.
 struct random_case {
@@ -495,6 +497,58 @@ TEST(engines_test, a_users_engine_needs_only_the_concept) {
     }
   }
   EXPECT_FALSE(engine.finds_mpe());
+}
+
+/// A user's engine with an option of its own, read from inference_options::engine.
+class deep_engine : public enumerating_engine {
+ public:
+  static std::vector<option_declaration> options() {
+    return {count_option("depth", 2, "how deep it looks").at_least(1)};
+  }
+  deep_engine(const bayesian_network& network, const inference_options& options)
+      : enumerating_engine(network, options), name_("deep" + std::to_string(options.engine.count("depth"))) {}
+  [[nodiscard]] std::string_view name() const { return name_; }
+
+ private:
+  std::string name_;
+};
+
+TEST(engines_test, an_engine_takes_its_declared_options_in_brackets) {
+  const auto net = testing::random_network(4, {.nodes = 10});
+  // A choice's options override the settings given beside it.
+  EXPECT_EQ(make_engine("auto[max_cells=4]", net).name(), "lw");
+  EXPECT_THROW(static_cast<void>(make_engine("jt[max_cells=4]", net)), table_too_large);
+  const std::vector<variable_id> first{variable_id(0)};
+  const auto answer = [&](any_inference_engine engine) {
+    const auto answered = engine.joint(first);
+    const auto values = answered.table.values();
+    return std::vector<double>(values.begin(), values.end());
+  };
+  inference_options sampled;
+  sampled.sampling = {.samples = 3000, .seed = 7, .threads = 1};
+  EXPECT_EQ(answer(make_engine("lw[samples=3000,seed=7]", net, {.sampling = {.threads = 1}})),
+            answer(make_engine("lw", net, sampled)));
+  inference_options damped;
+  damped.bp.damping = 0.5;
+  damped.bp.schedule = bp_schedule::parallel;
+  EXPECT_EQ(answer(make_engine("bp[damping=0.5,schedule=parallel]", net)), answer(make_engine("bp", net, damped)));
+  EXPECT_NE(answer(make_engine("lw[seed=8]", net)), answer(make_engine("lw", net)));
+  EXPECT_EQ(answer(make_engine("ve[heuristic=min-degree]", net)), answer(make_engine("ve", net)));
+  EXPECT_THAT([&] { static_cast<void>(make_engine("jt[samples=5]", net)); },
+              ThrowsMessage<unknown_name>(HasSubstr("unknown jt option 'samples'")));
+  EXPECT_THAT([&] { static_cast<void>(make_engine("bp[damping=1]", net)); },
+              ThrowsMessage<model_error>(
+                  HasSubstr("option damping of the inference engine 'bp' must be a number >= 0 and < 1, got '1'")));
+  EXPECT_THAT([&] { static_cast<void>(make_engine("bp[damping=0.5", net)); },
+              ThrowsMessage<model_error>(HasSubstr("expected ']' at column 15")));
+  const auto listing = engine_registry::instance().listing();
+  EXPECT_NE(std::find(listing.begin(), listing.end(), "jt[heuristic=min-fill,max_cells=134217728]"), listing.end());
+
+  static const register_engine<deep_engine> registered("deep");
+  EXPECT_EQ(make_engine("deep", net).name(), "deep2");
+  EXPECT_EQ(make_engine("deep[depth=5]", net).name(), "deep5");
+  EXPECT_THAT([&] { static_cast<void>(make_engine("deep[depth=0]", net)); },
+              ThrowsMessage<model_error>(HasSubstr("option depth of the inference engine 'deep' must be")));
 }
 
 TEST(engines_test, semiring_operations_on_factors) {

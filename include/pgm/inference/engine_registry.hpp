@@ -2,7 +2,9 @@
 /// \file
 /// Engines by name, for the `pgm` program, the Python package and code that picks one at run
 /// time: `make_engine("jt", model, options)` gives an `any_inference_engine` over a Bayesian
-/// network or a Markov network. The built-in names:
+/// network or a Markov network. A name may carry the engine's declared options, as libDAI
+/// writes `BP[tol=1e-9]`: `make_engine("bp[damping=0.5,max_iterations=200]", model)` sets them
+/// on top of `options`. The built-in names:
 ///
 /// | name | Bayesian network | Markov network |
 /// |---|---|---|
@@ -21,7 +23,9 @@
 /// (std::shared_ptr<const M>, const inference_options&) or (const M&, const inference_options&)
 /// for M = bayesian_network, markov_network or both: it serves the model classes it can be
 /// built from. The engine the registry makes keeps the model alive, so one holding a reference
-/// to it is safe.
+/// to it is safe. An engine with options of its own declares them,
+/// `static std::vector<pgm::option_declaration> options()`, and reads them from
+/// `inference_options::engine` ("mine[depth=3]").
 ///
 /// "auto" is exact unless exact is out of reach: the junction tree when it compiles within
 /// `inference_options::max_junction_tree_cells`, otherwise likelihood weighting (bp for a Markov
@@ -37,6 +41,7 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
+#include "pgm/core/component_options.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/graphical_model.hpp"
 #include "pgm/core/markov_network.hpp"
@@ -63,6 +68,9 @@ struct inference_options {
   std::size_t max_junction_tree_cells = std::size_t{1} << 27;
   sampling_options sampling;
   bp_options bp;
+  /// The options the engine chosen by name declares, at their defaults unless its choice set
+  /// them ("mine[depth=3]"): how a user's engine gets options of its own.
+  option_values engine;
 };
 
 /// Any engine over any model, type-erased; it models MpeEngine itself (mpe throws model_error
@@ -231,10 +239,15 @@ static_assert(InferenceEngine<belief_propagation_engine<markov_network>> &&
 template <GraphicalModel M>
 using engine_factory_for = std::function<any_inference_engine(std::shared_ptr<const M>, const inference_options&)>;
 
-/// How one engine is built for each model class it serves (empty for a class it does not).
+/// How one engine is built for each model class it serves (empty for a class it does not),
+/// with the options it declares.
 struct engine_factory {
   engine_factory_for<bayesian_network> for_network;
   engine_factory_for<markov_network> for_markov;
+  std::vector<option_declaration> options;
+  /// Writes the declared option `key`, as a choice set it, into the built-in settings it
+  /// stands for (bp's damping into `bp.damping`); none for an engine that reads its own.
+  std::function<void(std::string_view key, const option_values&, inference_options&)> apply;
 
   template <GraphicalModel M>
   [[nodiscard]] const engine_factory_for<M>& of() const noexcept {
@@ -277,16 +290,25 @@ class engine_registry {
   /// Adds an engine under `name`; a second engine of the same name is an error.
   void add(std::string name, engine_factory factory) { factories_.add(std::move(name), std::move(factory)); }
 
-  /// The engine of that name over `model` (shared, not copied); unknown_name for an unknown
-  /// name, model_error for an engine that does not serve this class of model.
+  /// The engine `choice` names over `model` (shared, not copied): "bp", or with options set
+  /// on top of `options`, "bp[damping=0.5]". Throws unknown_name for an unknown name or
+  /// option, model_error for a malformed choice, a value its declaration refuses, or an engine
+  /// that does not serve this class of model.
   template <GraphicalModel M>
-  [[nodiscard]] any_inference_engine make(std::string_view name, std::shared_ptr<const M> model,
+  [[nodiscard]] any_inference_engine make(std::string_view choice, std::shared_ptr<const M> model,
                                           const inference_options& options = {}) const {
-    const auto factory = factories_.find(name);
-    if (!factory) throw unknown_name("inference engine", std::string(name), names());
+    const auto spec = parse_component_spec(choice, "inference engine");
+    const auto factory = factories_.find(spec.name);
+    if (!factory) throw unknown_name("inference engine", spec.name, names());
     const auto& build = factory->template of<M>();
-    if (!build) throw model_error(refusal(name, model_kind<M>()));
-    return build(std::move(model), options);
+    if (!build) throw model_error(refusal(spec.name, model_kind<M>()));
+    auto chosen = options;
+    chosen.engine = option_values(factory->options);
+    for (const auto& [key, value] : spec.settings) {
+      chosen.engine.set(key, value, "inference engine", spec.name);
+      if (factory->apply) factory->apply(key, chosen.engine, chosen);
+    }
+    return build(std::move(model), chosen);
   }
 
   /// The same over a copy of `model`.
@@ -297,6 +319,18 @@ class engine_registry {
   }
 
   [[nodiscard]] std::vector<std::string> names() const { return factories_.names(); }
+
+  /// Each engine as it is chosen with its declared defaults, "bp[schedule=residual,...]": for
+  /// help texts.
+  [[nodiscard]] std::vector<std::string> listing() const {
+    std::vector<std::string> lines;
+    for (const auto& name : names()) lines.push_back(spec_text(name, option_values(factories_.find(name)->options)));
+    return lines;
+  }
+
+  /// Throws what make would for `choice` short of building: an unknown engine or option, or
+  /// a value its declaration refuses.
+  PGM_DECL void check(std::string_view choice) const;
 
   /// The engines that serve a model of class M.
   template <GraphicalModel M>
@@ -322,10 +356,12 @@ template <class Model>
 }
 
 /// Registers an engine type when the program starts: `static const register_engine<E> r("name");`.
+/// E's declared options, if it declares any, are read into `inference_options::engine`.
 template <InferenceEngine E>
 struct register_engine {
   explicit register_engine(std::string name) {
     engine_factory factory{detail::factory_of<E, bayesian_network>(), detail::factory_of<E, markov_network>()};
+    if constexpr (requires { E::options(); }) factory.options = E::options();
     if (!factory.for_network && !factory.for_markov) {
       throw model_error("the engine '" + name +
                         "' can be built from neither a Bayesian nor a Markov network (with inference_options)");
