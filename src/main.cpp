@@ -37,9 +37,13 @@ int report(const std::exception_ptr& failure) {
     std::cerr << "pgm: error: " << pgm::text::printable(e.what()) << '\n';
     return 1;
   } catch (const pgm::table_too_large& e) {
-    std::cerr << "pgm: error: " << pgm::text::printable(e.what()) << '\n'
-              << "pgm: hint: a variable with that many states is usually a continuous column read as labels; bin it "
-                 "with --discretization (or pgm discretize) first\n";
+    std::cerr << "pgm: error: " << pgm::text::printable(e.what()) << '\n';
+    // A table made large by a variable's states ("5000 states × 5000 parent configurations"),
+    // not by its number of parents: most often a continuous column read as labels.
+    if (std::string_view(e.what()).find(" states × ") != std::string_view::npos) {
+      std::cerr << "pgm: hint: a variable with that many states is usually a continuous column read as labels; bin "
+                   "it with --discretization (or pgm discretize) first\n";
+    }
     return 1;
   } catch (const pgm::missing_value_error& e) {
     std::cerr << "pgm: error: " << pgm::text::printable(e.what()) << '\n'

@@ -33,6 +33,38 @@ TEST_F(limits_cli_test, fit_on_raw_continuous_columns_is_refused_with_a_hint_to_
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
+// EM and the scores on a family of 40 binary parents, 2^40 configurations seen by 6 rows:
+// EM refuses it by name (it said "out of memory"), the score sums over the rows' columns (it
+// looped over 2^40 of them), and neither hints at binning columns, which is not the cause.
+TEST_F(limits_cli_test, em_refuses_and_scores_sum_over_a_family_of_forty_parents) {
+  std::string header = "c", edges;
+  for (int p = 0; p < 40; ++p) {
+    header += ",p" + std::to_string(p);
+    edges += (p ? "," : "") + std::string("p") + std::to_string(p) + "->c";
+  }
+  std::string csv = header + "\n";
+  for (int r = 0; r < 6; ++r) {
+    csv += r == 0 ? "" : std::to_string(r % 2);
+    for (int p = 0; p < 40; ++p) csv += "," + std::to_string((r + p) % 2);
+    csv += "\n";
+  }
+  const auto data = file("wide.csv", csv);
+  const auto em =
+      run("fit --data " + data.string() + " --edges \"" + edges + "\" --missing em --out " + path("em.json").string());
+  EXPECT_EQ(em.code, 1);
+  EXPECT_THAT(em.err, HasSubstr("EM holds every table dense, and the table of 'c' with 40 parents has 2199023255552 "
+                                "cells, more than pgm's limit of 16777216"));
+  EXPECT_THAT(em.err, Not(HasSubstr("hint")));
+  EXPECT_FALSE(std::filesystem::exists(path("em.json")));
+  const auto fitted =
+      run("fit --data " + data.string() + " --edges \"" + edges + "\" --missing drop --out " + path("m.json").string());
+  ASSERT_EQ(fitted.code, 0) << fitted.err;
+  const auto scored =
+      run("score --model " + path("m.json").string() + " --data " + data.string() + " --missing drop --score bdeu");
+  ASSERT_EQ(scored.code, 0) << scored.err;
+  EXPECT_THAT(scored.out, HasSubstr("bdeu (iss 1) of "));
+}
+
 // y under 26 binary parents: 2^26 configurations × 2 states, past the dense limit, from 2,000
 // rows. pgm fit counts it sparse; JSON keeps it so, BIF refuses it, sampling answers queries, and
 // exact inference once the evidence reduces the family to what fits.

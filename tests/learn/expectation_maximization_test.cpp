@@ -314,6 +314,20 @@ TEST(expectation_maximization, refuses_what_it_cannot_fit) {
   const auto unrelated = bayesian_network::from_tables({cpt<double>(binary("B"), {}, {0.5, 0.5})});
   EXPECT_THAT([&] { static_cast<void>(expectation_maximization(truth.structure(), data, {}, {.start = &unrelated})); },
               ThrowsMessage<model_error>(HasSubstr("another structure")));
+  // A family past the limit of a dense table is refused by name before anything is allocated
+  // (issue 49: "out of memory").
+  std::vector<variable> variables{binary("C")};
+  std::vector<named_edge> edges;
+  dataset wide;
+  wide.add(discrete_column(binary("C"), std::vector<std::uint8_t>{0, 1}));
+  for (int p = 0; p < 40; ++p) {
+    variables.push_back(binary("P" + std::to_string(p)));
+    edges.push_back({"P" + std::to_string(p), "C"});
+    wide.add(discrete_column(variables.back(), std::vector<std::uint8_t>{1, 0}));
+  }
+  EXPECT_THAT([&] { static_cast<void>(expectation_maximization(network_structure(variables, edges), wide)); },
+              ThrowsMessage<table_too_large>(HasSubstr(
+                  "EM holds every table dense, and the table of 'C' with 40 parents has 2199023255552 cells")));
 }
 
 }  // namespace

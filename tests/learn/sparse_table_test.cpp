@@ -4,6 +4,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <random>
 #include <sstream>
@@ -19,6 +20,7 @@
 #include "pgm/io/json_model.hpp"
 #include "pgm/learn/estimate.hpp"
 #include "pgm/learn/fit.hpp"
+#include "pgm/learn/score_registry.hpp"
 
 namespace pgm::sparse_table_tests {
 namespace {
@@ -121,6 +123,31 @@ TEST(sparse_table_test, counts_past_the_dense_limit_are_kept_sparse_and_equal_br
   EXPECT_THAT(counts.column(config_index(1)), ElementsAre(0u, 0u, 0u));  // not among 5000 of 2^26
   EXPECT_THAT([&] { static_cast<void>(counts.counts()); },
               ThrowsMessage<table_too_large>(HasSubstr("the counts of 'y' are kept sparse")));
+}
+
+TEST(sparse_table_test, scores_of_a_sparse_family_sum_over_the_configurations_seen) {
+  // 40 binary parents: 2^40 configurations, of which 300 rows see at most 300. A score that
+  // visited every configuration would take hours (issue 49); those not seen add nothing.
+  const auto data = random_data(40, 300, 11);
+  const auto counts = count_all(data, 40);
+  ASSERT_TRUE(counts.is_sparse());
+  double loglik = 0.0, bdeu = 0.0;
+  const double alpha = 2.0 / (3.0 * std::pow(2.0, 40));  // iss 2 over 3 × 2^40 cells
+  for (std::size_t i = 0; i < counts.stored_configurations().size(); ++i) {
+    const auto column = counts.stored_column(i);
+    double n = 0;
+    for (auto m : column) n += static_cast<double>(m);
+    bdeu += std::lgamma(3 * alpha) - std::lgamma(3 * alpha + n);
+    for (auto m : column) {
+      if (m == 0) continue;
+      loglik += static_cast<double>(m) * std::log(static_cast<double>(m) / n);
+      bdeu += std::lgamma(alpha + static_cast<double>(m)) - std::lgamma(alpha);
+    }
+  }
+  EXPECT_NEAR(make_score("loglik")(counts), loglik, 1e-9 * std::abs(loglik));
+  EXPECT_NEAR(make_score("bdeu[iss=2]")(counts), bdeu, 1e-9 * std::abs(bdeu));
+  const double parameters = 2.0 * std::pow(2.0, 40);
+  EXPECT_NEAR(make_score("bic")(counts), loglik - std::log(300.0) / 2 * parameters, 1e-3);
 }
 
 TEST(sparse_table_test, sparse_counts_add_up_as_dense_ones_do) {

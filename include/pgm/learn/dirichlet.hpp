@@ -100,19 +100,17 @@ template <class Count, PseudoCounts A>
     // One α everywhere: ln Γ(α) and ln Γ(α_u) once for the family.
     const detail::log_gamma_ratio of_alpha(alpha.alpha);
     const detail::log_gamma_ratio of_alpha_u(alpha.column(0));
-    for (std::size_t u = 0; u < counts.configurations(); ++u) {
-      const auto column = counts.column(config_index(static_cast<config_index::rep>(u)));
+    counts.for_each_column([&](std::size_t, std::span<const Count> column) {
       Count n_u = 0;
       for (auto m : column) n_u += m;
-      if (n_u == 0) continue;
+      if (n_u == 0) return;
       total += -of_alpha_u(static_cast<double>(n_u));
       for (auto m : column) {
         if (m > 0) total += of_alpha(static_cast<double>(m));
       }
-    }
+    });
   } else {
-    for (std::size_t u = 0; u < counts.configurations(); ++u) {
-      const auto column = counts.column(config_index(static_cast<config_index::rep>(u)));
+    counts.for_each_column([&](std::size_t u, std::span<const Count> column) {
       const auto cells = alpha.cells(u);
       double n = 0;
       for (std::size_t x = 0; x < column.size(); ++x) {
@@ -121,7 +119,7 @@ template <class Count, PseudoCounts A>
         n += static_cast<double>(column[x]);
       }
       if (n > 0) total += -detail::log_gamma_ratio(alpha.column(u))(n);
-    }
+    });
   }
   return total;
 }

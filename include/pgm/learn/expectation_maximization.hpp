@@ -46,6 +46,7 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/detail/parallel_for.hpp"
@@ -167,6 +168,7 @@ class em_runner {
         rows_(data.rows()) {
     for (std::size_t i = 0; i < structure.size(); ++i) {
       const variable_id node(static_cast<variable_id::rep>(i));
+      require_dense(structure, node);
       alpha_.push_back(pseudo_counts_of(prior_of(node), structure.at(node), structure.parent_variables(node)));
       latent_family_.push_back(std::any_of(families_[i].begin(), families_[i].end(), [&](variable_id member) {
         return !data.contains(structure.at(member).name());
@@ -206,6 +208,23 @@ class em_runner {
   [[nodiscard]] const parameter_prior& prior_of(variable_id node) const {
     const auto own = fitting_->node_priors.find(structure_->at(node).name());
     return own != fitting_->node_priors.end() ? own->second : fitting_->prior;
+  }
+
+  /// The E-step reads every value of each table through a junction tree, so EM holds every
+  /// table dense: refused here, naming the family, rather than by an allocation that fails.
+  static void require_dense(const network_structure& structure, variable_id node) {
+    std::size_t cells = structure.at(node).cardinality();
+    for (const auto& parent : structure.parent_variables(node)) {
+      cells = detail::saturating_multiply(cells, parent.cardinality());
+    }
+    if (cells > max_table_cells) {
+      throw table_too_large(
+          "EM holds every table dense, and the table of '" + structure.at(node).name() + "' with " +
+          std::to_string(structure.parent_variables(node).size()) + " parents has " +
+          (cells == std::numeric_limits<std::size_t>::max() ? std::string("more than 2^64") : std::to_string(cells)) +
+          " cells, more than pgm's limit of " + std::to_string(max_table_cells) +
+          " (docs/limits.md): fit it without --missing em, or with fewer parents");
+    }
   }
 
   [[nodiscard]] bool family_observed(std::span<const std::uint32_t> values, std::size_t node) const {

@@ -9,16 +9,15 @@ namespace pgm {
 
 PGM_DECL double family_loglik(const count_table& counts) {
   double total = 0.0;
-  for (std::size_t u = 0; u < counts.configurations(); ++u) {
-    const auto column = counts.column(config_index(static_cast<config_index::rep>(u)));
+  counts.for_each_column([&](std::size_t, std::span<const count_table::count_type> column) {
     count_table::count_type n_u = 0;
     for (auto m : column) n_u += m;
-    if (n_u == 0) continue;
+    if (n_u == 0) return;
     const double log_n_u = std::log(static_cast<double>(n_u));
     for (auto m : column) {
       if (m > 0) total += static_cast<double>(m) * (std::log(static_cast<double>(m)) - log_n_u);
     }
-  }
+  });
   return total;
 }
 
