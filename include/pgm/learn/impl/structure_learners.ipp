@@ -2,8 +2,6 @@
 // The definitions of pgm/learn/structure_learners.hpp: inline in a header-only build, compiled
 // once into libpgm under PGM_SEPARATE_COMPILATION (pgm/core/compilation.hpp).
 
-#include <limits>
-
 #include "pgm/core/error.hpp"
 #include "pgm/learn/independence_test_registry.hpp"
 #include "pgm/learn/orientation.hpp"
