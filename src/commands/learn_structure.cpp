@@ -5,6 +5,7 @@
 
 #include "pgm/learn/learn_structure.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <iostream>
 #include <limits>
@@ -230,7 +231,10 @@ structure_learner chosen_learner(const learn_structure_arguments& args) {
 std::string learners_declaring(const std::string& key) {
   std::vector<std::string> names;
   for (const auto& name : structure_learners().names()) {
-    if (option_values(structure_learners().find(name)->options).declares(key)) names.push_back(name);
+    const auto options = structure_learners().find(name)->options;
+    if (std::any_of(options.begin(), options.end(), [&](const auto& option) { return option.name == key; })) {
+      names.push_back(name);
+    }
   }
   const auto last = names.back();
   names.pop_back();

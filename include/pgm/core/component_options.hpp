@@ -66,10 +66,6 @@ struct option_declaration {
     maximum_included = true;
     return std::move(*this);
   }
-  option_declaration or_unlimited() && {
-    unlimited_allowed = true;
-    return std::move(*this);
-  }
   option_declaration less_than(double bound) && {
     maximum = bound;
     maximum_included = false;
