@@ -24,6 +24,7 @@
 #include "pgm/learn/network_score.hpp"
 #include "pgm/learn/orientation.hpp"
 #include "pgm/learn/parameter_prior.hpp"
+#include "pgm/learn/parameter_prior_registry.hpp"
 #include "pgm/learn/pc.hpp"
 #include "pgm/learn/score.hpp"
 #include "pgm/learn/score_registry.hpp"

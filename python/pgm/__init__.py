@@ -405,14 +405,14 @@ def fit(
     data,
     edges,
     estimator="mle",
-    prior=None,
-    ess=None,
+    prior="bdeu",
+    ess=1.0,
     prior_model=None,
     strategy=None,
     map=None,
     w_prior=None,
     *,
-    alpha=None,
+    alpha=1.0,
     intervals=None,
     empty="uniform",
     success=None,
@@ -432,8 +432,9 @@ def fit(
 
     data: a DataFrame whose columns named by the edges hold states (integer, string,
     categorical). edges: (parent, child) pairs or "a->b,c->b". estimator: "mle" or "bayes";
-    prior: "k2", "bdeu" (default for bayes) or "dirichlet", with `ess` (bdeu) or `alpha`
-    (dirichlet). prior_model: a Network of a related task whose tables become priors by
+    prior: "bdeu", "dirichlet", "k2", "none" or a registered prior; NAME[KEY=VALUE,...] sets
+    its options, as "dirichlet[alpha=2]"; `ess` (bdeu's) and `alpha` (dirichlet's) set one when
+    they differ from their defaults (the library's). prior_model: a Network of a related task whose tables become priors by
     `strategy` ("minimal", the default, "direct", "cross" or a registered one) through the
     correspondence `map` ("onTop2=onTop1,xOff2~xOff1" or "auto"), weighted by `w_prior` (a
     number, 5 by default, or "auto"). intervals: the interval edges the columns' codes stand
@@ -487,8 +488,7 @@ def fit(
         pairs,
         _text(estimator, "estimator"),
         _text(prior, "prior"),
-        None if alpha is None else _real(alpha, "alpha"),
-        None if ess is None else _real(ess, "ess"),
+        _prior_settings(alpha=_real(alpha, "alpha"), ess=_real(ess, "ess")),
         _text(empty, "empty"),
         _threads(threads),
         interval_edges,
@@ -762,6 +762,14 @@ def learn_structure(
         "" if map is None else _text(map, "map"),
         _real(prior_weight, "prior_weight"),
     )
+
+
+def _prior_settings(**given):
+    """fit's keyword arguments that set an option of the prior: those that differ from their
+    defaults, as (keyword, option, value)."""
+    defaults = inspect.signature(fit).parameters
+    return [(keyword, keyword, _option_text(value)) for keyword, value in given.items()
+            if value != defaults[keyword].default]
 
 
 # learn_structure's keyword arguments named otherwise than the learners' options they set.

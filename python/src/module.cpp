@@ -383,7 +383,7 @@ edge_pairs learn_frame(const py::list& columns, const learn_arguments& args) {
   std::vector<py::array> keep;
   const auto buffers = read_column_buffers(columns, keep);
   const py::gil_scoped_release release;
-  std::vector<learner_setting> settings;
+  std::vector<component_setting> settings;
   for (const auto& [keyword, key, value] : args.settings) settings.push_back({keyword, key, value});
   const auto learner = make_structure_learner(args.algorithm, settings);
   structure_context context;
@@ -405,12 +405,13 @@ edge_pairs learn_frame(const py::list& columns, const learn_arguments& args) {
   return to_pairs(learn_structure(data, learner, context).edges);
 }
 
-/// Each learner's declared options, as "name[key=value,...]", and the defaults of the options
-/// Python's keyword arguments set: what its signature must show.
-py::dict learner_defaults() {
+/// The declared defaults of the options a registry's components declare, {option: default}:
+/// what the signatures of Python's keyword arguments that set them must show.
+template <class Product>
+py::dict declared_defaults(const component_registry<Product>& registry) {
   py::dict defaults;
-  for (const auto& name : structure_learners().names()) {
-    const auto entry = structure_learners().find(name).value();
+  for (const auto& name : registry.names()) {
+    const auto entry = registry.find(name).value();
     for (const auto& option : entry.options) defaults[py::str(option.name)] = option.default_text;
   }
   return defaults;
@@ -608,6 +609,7 @@ PYBIND11_MODULE(_core, m) {
   m.def("ci_test_listing", [] { return pgm::independence_tests().listing(); });
   m.attr("default_score") = pgm::family_score().name();
   m.attr("default_learner") = std::string(pgm::default_structure_learner);
+  m.attr("default_prior") = std::string(pgm::default_parameter_prior);
   m.def("score_listing", [] { return pgm::scores().listing(); });
   m.attr("missing_policies") = pgm::known_missing_policies();
 
@@ -662,18 +664,20 @@ PYBIND11_MODULE(_core, m) {
   m.def(
       "fit",
       [](const py::list& columns, const std::vector<std::string>& available, const edge_pairs& edges,
-         const std::string& estimator, const std::optional<std::string>& prior, std::optional<double> alpha,
-         std::optional<double> ess, const std::string& empty, unsigned threads,
-         const std::optional<edges_by_name>& intervals, const std::optional<std::string>& intervals_file,
-         const network_handle* prior_model, const std::string& strategy, const std::string& map,
-         std::optional<double> w_prior, const std::string& success, const std::string& match,
-         const std::optional<em_arguments>& em,
+         const std::string& estimator, const std::string& prior,
+         const std::vector<std::tuple<std::string, std::string, std::string>>& prior_settings, const std::string& empty,
+         unsigned threads, const std::optional<edges_by_name>& intervals,
+         const std::optional<std::string>& intervals_file, const network_handle* prior_model,
+         const std::string& strategy, const std::string& map, std::optional<double> w_prior, const std::string& success,
+         const std::string& match, const std::optional<em_arguments>& em,
          const std::vector<std::pair<std::string, std::vector<std::string>>>& latent,
          const std::vector<std::pair<std::string, std::vector<std::string>>>& named_states, bool keep_counts) {
         fit_arguments args;
         args.keep_counts = keep_counts;
         args.states = named_states;
-        args.estimator = {estimator, prior.value_or(""), alpha, ess};
+        args.estimator = {estimator, prior, {}};
+        for (const auto& [keyword, key, value] : prior_settings)
+          args.estimator.settings.push_back({keyword, key, value});
         args.empty = empty;
         args.threads = threads;
         args.intervals = intervals;
@@ -689,10 +693,9 @@ PYBIND11_MODULE(_core, m) {
         return fit_frame(columns, available, edges, args);
       },
       py::arg("columns"), py::arg("available"), py::arg("edges"), py::arg("estimator"), py::arg("prior"),
-      py::arg("alpha"), py::arg("ess"), py::arg("empty"), py::arg("threads"), py::arg("intervals"),
-      py::arg("intervals_file"), py::arg("prior_model").none(true), py::arg("strategy"), py::arg("map"),
-      py::arg("w_prior"), py::arg("success"), py::arg("match"), py::arg("em").none(true), py::arg("latent"),
-      py::arg("states"), py::arg("keep_counts"));
+      py::arg("prior_settings"), py::arg("empty"), py::arg("threads"), py::arg("intervals"), py::arg("intervals_file"),
+      py::arg("prior_model").none(true), py::arg("strategy"), py::arg("map"), py::arg("w_prior"), py::arg("success"),
+      py::arg("match"), py::arg("em").none(true), py::arg("latent"), py::arg("states"), py::arg("keep_counts"));
   m.def("update", &update_frame);
 
   add_inference(m);
@@ -709,7 +712,9 @@ PYBIND11_MODULE(_core, m) {
           return learn_frame(
               columns, {algorithm, settings, tiers, forbid, require, threads, start, prior_edges, map, prior_weight});
         });
-  m.def("learner_defaults", &learner_defaults);
+  m.def("learner_defaults", [] { return declared_defaults(pgm::structure_learners()); });
+  m.def("prior_defaults", [] { return declared_defaults(pgm::parameter_priors()); });
+  m.def("prior_listing", [] { return pgm::parameter_priors().listing(); });
   m.def("learner_listing", [] { return pgm::structure_learners().listing(); });
   m.def("score", &score_frame);
   m.def("discretize", &discretize_frame);

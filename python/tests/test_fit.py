@@ -1,6 +1,7 @@
 """pgm.fit: every estimator and prior transfer of `pgm fit`, with tables equal to the program's to
 the last bit on the same data."""
 
+import inspect
 import re
 
 import numpy as np
@@ -125,11 +126,15 @@ def test_intervals_from_an_edges_file_as_the_program_takes_them(program, tasks):
 @pytest.mark.parametrize(
     "kwargs, message",
     [
-        ({"estimator": "mle", "prior": "k2"}, "prior, alpha and ess apply to the bayes estimator"),
+        ({"estimator": "mle", "prior": "k2"}, "a prior and its options apply to the bayes estimator"),
+        ({"estimator": "mle", "alpha": 2}, "a prior and its options apply to the bayes estimator"),
         ({"estimator": "bogus"}, "unknown estimator 'bogus' (known: mle, bayes)"),
-        ({"estimator": "bayes", "prior": "k3"}, "unknown prior 'k3' (known: dirichlet, k2, bdeu)"),
-        ({"estimator": "bayes", "prior": "k2", "ess": 2}, "ess applies to the bdeu prior"),
-        ({"estimator": "bayes", "prior": "dirichlet", "alpha": -1}, "alpha must be a finite number ≥ 0, got -1"),
+        ({"estimator": "bayes", "prior": "k3"}, "unknown prior 'k3' (known: bdeu, dirichlet, k2, none)"),
+        ({"estimator": "bayes", "prior": "k2", "ess": 2}, "ess: sets the option ess, which the prior k2 has not"),
+        ({"estimator": "bayes", "prior": "dirichlet", "alpha": -1},
+         "alpha: option alpha of the prior 'dirichlet' must be a number >= 0, got '-1.0'"),
+        ({"estimator": "bayes", "prior": "dirichlet[alpha=2]", "alpha": 3},
+         "alpha: sets alpha, which 'dirichlet[alpha=2]' sets already; give it once"),
         ({"map": MAP}, "strategy, map, w_prior, success and match apply with prior_model"),
         ({"empty": "sometimes"}, "unknown empty-configuration rule 'sometimes' (known: uniform, fail)"),
     ],
@@ -420,3 +425,27 @@ def test_missing_and_w_prior_suggest_the_choice_meant():
     prior = pgm.fit(frame, "a->b")
     with pytest.raises(pgm.Error, match=r"^w_prior must be a number >= 0 or 'auto', got 'atuo'; did you mean 'auto'\?$"):
         pgm.fit(frame, "a->b", prior_model=prior, map="a=a,b=b", w_prior="atuo")
+
+
+def test_the_priors_options_have_one_default_everywhere(program):
+    """prior, alpha and ess show the defaults the registry declares, and so does `pgm fit --help`."""
+    declared = pgm._core.prior_defaults()
+    parameters = inspect.signature(pgm.fit).parameters
+    assert parameters["prior"].default == pgm._core.default_prior == "bdeu"
+    shown = program.run("fit", "--help").stdout
+    assert "--prior TEXT:NAME[KEY=VALUE,...]=bdeu\n" in shown
+    for keyword in ("alpha", "ess"):
+        assert parameters[keyword].default == float(declared[keyword]), keyword
+        line = next(line for line in shown.splitlines() if line.strip().startswith(f"--{keyword} "))
+        assert f"--{keyword} FLOAT:a number >= 0={declared[keyword]}" in line, line
+    assert pgm._core.prior_listing() == ["bdeu[ess=1]", "dirichlet[alpha=1]", "k2", "none"]
+
+
+def test_a_prior_is_chosen_by_its_text_or_by_its_keyword(tasks):
+    _, two, _ = tasks
+    by_text = pgm.fit(two, TWO_EDGES, estimator="bayes", prior="dirichlet[alpha=2.5]")
+    by_keyword = pgm.fit(two, TWO_EDGES, estimator="bayes", prior="dirichlet", alpha=2.5)
+    assert_same_network(by_text, by_keyword)
+    bdeu = pgm.fit(two, TWO_EDGES, estimator="bayes", ess=4)
+    assert_same_network(bdeu, pgm.fit(two, TWO_EDGES, estimator="bayes", prior="bdeu[ess=4]"))
+    assert not bdeu.cpt("onTop2").equals(by_text.cpt("onTop2"))

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/common.hpp"
+#include "cli/component_options.hpp"
 #include "cli/transfer_arguments.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/process_group.hpp"
@@ -17,6 +18,7 @@
 #include "pgm/learn/estimator_choice.hpp"
 #include "pgm/learn/family_source.hpp"
 #include "pgm/learn/fit_pipeline.hpp"
+#include "pgm/learn/parameter_prior_registry.hpp"
 #include "pgm/transfer/transfer_settings.hpp"
 
 namespace pgm::cli {
@@ -27,9 +29,10 @@ struct fit_arguments {
   std::string edges;
   std::string model;
   std::string estimator = "mle";
-  std::string prior;
-  std::optional<double> alpha;
-  std::optional<double> ess;
+  std::string prior = std::string(default_parameter_prior);
+  // --alpha and --ess: shorthands for an option of the prior, read with given_value.
+  CLI::Option* alpha = nullptr;
+  CLI::Option* ess = nullptr;
   std::string empty = "uniform";
   std::string discretization_file;
   std::string intervals_file;
@@ -108,7 +111,10 @@ void run_fit(const fit_arguments& args) {
     throw error("--data -: standard input reaches one process only; under mpirun give a file every process can read");
   }
   fit_request request;
-  request.options.prior = prior_of({args.estimator, args.prior, args.alpha, args.ess});
+  request.options.prior =
+      prior_of({args.estimator,
+                args.prior,
+                {{"--alpha", "alpha", given_value(*args.alpha)}, {"--ess", "ess", given_value(*args.ess)}}});
   request.options.estimation.empty = parse_empty_configuration(args.empty);
   request.options.counting.threads = args.threads;
   request.missing = missing_of(args.missing);
@@ -199,12 +205,11 @@ void add_fit_command(CLI::App& app) {
   cmd->add_option("--estimator", args->estimator, "mle (eq. 3) or bayes (eq. 6)")
       ->check(CLI::IsMember(known_estimators()))
       ->capture_default_str();
-  cmd->add_option("--prior", args->prior, "Prior of the Bayesian estimator: dirichlet, k2 or bdeu (default)")
-      ->check(CLI::IsMember(known_priors()));
-  cmd->add_option("--alpha", args->alpha, "Pseudo-count per cell of the dirichlet prior (default 1)")
-      ->check(non_negative_number());
-  cmd->add_option("--ess", args->ess, "Equivalent sample size of the bdeu prior (default 1)")
-      ->check(non_negative_number());
+  add_component_option(*cmd, "--prior", args->prior, "The Bayesian estimator's prior", parameter_priors());
+  args->alpha = add_declared_option(*cmd, "--alpha", declared_option(parameter_priors(), "dirichlet", "alpha"),
+                                    "Shorthand for --prior dirichlet[alpha=N]: the pseudo-count of every cell");
+  args->ess = add_declared_option(*cmd, "--ess", declared_option(parameter_priors(), "bdeu", "ess"),
+                                  "Shorthand for --prior bdeu[ess=N]: the equivalent sample size");
   cmd->add_option("--empty", args->empty, "A parent configuration with no data: uniform (1/J) or fail")
       ->check(CLI::IsMember(known_empty_configurations()))
       ->capture_default_str();

@@ -198,7 +198,7 @@ void write_learned(const learn_structure_arguments& args, const structure_learne
 /// The learner the arguments choose: --algorithm with each option given that sets one of its
 /// options, or of the PC that --start pc starts from.
 structure_learner chosen_learner(const learn_structure_arguments& args) {
-  std::vector<learner_setting> settings;
+  std::vector<component_setting> settings;
   if (args.start == "pc") settings.push_back({"--start", "start", "pc"});
   if (args.test->count() > 0 || args.correction || args.min_rows_per_cell) {
     const auto rows =

@@ -129,11 +129,11 @@ probability ( a ) { table 0.2, 0.8; }
   const auto data = file("d.csv", "a,b\n0,1\n1,0\n0,0\n1,1\n");
   const auto fit = "fit --data " + data.string() + " --edges \"a->b\" --estimator bayes --prior dirichlet --out " +
                    path("f.bif").string() + " --alpha ";
-  expect_failure(fit + "nan", "--alpha: expected a finite number ≥ 0, got 'nan' (NaN is not accepted)", path("f.bif"));
+  expect_failure(fit + "nan", "--alpha: must be a number >= 0, got 'nan' (NaN is not accepted)", path("f.bif"));
   expect_failure(fit + "1e400", "got '1e400' (out of the range of a double", path("f.bif"));
   expect_failure(fit + "0x1p-3", "got '0x1p-3' (hexadecimal is not accepted", path("f.bif"));
   expect_failure(fit + "1,5", "got '1,5' (a comma is no decimal mark: write 1.5)", path("f.bif"));
-  expect_failure(fit + "-1", "expected a finite number ≥ 0, got -1", path("f.bif"));
+  expect_failure(fit + "-1", "--alpha: must be a number >= 0, got '-1'", path("f.bif"));
   const auto minus_zero = run(fit + "-0");  // -0 is 0: the maximum-likelihood table
   ASSERT_EQ(minus_zero.code, 0) << minus_zero.err;
   EXPECT_DOUBLE_EQ(read_network(path("f.bif")).table("b").probability("1", {"0"}), 0.5);

@@ -30,7 +30,7 @@ expect(task_file "tasks: drop-mug\n" "drop-mug: success 'inside', the robot cont
        "a broken file: typo.json: /variables/0/kind: expected \"continuous\", \"categorical\" or \"outcome\"")
 expect(scenario_file "Glass-To-Mug, Mean-Difference over 3 repetitions\n" "\\|D\\|\tmle\tdirect w=20\n"
        "\n0\t${number}\t${number}\n" "\n1000\t${number}\t${number}\n")
-expect(parameter_prior "mle: P\\(inside=1 \\| centre\\) = ${number}, P\\(inside=1 \\| corner\\) = ${number}\n"
+expect(parameter_prior "none: P\\(inside=1 \\| centre\\) = ${number}, P\\(inside=1 \\| corner\\) = ${number}\n"
        "centred: P\\(inside=1 \\| centre\\) = ${number}")
 expect(inference_engine "engines: auto bp enumerate gibbs jt lw ve\n"
        "enumerate: P\\(rain=yes \\| grass=wet\\) = 0.413086, P\\(grass=wet\\) = 0.43618\n"

@@ -203,7 +203,7 @@ static_assert(ParameterPrior<favour_last_state>);
 static_assert(!ParameterPrior<no_name>);
 static_assert(!ParameterPrior<mutating_call>);
 static_assert(!ParameterPrior<wrong_result>);
-static_assert(!ParameterPrior<k2_prior>);  // built-ins are alternatives of parameter_prior, not models
+static_assert(ParameterPrior<k2_prior> && ParameterPrior<weighted_prior>);  // the built-ins are models too
 static_assert(std::is_convertible_v<favour_last_state, parameter_prior>);
 
 TEST(parameter_prior_test, a_users_prior_estimates_as_its_pseudo_counts_do) {

@@ -201,7 +201,7 @@ TEST(sparse_table_test, estimates_from_sparse_counts_follow_the_rule_by_hand) {
   EXPECT_THAT([&] { static_cast<void>(estimate_mle(counts, {.empty = empty_configuration::fail})); },
               ThrowsMessage<data_error>(HasSubstr("no data for 'y' given p0=0")));
   EXPECT_THAT([&] { static_cast<void>(estimate(counts, pseudo_counts_prior{{1.0}})); },
-              ThrowsMessage<table_too_large>(HasSubstr("a prior given cell by cell gives a pseudo-count")));
+              ThrowsMessage<table_too_large>(HasSubstr("the prior 'pseudo-counts' gives a pseudo-count")));
 }
 
 TEST(sparse_table_test, eq8_with_a_sparse_prior_table) {

@@ -132,7 +132,7 @@ TEST(structure_learner_test, the_empty_graph_keeps_the_required_edges) {
 }
 
 TEST(structure_learner_test, settings_given_apart_go_to_the_learner_and_to_its_start) {
-  const auto learner = [](const char* text, std::vector<learner_setting> settings) {
+  const auto learner = [](const char* text, std::vector<component_setting> settings) {
     return make_structure_learner(text, settings).text();
   };
   EXPECT_EQ(learner("mmhc", {{"--alpha", "alpha", "0.05"}, {"--restarts", "restarts", std::nullopt}}),

@@ -1,5 +1,8 @@
 // A parameter prior of one's own: any type with a name() and the pseudo-counts of a family,
-// used wherever the built-in priors are (fit_options::prior, node_priors, estimate).
+// used wherever the built-in priors are (fit_options::prior, node_priors, estimate). Its options
+// declared and registered in one line, it is chosen by name as the built-in ones are:
+// make_parameter_prior("centred[scale=2]"), `pgm fit --prior` in a program that links it, and
+// saved statistics keep it by that name.
 //
 // "centred" encodes what one believes before any trial: the nearer the release offsets lie to
 // the centre, the likelier success. Each parent configuration gets `strength` pseudo-counts,
@@ -12,14 +15,23 @@
 #include <pgm/data/discretizer.hpp>
 #include <pgm/learn/fit.hpp>
 #include <pgm/learn/parameter_prior.hpp>
+#include <pgm/learn/parameter_prior_registry.hpp>
 #include <pgm/sim/simulator.hpp>
 #include <pgm/sim/task_file.hpp>
 
 namespace {
 
 struct centred_prior {
-  double strength = 10.0;  // pseudo-counts per parent configuration
-  double scale = 4.0;      // cm
+  double strength;  // pseudo-counts per parent configuration
+  double scale;     // cm
+
+  static std::vector<pgm::option_declaration> options() {
+    return {
+        pgm::number_option("strength", 10.0, "pseudo-counts per parent configuration").greater_than(0.0),
+        pgm::number_option("scale", 4.0, "distance from the centre, in cm, at which success is 1/e").greater_than(0.0)};
+  }
+  explicit centred_prior(const pgm::option_values& options)
+      : strength(options.number("strength")), scale(options.number("scale")) {}
 
   [[nodiscard]] static std::string_view name() { return "centred"; }
 
@@ -50,6 +62,7 @@ struct centred_prior {
 };
 
 static_assert(pgm::ParameterPrior<centred_prior>);
+const pgm::register_parameter_prior<centred_prior> registered("centred", "success likelier near the centre");
 
 }  // namespace
 
@@ -62,12 +75,10 @@ int main() {
     const auto structure = pgm::structure_from_data(data, task.structure);
 
     // Success at the centre (bin 1 of 3 for both offsets) and in a corner, in the largest mugs.
-    const std::vector<std::pair<std::string, pgm::parameter_prior>> priors{
-        {"mle", pgm::no_prior{}}, {"k2", pgm::k2_prior{}}, {"centred", centred_prior{}}};
-    for (const auto& [label, prior] : priors) {
-      const auto network = pgm::fit(structure, data, {.prior = prior});
+    for (const auto* text : {"none", "k2", "centred"}) {
+      const auto network = pgm::fit(structure, data, {.prior = pgm::make_parameter_prior(text)});
       const auto& table = network.table("inside");
-      std::cout << label << ": P(inside=1 | centre) = " << table.probability("1", {"1", "1", "2"})
+      std::cout << text << ": P(inside=1 | centre) = " << table.probability("1", {"1", "1", "2"})
                 << ", P(inside=1 | corner) = " << table.probability("1", {"0", "0", "2"}) << '\n';
     }
   } catch (const pgm::error& e) {

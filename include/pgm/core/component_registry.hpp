@@ -57,6 +57,14 @@ class chosen_function<Result(Arguments...)> {
   component_choice choice_;
 };
 
+/// An option given apart from a component's text, as the program's `--alpha 0.05` or Python's
+/// `alpha=0.05`: `label` names it in messages; no value, not given.
+struct component_setting {
+  std::string label;
+  std::string key;
+  std::optional<std::string> value;
+};
+
 template <class Product>
 class component_registry {
  public:
@@ -118,6 +126,21 @@ class component_registry {
     auto result = spec.name + "[" + settings + std::string(key) + "=" + std::string(value) + "]";
     static_cast<void>(choose(result));
     return result;
+  }
+
+  /// `text` with each given setting set on it. Throws model_error, after the setting's label,
+  /// for one that with_setting refuses.
+  [[nodiscard]] std::string with_settings(std::string_view text, const std::vector<component_setting>& settings) const {
+    std::string chosen(text);
+    for (const auto& setting : settings) {
+      if (!setting.value) continue;
+      try {
+        chosen = with_setting(chosen, setting.key, *setting.value);
+      } catch (const error& why) {
+        throw model_error(setting.label + ": " + why.what());
+      }
+    }
+    return chosen;
   }
 
   /// The component `text` chooses.

@@ -7,7 +7,6 @@
 // string").
 
 #include <algorithm>
-#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
@@ -36,7 +35,7 @@ class json_reader {
   /// likely meant to be and all of them: a misspelt optional key ("repetitons") would otherwise
   /// be ignored without a word.
   PGM_DECL void only_keys(const nlohmann::json& object, const std::string& path,
-                          std::initializer_list<std::string_view> known) const;
+                          const std::vector<std::string_view>& known) const;
   const nlohmann::json* optional_member(const nlohmann::json& object, const char* key) const {
     const auto it = object.find(key);
     return it == object.end() ? nullptr : &*it;

@@ -24,6 +24,7 @@
 #include "pgm/core/network_structure.hpp"
 #include "pgm/detail/json_reader.hpp"
 #include "pgm/learn/fit_statistics.hpp"
+#include "pgm/learn/parameter_prior_registry.hpp"
 
 namespace pgm {
 namespace detail {
@@ -31,7 +32,7 @@ namespace detail {
 /// Values laid out configuration by configuration, `width` to a row.
 [[nodiscard]] PGM_DECL nlohmann::json rows_of(std::span<const double> values, std::size_t width);
 
-[[nodiscard]] PGM_DECL nlohmann::json prior_to_json(const parameter_prior& prior, std::size_t width);
+[[nodiscard]] PGM_DECL nlohmann::json prior_to_json(const parameter_prior& prior, const expected_count_table& family);
 
 /// `rows` read as one value per cell of `family`, each finite and >= 0.
 [[nodiscard]] PGM_DECL std::vector<double> cells_of(const json_reader& reader, const nlohmann::json& rows,

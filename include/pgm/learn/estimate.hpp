@@ -11,7 +11,6 @@
 #include <string>
 #include <string_view>
 #include <type_traits>
-#include <variant>
 #include <vector>
 
 #include "pgm/core/assert.hpp"
@@ -198,9 +197,9 @@ void check_shape(const basic_count_table<Count>& counts, const cpt<double>& prio
 /// Eq. 8 where the counts or the prior table f are sparse: θ = (w·f + M)/(w + M) for every
 /// configuration with rows or a column of f of its own, f's rest for all the others.
 template <class Count>
-cpt<double> sparse_weighted_estimate(const basic_count_table<Count>& counts, const weighted_prior& p,
-                                     const estimate_options& options) {
-  const auto& f = p.prior;
+cpt<double> sparse_weighted_estimate(const basic_count_table<Count>& counts,
+                                     const family_pseudo_counts::weighted_table& p, const estimate_options& options) {
+  const auto& f = p.table;
   const double w = p.weight;
   const std::size_t j = counts.child_cardinality();
   const weighted_pseudo_counts weighted{&f, w};
@@ -261,53 +260,35 @@ template <class Count>
 template <class Count>
 [[nodiscard]] cpt<double> estimate(const basic_count_table<Count>& counts, const parameter_prior& prior,
                                    const estimate_options& options = {}) {
-  const double j = static_cast<double>(counts.child_cardinality());
-  return std::visit(
-      [&](const auto& p) -> cpt<double> {
-        using prior_type = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<prior_type, no_prior>) {
-          return estimate_mle(counts, options);
-        } else if constexpr (std::is_same_v<prior_type, dirichlet_prior> || std::is_same_v<prior_type, k2_prior> ||
-                             std::is_same_v<prior_type, bdeu_prior>) {
-          double alpha = 1.0;
-          if constexpr (std::is_same_v<prior_type, dirichlet_prior>) alpha = p.alpha;
-          if constexpr (std::is_same_v<prior_type, bdeu_prior>) {
-            detail::check_pseudo_count(p.equivalent_sample_size, "the equivalent sample size");
-            alpha = p.equivalent_sample_size / (j * static_cast<double>(counts.configurations()));
-          }
-          detail::check_pseudo_count(alpha, "the Dirichlet pseudo-count alpha");
-          if (detail::stores_sparse(counts, options)) return detail::sparse_dirichlet_estimate(counts, alpha, options);
-          return detail::table_of(
-              counts, detail::dirichlet_posterior_mean(counts, uniform_pseudo_counts{alpha, counts.child_cardinality()},
-                                                       options));
-        } else if constexpr (std::is_same_v<prior_type, pseudo_counts_prior>) {
-          detail::check_dense(counts, "a prior given cell by cell");
-          return detail::estimate_from_pseudo_counts(counts, p.alpha, "", options);
-        } else if constexpr (std::is_same_v<prior_type, any_parameter_prior>) {
-          detail::check_dense(counts, "the prior '" + std::string(p.name()) + "'");
-          return detail::estimate_from_pseudo_counts(counts, p.pseudo_counts(counts.child(), counts.parents()),
-                                                     "the prior '" + std::string(p.name()) + "': ", options);
-        } else {
-          static_assert(std::is_same_v<prior_type, weighted_prior>);
-          detail::check_shape(counts, p.prior);
-          detail::check_pseudo_count(p.weight, "the prior weight w");
-          if (counts.is_sparse() || p.prior.is_sparse()) return detail::sparse_weighted_estimate(counts, p, options);
-          const auto f = p.prior.values();
-          const double w = p.weight;
-          auto values = detail::dirichlet_posterior_mean(counts, weighted_pseudo_counts{&p.prior, w}, options);
-          // Where M[u] = 0 the formula is f itself; (w·f)/w can differ from f in the last bit.
-          const auto cells = counts.child_cardinality();
-          for (std::size_t u = 0; u < counts.configurations(); ++u) {
-            if (w > 0.0 && counts.total(config_index(u)) == 0) {
-              std::copy(f.begin() + static_cast<std::ptrdiff_t>(u * cells),
-                        f.begin() + static_cast<std::ptrdiff_t>((u + 1) * cells),
-                        values.begin() + static_cast<std::ptrdiff_t>(u * cells));
-            }
-          }
-          return detail::table_of(counts, std::move(values));
-        }
-      },
-      prior);
+  const auto alpha = prior.pseudo_counts(counts.child(), counts.parents());
+  if (const auto* uniform = alpha.uniform_alpha()) {
+    detail::check_pseudo_count(*uniform, "the Dirichlet pseudo-count alpha");
+    if (detail::stores_sparse(counts, options)) return detail::sparse_dirichlet_estimate(counts, *uniform, options);
+    return detail::table_of(counts, detail::dirichlet_posterior_mean(
+                                        counts, uniform_pseudo_counts{*uniform, counts.child_cardinality()}, options));
+  }
+  if (const auto* weighted = alpha.weighted()) {
+    const auto& f = weighted->table;
+    const double w = weighted->weight;
+    detail::check_shape(counts, f);
+    detail::check_pseudo_count(w, "the prior weight w");
+    if (counts.is_sparse() || f.is_sparse()) return detail::sparse_weighted_estimate(counts, *weighted, options);
+    auto values = detail::dirichlet_posterior_mean(counts, weighted_pseudo_counts{&f, w}, options);
+    // Where M[u] = 0 the formula is f itself; (w·f)/w can differ from f in the last bit.
+    const auto prior_values = f.values();
+    const auto cells = counts.child_cardinality();
+    for (std::size_t u = 0; u < counts.configurations(); ++u) {
+      if (w > 0.0 && counts.total(config_index(u)) == 0) {
+        std::copy(prior_values.begin() + static_cast<std::ptrdiff_t>(u * cells),
+                  prior_values.begin() + static_cast<std::ptrdiff_t>((u + 1) * cells),
+                  values.begin() + static_cast<std::ptrdiff_t>(u * cells));
+      }
+    }
+    return detail::table_of(counts, std::move(values));
+  }
+  const auto who = "the prior '" + std::string(prior.name()) + "'";
+  detail::check_dense(counts, who);
+  return detail::estimate_from_pseudo_counts(counts, *alpha.cells(), who + ": ", options);
 }
 
 }  // namespace pgm

@@ -31,18 +31,12 @@ struct fit_statistics {
   double rows = 0.0;
   /// Each node's counts, in node order, over the network's variables.
   std::vector<expected_count_table> counts;
-  /// The prior each node's table was estimated with, in node order. A user's prior
-  /// (any_parameter_prior) is kept as its pseudo-counts.
+  /// The prior each node's table was estimated with, in node order.
   std::vector<parameter_prior> priors;
   estimate_options estimation;
 };
 
 namespace detail {
-
-/// A prior as it can be kept in a file: a user's type-erased prior becomes its pseudo-counts,
-/// which estimate() treats alike.
-[[nodiscard]] PGM_DECL parameter_prior storable_prior(const parameter_prior& prior, const variable& child,
-                                                      const std::vector<variable>& parents);
 
 template <class Count>
 [[nodiscard]] expected_count_table as_expected(const basic_count_table<Count>& counts) {
@@ -74,7 +68,7 @@ template <class Count>
     const auto own = options.node_priors.find(child.name());
     const auto& prior = own != options.node_priors.end() ? own->second : options.prior;
     result.counts.push_back(detail::as_expected(counts[i]));
-    result.priors.push_back(detail::storable_prior(prior, child, structure.parent_variables(node)));
+    result.priors.push_back(prior);
   }
   return result;
 }

@@ -39,21 +39,13 @@ inline constexpr std::string_view default_structure_learner = "pc";
   return structure_learners().make(text);
 }
 
-/// An option given apart from the learner's text, as the program's `--alpha 0.05` or Python's
-/// `alpha=0.05`: `label` names it in messages; no value, not given.
-struct learner_setting {
-  std::string label;
-  std::string key;
-  std::optional<std::string> value;
-};
-
 /// The learner `text` chooses with each given setting set on it, as the program and Python
 /// read their options: a setting goes to the learner that `start` chooses when that one
 /// declares it ("--start pc --alpha 0.05" sets pc's alpha), and to the learner itself when it
 /// declares it (mmhc's alpha too). Throws model_error, after the setting's label, for a setting
 /// neither declares, that the text sets already, or whose value fails its check.
 [[nodiscard]] PGM_DECL structure_learner make_structure_learner(std::string_view text,
-                                                                const std::vector<learner_setting>& settings);
+                                                                const std::vector<component_setting>& settings);
 
 /// Registers a learner type when the program starts:
 /// `static const register_structure_learner<T> r("name", "…");`.

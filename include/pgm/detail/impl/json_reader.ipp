@@ -15,7 +15,7 @@ PGM_DECL const nlohmann::json& json_reader::member(const nlohmann::json& object,
 }
 
 PGM_DECL void json_reader::only_keys(const nlohmann::json& object, const std::string& path,
-                                     std::initializer_list<std::string_view> known) const {
+                                     const std::vector<std::string_view>& known) const {
   if (!object.is_object()) return;
   for (const auto& item : object.items()) {
     const auto& key = item.key();

@@ -15,27 +15,23 @@ PGM_DECL nlohmann::json rows_of(std::span<const double> values, std::size_t widt
   return rows;
 }
 
-PGM_DECL nlohmann::json prior_to_json(const parameter_prior& prior, std::size_t width) {
-  return std::visit(
-      [&](const auto& p) -> nlohmann::json {
-        using prior_type = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<prior_type, no_prior>) {
-          return {{"kind", "none"}};
-        } else if constexpr (std::is_same_v<prior_type, dirichlet_prior>) {
-          return {{"kind", "dirichlet"}, {"alpha", p.alpha}};
-        } else if constexpr (std::is_same_v<prior_type, k2_prior>) {
-          return {{"kind", "k2"}};
-        } else if constexpr (std::is_same_v<prior_type, bdeu_prior>) {
-          return {{"kind", "bdeu"}, {"ess", p.equivalent_sample_size}};
-        } else if constexpr (std::is_same_v<prior_type, pseudo_counts_prior>) {
-          return {{"kind", "pseudo-counts"}, {"alpha", rows_of(p.alpha, width)}};
-        } else if constexpr (std::is_same_v<prior_type, weighted_prior>) {
-          return {{"kind", "weighted"}, {"w", p.weight}, {"table", rows_of(p.prior.values(), width)}};
-        } else {
-          throw model_error("a user's prior is kept as its pseudo-counts: make the statistics with statistics_of");
-        }
-      },
-      prior);
+PGM_DECL nlohmann::json prior_to_json(const parameter_prior& prior, const expected_count_table& family) {
+  if (const auto choice = prior.choice()) {
+    nlohmann::json written{{"kind", choice->name}};
+    const auto& declared = choice->options.declarations();
+    for (std::size_t i = 0; i < declared.size(); ++i) {
+      std::visit([&](const auto& value) { written[declared[i].name] = value; }, choice->options.values()[i]);
+    }
+    return written;
+  }
+  // Made otherwise: kept as its pseudo-counts.
+  const auto width = family.child_cardinality();
+  const auto alpha = prior.pseudo_counts(family.child(), family.parents());
+  if (const auto* uniform = alpha.uniform_alpha()) return {{"kind", "dirichlet"}, {"alpha", *uniform}};
+  if (const auto* weighted = alpha.weighted()) {
+    return {{"kind", "weighted"}, {"w", weighted->weight}, {"table", rows_of(weighted->table.values(), width)}};
+  }
+  return {{"kind", "pseudo-counts"}, {"alpha", rows_of(*alpha.cells(), width)}};
 }
 
 PGM_DECL std::vector<double> cells_of(const json_reader& reader, const nlohmann::json& rows, const std::string& path,
@@ -67,27 +63,6 @@ PGM_DECL std::vector<double> cells_of(const json_reader& reader, const nlohmann:
 PGM_DECL parameter_prior prior_from_json(const json_reader& reader, const nlohmann::json& value,
                                          const std::string& path, const expected_count_table& family) {
   const auto kind = reader.string(reader.member(value, path, "kind"), path + "/kind");
-  const auto non_negative = [&](const char* key) {
-    const double x = reader.number(reader.member(value, path, key), path + "/" + key);
-    if (!std::isfinite(x) || x < 0.0) reader.fail(path + "/" + key, "expected a finite number >= 0");
-    return x;
-  };
-  if (kind == "none") {
-    reader.only_keys(value, path, {"kind"});
-    return no_prior{};
-  }
-  if (kind == "dirichlet") {
-    reader.only_keys(value, path, {"kind", "alpha"});
-    return dirichlet_prior{non_negative("alpha")};
-  }
-  if (kind == "k2") {
-    reader.only_keys(value, path, {"kind"});
-    return k2_prior{};
-  }
-  if (kind == "bdeu") {
-    reader.only_keys(value, path, {"kind", "ess"});
-    return bdeu_prior{non_negative("ess")};
-  }
   if (kind == "pseudo-counts") {
     reader.only_keys(value, path, {"kind", "alpha"});
     return pseudo_counts_prior{cells_of(reader, reader.member(value, path, "alpha"), path + "/alpha", family)};
@@ -95,11 +70,41 @@ PGM_DECL parameter_prior prior_from_json(const json_reader& reader, const nlohma
   if (kind == "weighted") {
     reader.only_keys(value, path, {"kind", "w", "table"});
     auto table = cells_of(reader, reader.member(value, path, "table"), path + "/table", family);
-    return weighted_prior{cpt<double>(family.child(), family.parents(), std::move(table)), non_negative("w")};
+    const double w = reader.number(reader.member(value, path, "w"), path + "/w");
+    if (!std::isfinite(w) || w < 0.0) reader.fail(path + "/w", "expected a finite number >= 0");
+    return weighted_prior{cpt<double>(family.child(), family.parents(), std::move(table)), w};
   }
-  reader.fail(path + "/kind", "unknown prior '" + kind +
-                                  "' (the priors: none, dirichlet, k2, bdeu, pseudo-counts, "
-                                  "weighted)");
+  // A prior of the registry: its options are the other keys.
+  const auto& registry = parameter_priors();
+  const auto entry = registry.find(kind);
+  if (!entry) {
+    auto known = registry.names();
+    known.insert(known.end(), {"pseudo-counts", "weighted"});
+    reader.fail(path + "/kind", unknown_name("prior", kind, known).what());
+  }
+  std::vector<std::string_view> keys{"kind"};
+  std::string settings;
+  for (const auto& option : entry->options) {
+    keys.push_back(option.name);
+    if (!value.contains(option.name)) continue;
+    const auto& given = value.at(option.name);
+    const auto key_path = path + "/" + option.name;
+    std::string text;
+    if (given.is_number_integer()) {
+      text = std::to_string(given.get<std::int64_t>());
+    } else if (given.is_number()) {
+      text = format_double(reader.number(given, key_path));
+    } else if (given.is_boolean()) {
+      text = given.get<bool>() ? "true" : "false";
+    } else {
+      text = reader.string(given, key_path);
+    }
+    const auto refusal = option_value_refusal(option, text);
+    if (!refusal.empty()) reader.fail(key_path, "the " + option.name + refusal);
+    settings += (settings.empty() ? "" : ",") + option.name + "=" + text;
+  }
+  reader.only_keys(value, path, keys);
+  return registry.make(settings.empty() ? kind : kind + "[" + settings + "]");
 }
 
 }  // namespace pgm::detail
@@ -113,7 +118,7 @@ PGM_DECL nlohmann::json to_json(const fit_statistics& statistics) {
     const auto width = counts.child_cardinality();
     families.push_back({{"variable", counts.child().name()},
                         {"counts", detail::rows_of(counts.counts(), width)},
-                        {"prior", detail::prior_to_json(statistics.priors[i], width)}});
+                        {"prior", detail::prior_to_json(statistics.priors[i], counts)}});
   }
   return {{"rows", statistics.rows},
           {"empty", std::string(to_string(statistics.estimation.empty))},

@@ -18,29 +18,7 @@ PGM_DECL std::vector<double> pseudo_counts_of(const parameter_prior& prior, cons
                                               const std::vector<variable>& parents) {
   std::size_t configurations = 1;
   for (const auto& p : parents) configurations *= p.cardinality();
-  const std::size_t cells = child.cardinality() * configurations;
-  return std::visit(
-      [&](const auto& p) -> std::vector<double> {
-        using prior_type = std::decay_t<decltype(p)>;
-        if constexpr (std::is_same_v<prior_type, no_prior>) {
-          return std::vector<double>(cells, 0.0);
-        } else if constexpr (std::is_same_v<prior_type, dirichlet_prior>) {
-          return std::vector<double>(cells, p.alpha);
-        } else if constexpr (std::is_same_v<prior_type, k2_prior>) {
-          return std::vector<double>(cells, 1.0);
-        } else if constexpr (std::is_same_v<prior_type, bdeu_prior>) {
-          return std::vector<double>(cells, p.equivalent_sample_size / static_cast<double>(cells));
-        } else if constexpr (std::is_same_v<prior_type, pseudo_counts_prior>) {
-          return p.alpha;
-        } else if constexpr (std::is_same_v<prior_type, weighted_prior>) {
-          std::vector<double> alpha(p.prior.values().begin(), p.prior.values().end());
-          for (auto& a : alpha) a *= p.weight;
-          return alpha;
-        } else {
-          return p.pseudo_counts(child, parents);
-        }
-      },
-      prior);
+  return prior.pseudo_counts(child, parents).spelled_out(child.cardinality() * configurations);
 }
 
 }  // namespace pgm

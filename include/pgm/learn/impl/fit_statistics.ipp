@@ -4,18 +4,6 @@
 
 #include "pgm/learn/fit_statistics.hpp"
 
-namespace pgm::detail {
-
-PGM_DECL parameter_prior storable_prior(const parameter_prior& prior, const variable& child,
-                                        const std::vector<variable>& parents) {
-  if (const auto* own = std::get_if<any_parameter_prior>(&prior)) {
-    return pseudo_counts_prior{own->pseudo_counts(child, parents)};
-  }
-  return prior;
-}
-
-}  // namespace pgm::detail
-
 namespace pgm {
 
 PGM_DECL bayesian_network estimate_network(const network_structure& structure, const fit_statistics& statistics) {

@@ -21,9 +21,10 @@ PGM_DECL structure_learner_registry& structure_learners() {
   return registry;
 }
 
-PGM_DECL structure_learner make_structure_learner(std::string_view text, const std::vector<learner_setting>& settings) {
+PGM_DECL structure_learner make_structure_learner(std::string_view text,
+                                                  const std::vector<component_setting>& settings) {
   const auto& registry = structure_learners();
-  const auto refused = [](const learner_setting& setting, const error& why) {
+  const auto refused = [](const component_setting& setting, const error& why) {
     return model_error(setting.label + ": " + why.what());
   };
   std::optional<std::string> start;
