@@ -118,6 +118,7 @@ int main(int argc, char** argv) {
   pgm::cli::add_solve_command(app);
   pgm::cli::add_prevent_command(app);
   pgm::cli::add_dsep_command(app);
+  pgm::cli::add_components_command(app);
   pgm::cli::add_check_command(app);
   pgm::cli::add_sample_command(app);
   pgm::cli::add_unroll_command(app);

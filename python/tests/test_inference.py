@@ -3,6 +3,7 @@ against each other on a published network, evidence set and retracted, soft evid
 probable explanation, the sampling engines' standard errors, the program's answers, and the
 errors for arguments of the wrong kind."""
 
+import inspect
 import json
 import math
 import os
@@ -135,6 +136,20 @@ def test_an_engine_takes_its_options_in_brackets(asia, program):
         pgm.InferenceEngine(asia, "jt[samples=5]")
     with pytest.raises(pgm.Error, match=r"option damping of the inference engine 'bp' must be a number >= 0 and < 1"):
         pgm.InferenceEngine(asia, "bp[damping=1]")
+
+
+def test_the_engines_options_have_one_default_everywhere():
+    """InferenceEngine's samples, seed and burn_in show the defaults the engines declare."""
+    declared = {}
+    for choice in pgm._core.engine_listing():
+        if "[" in choice:
+            for setting in choice[choice.index("[") + 1:-1].split(","):
+                key, value = setting.split("=")
+                assert declared.setdefault(key, value) == value, key  # one default per option
+    parameters = inspect.signature(pgm.InferenceEngine.__init__).parameters
+    assert parameters["engine"].default == "auto"
+    for keyword in ("samples", "seed", "burn_in"):
+        assert str(parameters[keyword].default) == declared[keyword], keyword
 
 
 def test_impossible_evidence_and_unknown_names(chain, asia):

@@ -150,6 +150,7 @@ void add_convert_command(CLI::App& app);
 void add_solve_command(CLI::App& app);
 void add_prevent_command(CLI::App& app);
 void add_dsep_command(CLI::App& app);
+void add_components_command(CLI::App& app);
 void add_check_command(CLI::App& app);
 void add_sample_command(CLI::App& app);
 void add_unroll_command(CLI::App& app);

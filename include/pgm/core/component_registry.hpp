@@ -12,6 +12,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -68,6 +69,8 @@ struct component_setting {
 template <class Product>
 class component_registry {
  public:
+  using product_type = Product;
+
   struct entry {
     /// One line for help texts.
     std::string summary;
@@ -203,5 +206,16 @@ template <class Product, class T>
     return {std::move(summary), {}, [](const component_choice& choice) { return Product(T{}, choice); }};
   }
 }
+
+/// Adds T to the registry `Registry()` returns when the program starts; each registry names it
+/// for its own kind: `static const pgm::register_score<S> registered("name", "summary");`.
+template <auto Registry, class T>
+struct component_registration {
+  component_registration(std::string name, std::string summary) {
+    auto& registry = Registry();
+    using product = typename std::remove_reference_t<decltype(registry)>::product_type;
+    registry.add(std::move(name), component_entry<product, T>(std::move(summary)));
+  }
+};
 
 }  // namespace pgm

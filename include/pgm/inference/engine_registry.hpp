@@ -320,6 +320,13 @@ class engine_registry {
 
   [[nodiscard]] std::vector<std::string> names() const { return factories_.names(); }
 
+  /// The options the engine `name` declares. Throws unknown_name for an unknown engine.
+  [[nodiscard]] std::vector<option_declaration> options(std::string_view name) const {
+    const auto factory = factories_.find(name);
+    if (!factory) throw unknown_name("inference engine", std::string(name), names());
+    return factory->options;
+  }
+
   /// Each engine as it is chosen with its declared defaults, "bp[schedule=residual,...]": for
   /// help texts.
   [[nodiscard]] std::vector<std::string> listing() const {

@@ -55,11 +55,7 @@ using independence_test_registry = component_registry<independence_test>;
 /// Registers a test type when the program starts:
 /// `static const register_independence_test<T> r("name", "…");`.
 template <IndependenceTest T>
-struct register_independence_test {
-  register_independence_test(std::string name, std::string summary) {
-    independence_tests().add(std::move(name), component_entry<independence_test, T>(std::move(summary)));
-  }
-};
+using register_independence_test = component_registration<&independence_tests, T>;
 
 }  // namespace pgm
 

@@ -40,11 +40,7 @@ inline constexpr std::string_view default_parameter_prior = "bdeu";
 /// Registers a prior type when the program starts:
 /// `static const register_parameter_prior<P> r("name", "…");`.
 template <ParameterPrior P>
-struct register_parameter_prior {
-  register_parameter_prior(std::string name, std::string summary) {
-    parameter_priors().add(std::move(name), component_entry<parameter_prior, P>(std::move(summary)));
-  }
-};
+using register_parameter_prior = component_registration<&parameter_priors, P>;
 
 }  // namespace pgm
 

@@ -49,11 +49,7 @@ using score_registry = component_registry<family_score>;
 
 /// Registers a score type when the program starts: `static const register_score<S> r("name", "…");`.
 template <FamilyScore S>
-struct register_score {
-  register_score(std::string name, std::string summary) {
-    scores().add(std::move(name), component_entry<family_score, S>(std::move(summary)));
-  }
-};
+using register_score = component_registration<&scores, S>;
 
 }  // namespace pgm
 

@@ -50,11 +50,7 @@ inline constexpr std::string_view default_structure_learner = "pc";
 /// Registers a learner type when the program starts:
 /// `static const register_structure_learner<T> r("name", "…");`.
 template <StructureLearner T>
-struct register_structure_learner {
-  register_structure_learner(std::string name, std::string summary) {
-    structure_learners().add(std::move(name), component_entry<structure_learner, T>(std::move(summary)));
-  }
-};
+using register_structure_learner = component_registration<&structure_learners, T>;
 
 }  // namespace pgm
 
