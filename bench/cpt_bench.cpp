@@ -16,9 +16,9 @@
 #include <string>
 #include <vector>
 
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/inference/factor.hpp"
 #include "pgm/learn/estimate.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 #include "pgm/transfer/replacement.hpp"
 
 namespace cpt_bench {

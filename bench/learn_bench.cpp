@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "check.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/learn/count_values.hpp"
 #include "pgm/learn/fit.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace {
 

@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "check.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/learn/estimate.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 // A namespace of its own: the unity build joins this file with learn_bench.cpp.
 namespace sparse_bench {

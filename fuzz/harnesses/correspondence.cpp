@@ -1,6 +1,6 @@
-// Correspondence maps, --map (pgm/transfer/correspondence.hpp).
+// Correspondence maps, --map (pgm/core/correspondence.hpp).
 
-#include "pgm/transfer/correspondence.hpp"
+#include "pgm/core/correspondence.hpp"
 
 #include "harness.hpp"
 

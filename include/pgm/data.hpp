@@ -9,3 +9,4 @@
 #include "pgm/data/family_counts.hpp"
 #include "pgm/data/missing.hpp"
 #include "pgm/data/state_order.hpp"
+#include "pgm/data/sufficient_statistics.hpp"

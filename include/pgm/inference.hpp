@@ -23,5 +23,6 @@
 #include "pgm/inference/sampling_options.hpp"
 #include "pgm/inference/semiring.hpp"
 #include "pgm/inference/solve.hpp"
+#include "pgm/inference/table_walk.hpp"
 #include "pgm/inference/triangulation.hpp"
 #include "pgm/inference/variable_elimination.hpp"

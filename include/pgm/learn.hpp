@@ -14,7 +14,6 @@
 #include "pgm/learn/family_score_cache.hpp"
 #include "pgm/learn/family_source.hpp"
 #include "pgm/learn/fit.hpp"
-#include "pgm/learn/fit_pipeline.hpp"
 #include "pgm/learn/fit_statistics.hpp"
 #include "pgm/learn/hill_climbing.hpp"
 #include "pgm/learn/independence_test.hpp"
@@ -33,4 +32,3 @@
 #include "pgm/learn/structure_learner_registry.hpp"
 #include "pgm/learn/structure_learners.hpp"
 #include "pgm/learn/structure_prior.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"

@@ -12,5 +12,6 @@
 #include "pgm/inference.hpp"
 #include "pgm/io.hpp"
 #include "pgm/learn.hpp"
+#include "pgm/pipeline.hpp"
 #include "pgm/sim.hpp"
 #include "pgm/transfer.hpp"

@@ -17,8 +17,8 @@
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/estimator_choice.hpp"
 #include "pgm/learn/family_source.hpp"
-#include "pgm/learn/fit_pipeline.hpp"
 #include "pgm/learn/parameter_prior_registry.hpp"
+#include "pgm/pipeline/fit_pipeline.hpp"
 #include "pgm/transfer/transfer_settings.hpp"
 
 namespace pgm::cli {

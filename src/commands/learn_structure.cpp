@@ -18,13 +18,13 @@
 
 #include "cli/common.hpp"
 #include "cli/component_options.hpp"
+#include "pgm/core/correspondence.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/text.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/learn/bootstrap.hpp"
 #include "pgm/learn/pc.hpp"
 #include "pgm/learn/structure_prior.hpp"
-#include "pgm/transfer/correspondence.hpp"
 
 namespace pgm::cli {
 namespace {

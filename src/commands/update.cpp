@@ -9,7 +9,7 @@
 #include "pgm/core/process_group.hpp"
 #include "pgm/io/csv_source.hpp"
 #include "pgm/io/network_file.hpp"
-#include "pgm/learn/fit_pipeline.hpp"
+#include "pgm/pipeline/fit_pipeline.hpp"
 
 namespace pgm::cli {
 namespace {

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "pgm/core/cpt.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 
 namespace pgm::core_limits_tests {
 namespace {

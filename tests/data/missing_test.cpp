@@ -15,10 +15,10 @@
 #include "data/csv_engine.hpp"
 #include "pgm/data/bin_columns.hpp"
 #include "pgm/data/discretizer.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/io/csv_counts.hpp"
 #include "pgm/learn/independence_test.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm::missing_tests {
 namespace {

@@ -1,8 +1,8 @@
-// The table walks of message passing (pgm/detail/table_walk.hpp): the layered product and the
+// The table walks of message passing (pgm/inference/table_walk.hpp): the layered product and the
 // folds onto each variable agree with one multiplication or one fold at a time, in probabilities
 // and in logarithms, on random tables whichever of their ways the walks choose.
 
-#include "pgm/detail/table_walk.hpp"
+#include "pgm/inference/table_walk.hpp"
 
 #include <gtest/gtest.h>
 

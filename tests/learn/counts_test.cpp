@@ -4,7 +4,7 @@
 #include <map>
 #include <random>
 
-#include "pgm/learn/sufficient_statistics.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 
 namespace pgm::counts_tests {
 namespace {

@@ -16,7 +16,7 @@
 #include "pgm/inference/variable_elimination.hpp"
 #include "pgm/io/bif.hpp"
 #include "pgm/learn/fit.hpp"
-#include "pgm/learn/fit_pipeline.hpp"
+#include "pgm/pipeline/fit_pipeline.hpp"
 #include "support/enumeration.hpp"
 
 namespace pgm::expectation_maximization_tests {

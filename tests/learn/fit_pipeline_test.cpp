@@ -1,4 +1,4 @@
-#include "pgm/learn/fit_pipeline.hpp"
+#include "pgm/pipeline/fit_pipeline.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>

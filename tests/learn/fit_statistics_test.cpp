@@ -1,4 +1,4 @@
-// Updates (pgm/learn/fit_statistics.hpp, update() in pgm/learn/fit_pipeline.hpp): fitting D1
+// Updates (pgm/learn/fit_statistics.hpp, update() in pgm/pipeline/fit_pipeline.hpp): fitting D1
 // and adding D2 equals fitting D1 ∪ D2 to the last bit, for every prior; the statistics survive
 // every model file format; a decay weighs the old counts down.
 
@@ -18,7 +18,7 @@
 #include "pgm/io/csv_source.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
-#include "pgm/learn/fit_pipeline.hpp"
+#include "pgm/pipeline/fit_pipeline.hpp"
 #include "support/random_network.hpp"
 
 namespace pgm::fit_statistics_tests {

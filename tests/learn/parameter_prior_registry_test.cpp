@@ -16,7 +16,7 @@
 #include "pgm/io/csv_source.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/learn/estimate.hpp"
-#include "pgm/learn/fit_pipeline.hpp"
+#include "pgm/pipeline/fit_pipeline.hpp"
 
 namespace pgm::parameter_prior_registry_tests {
 namespace {

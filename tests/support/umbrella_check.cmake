@@ -4,7 +4,7 @@
 # or pgm/eval/ (which need the compiled library), so that linking pgm::core alone stays enough.
 #   cmake -DINCLUDE_DIR=<include> -P umbrella_check.cmake
 cmake_minimum_required(VERSION 3.20)
-set(core_modules causal core data decide inference learn sim transfer)
+set(core_modules causal core data decide inference learn pipeline sim transfer)
 set(modules ${core_modules} eval io)
 file(READ "${INCLUDE_DIR}/pgm/pgm.hpp" everything)
 set(problems "")

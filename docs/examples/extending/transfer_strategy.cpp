@@ -2,7 +2,7 @@
 // program does for `--strategy blend`, and transfers 1-Stack's onTop1 table to 2-Stack's onTop2.
 
 #include <iostream>
-#include <pgm/transfer/correspondence.hpp>
+#include <pgm/core/correspondence.hpp>
 #include <pgm/transfer/registry.hpp>
 
 int main() {

@@ -26,7 +26,7 @@
 #include "pgm/core/dag.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/data/dataset.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 
 namespace pgm {
 

@@ -80,6 +80,9 @@ class bayesian_network {
   std::vector<table_type> tables_;
 };
 
+/// The node id of `name`, throwing model_error naming an unknown one and the known ones.
+[[nodiscard]] PGM_DECL variable_id node_of(const bayesian_network& network, std::string_view name);
+
 }  // namespace pgm
 
 #if !defined(PGM_SEPARATE_COMPILATION)

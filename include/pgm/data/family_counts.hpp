@@ -13,7 +13,7 @@
 
 #include "pgm/core/variable.hpp"
 #include "pgm/data/missing.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 
 namespace pgm {
 

@@ -14,26 +14,13 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/success_event.hpp"
 #include "pgm/decide/assignment.hpp"
 #include "pgm/inference/evidence_scope.hpp"
 #include "pgm/inference/inference_engine.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 
 namespace pgm {
-
-/// Which variable and state mean "the task succeeded", e.g. onTop2 = 1.
-struct success_event {
-  std::string variable;
-  std::string state;
-  friend bool operator==(const success_event&, const success_event&) = default;
-};
-
-/// The default success event: the unique node that has parents, no children and a state
-/// labelled "1". Throws model_error when there is no such node or more than one, naming them.
-[[nodiscard]] PGM_DECL success_event default_success_event(const bayesian_network& network);
-
-/// Parses "variable=state" and checks it against the network.
-[[nodiscard]] PGM_DECL success_event parse_success_event(std::string_view text, const bayesian_network& network);
 
 struct prediction_options {
   /// Sum out unassigned parents of the success variable instead of reporting them.

@@ -7,7 +7,7 @@
 /// fewer keeps its values as states (the reality grid) as `pgm fit` reads them back
 /// (values_as_states, pgm/data/bin_columns.hpp), and a parent that never varies is left out
 /// with a note, since it cannot explain anything. Every row becomes one cell index u·J + x,
-/// computed by the counting kernel of pgm/learn/sufficient_statistics.hpp, so that counts of
+/// computed by the counting kernel of pgm/data/sufficient_statistics.hpp, so that counts of
 /// any subset of rows are a histogram.
 
 #include <cstdint>
@@ -21,10 +21,10 @@
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/bin_columns.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/learn/estimate.hpp"
 #include "pgm/learn/family_source.hpp"
-#include "pgm/learn/fit_pipeline.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
+#include "pgm/pipeline/fit_pipeline.hpp"
 
 namespace pgm {
 

@@ -28,12 +28,12 @@
 
 #include "pgm/core/assert.hpp"
 #include "pgm/core/bayesian_network.hpp"
-#include "pgm/detail/table_walk.hpp"
 #include "pgm/inference/exact.hpp"
 #include "pgm/inference/factor.hpp"
 #include "pgm/inference/junction_tree.hpp"
 #include "pgm/inference/query.hpp"
 #include "pgm/inference/semiring.hpp"
+#include "pgm/inference/table_walk.hpp"
 #include "pgm/inference/triangulation.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 

@@ -133,10 +133,8 @@ struct mpe_result {
   [[nodiscard]] PGM_DECL evidence assignment() const;
 };
 
-/// The node id of `name`, throwing model_error naming an unknown one and the known ones.
-[[nodiscard]] PGM_DECL variable_id node_of(const bayesian_network& network, std::string_view name);
-
-/// The id of `name` in any other model (its id() names the known variables when it throws).
+/// The id of `name` in any other model than a Bayesian network (pgm/core/bayesian_network.hpp) (its id() names the
+/// known variables when it throws).
 template <detail::HasNamedVariables M>
 requires(!std::same_as<M, bayesian_network>) [[nodiscard]] variable_id node_of(const M& model, std::string_view name) {
   return model.id(name);

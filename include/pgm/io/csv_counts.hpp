@@ -25,8 +25,8 @@
 #include "pgm/core/variable.hpp"
 #include "pgm/data/family_counts.hpp"
 #include "pgm/data/missing.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/io/csv.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 

@@ -15,7 +15,7 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/decide/predict.hpp"
+#include "pgm/core/success_event.hpp"
 #include "pgm/detail/file.hpp"
 #include "pgm/io/network_file.hpp"
 

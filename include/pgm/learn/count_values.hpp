@@ -26,7 +26,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/data/state_order.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 
 namespace pgm {
 

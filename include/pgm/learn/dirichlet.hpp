@@ -17,8 +17,8 @@
 #include <span>
 
 #include "pgm/core/cpt.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/learn/log_gamma_ratio.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 

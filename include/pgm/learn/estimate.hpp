@@ -17,9 +17,9 @@
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/unknown_name.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/learn/dirichlet.hpp"
 #include "pgm/learn/parameter_prior.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 

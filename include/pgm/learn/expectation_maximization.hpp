@@ -49,6 +49,7 @@
 #include "pgm/core/limits.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/detail/parallel_for.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/inference/inference_engine.hpp"
@@ -57,7 +58,6 @@
 #include "pgm/learn/estimate.hpp"
 #include "pgm/learn/fit.hpp"
 #include "pgm/learn/parameter_prior.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 

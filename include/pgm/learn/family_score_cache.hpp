@@ -20,9 +20,9 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/detail/parallel_for.hpp"
 #include "pgm/learn/score_registry.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 

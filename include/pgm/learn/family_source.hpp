@@ -3,7 +3,7 @@
 /// Where a fit's counts come from. A family source reads the columns a request names, as the
 /// CSV reader reads them (a known variable's column takes its states, a raw numeric column is
 /// binned into intervals, a missing value follows the policy), and counts the requested
-/// families; the fit pipeline (pgm/learn/fit_pipeline.hpp) asks every source the same way.
+/// families; the fit pipeline (pgm/pipeline/fit_pipeline.hpp) asks every source the same way.
 /// Three ship: a data set in memory (`dataset_source`, here), a CSV file streamed without being
 /// held (`csv_source`, pgm/io/csv_source.hpp) and NumPy columns (the Python module).
 
@@ -19,8 +19,8 @@
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/discretizer.hpp"
 #include "pgm/data/family_counts.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/detail/text.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 

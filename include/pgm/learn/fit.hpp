@@ -15,9 +15,9 @@
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/discretizer.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/learn/estimate.hpp"
 #include "pgm/learn/parameter_prior.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 

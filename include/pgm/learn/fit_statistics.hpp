@@ -18,11 +18,11 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/network_structure.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/learn/estimate.hpp"
 #include "pgm/learn/fit.hpp"
 #include "pgm/learn/parameter_prior.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 

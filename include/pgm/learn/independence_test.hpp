@@ -33,8 +33,8 @@
 #include "pgm/core/error.hpp"
 #include "pgm/core/unknown_name.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/detail/text.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 

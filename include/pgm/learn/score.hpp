@@ -21,7 +21,7 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/component_options.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 
 namespace pgm {
 

@@ -23,8 +23,8 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/component_options.hpp"
 #include "pgm/core/component_registry.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/learn/score.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 

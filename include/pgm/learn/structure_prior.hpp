@@ -2,7 +2,7 @@
 /// \file
 /// A structure prior from a related task (the paper's transfer applied to the structure): the
 /// edges of the prior task's network, carried over to the target's variables by the
-/// correspondence map the transfer uses (pgm/transfer/correspondence.hpp). A target variable t
+/// correspondence map the transfer uses (pgm/core/correspondence.hpp). A target variable t
 /// stands for the prior variables it is transferred from (`onTop2=onTop1`), identical to (the
 /// same name, or `xOffset==xOff1`) or related to (`xOff2~xOff1`); a prior edge a -> b becomes
 /// every target edge t -> u with t standing for a and u for b. Hill climbing then adds a weight
@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "pgm/core/compilation.hpp"
+#include "pgm/core/correspondence.hpp"
 #include "pgm/core/network_structure.hpp"
-#include "pgm/transfer/correspondence.hpp"
 
 namespace pgm {
 

@@ -19,9 +19,9 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/detail/text.hpp"
 #include "pgm/learn/dirichlet.hpp"
-#include "pgm/learn/sufficient_statistics.hpp"
 
 namespace pgm {
 

@@ -15,9 +15,9 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
+#include "pgm/core/correspondence.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/detail/text.hpp"
-#include "pgm/transfer/correspondence.hpp"
 #include "pgm/transfer/state_map.hpp"
 
 namespace pgm {

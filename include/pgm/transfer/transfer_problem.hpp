@@ -13,10 +13,10 @@
 
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
+#include "pgm/core/correspondence.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/variable.hpp"
-#include "pgm/transfer/correspondence.hpp"
 #include "pgm/transfer/state_map.hpp"
 
 namespace pgm {

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "pgm/core/bayesian_network.hpp"
+#include "pgm/core/text.hpp"
 
 namespace pgm {
 
@@ -112,6 +113,16 @@ PGM_DECL factor_table bayesian_network::factor(std::size_t f) const {
   cards.push_back(table.child_cardinality());
   return factor_table(factor_scope(f), std::move(cards),
                       std::vector<double>(table.values().begin(), table.values().end()));
+}
+
+PGM_DECL variable_id node_of(const bayesian_network& network, std::string_view name) {
+  if (!network.structure().contains(name)) {
+    std::vector<std::string> names;
+    for (const auto& v : network.variables()) names.push_back(v.name());
+    throw model_error("the network has no variable '" + std::string(name) +
+                      "' (variables: " + text::list_for_message(names) + ")");
+  }
+  return network.id(name);
 }
 
 }  // namespace pgm

@@ -26,16 +26,6 @@ PGM_DECL evidence mpe_result::assignment() const {
   return result;
 }
 
-PGM_DECL variable_id node_of(const bayesian_network& network, std::string_view name) {
-  if (!network.structure().contains(name)) {
-    std::vector<std::string> names;
-    for (const auto& v : network.variables()) names.push_back(v.name());
-    throw model_error("the network has no variable '" + std::string(name) +
-                      "' (variables: " + detail::list_for_message(names) + ")");
-  }
-  return network.id(name);
-}
-
 }  // namespace pgm
 
 namespace pgm::detail {

@@ -336,5 +336,5 @@ PGM_DECL void count_rows_sparse(const discrete_column& child, std::span<const di
 }  // namespace pgm
 
 #if !defined(PGM_SEPARATE_COMPILATION)
-#include "pgm/learn/impl/sufficient_statistics.ipp"
+#include "pgm/data/impl/sufficient_statistics.ipp"
 #endif

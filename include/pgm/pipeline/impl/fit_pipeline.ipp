@@ -1,8 +1,8 @@
 #pragma once
-// The definitions of pgm/learn/fit_pipeline.hpp: inline in a header-only build, compiled once into libpgm
+// The definitions of pgm/pipeline/fit_pipeline.hpp: inline in a header-only build, compiled once into libpgm
 // under PGM_SEPARATE_COMPILATION (pgm/core/compilation.hpp).
 
-#include "pgm/learn/fit_pipeline.hpp"
+#include "pgm/pipeline/fit_pipeline.hpp"
 
 namespace pgm {
 

@@ -60,5 +60,5 @@ struct correspondence {
 }  // namespace pgm
 
 #if !defined(PGM_SEPARATE_COMPILATION)
-#include "pgm/transfer/impl/correspondence.ipp"
+#include "pgm/core/impl/correspondence.ipp"
 #endif

@@ -1,8 +1,8 @@
 #pragma once
-// The definitions of pgm/transfer/correspondence.hpp: inline in a header-only build, compiled once into libpgm
+// The definitions of pgm/core/correspondence.hpp: inline in a header-only build, compiled once into libpgm
 // under PGM_SEPARATE_COMPILATION (pgm/core/compilation.hpp).
 
-#include "pgm/transfer/correspondence.hpp"
+#include "pgm/core/correspondence.hpp"
 
 namespace pgm {
 

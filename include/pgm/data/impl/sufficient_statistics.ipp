@@ -1,8 +1,8 @@
 #pragma once
-// The definitions of pgm/learn/sufficient_statistics.hpp: inline in a header-only build, compiled once into libpgm
+// The definitions of pgm/data/sufficient_statistics.hpp: inline in a header-only build, compiled once into libpgm
 // under PGM_SEPARATE_COMPILATION (pgm/core/compilation.hpp).
 
-#include "pgm/learn/sufficient_statistics.hpp"
+#include "pgm/data/sufficient_statistics.hpp"
 
 namespace pgm::detail {
 

@@ -326,5 +326,5 @@ template <family_source Source>
 }  // namespace pgm
 
 #if !defined(PGM_SEPARATE_COMPILATION)
-#include "pgm/learn/impl/fit_pipeline.ipp"
+#include "pgm/pipeline/impl/fit_pipeline.ipp"
 #endif

@@ -1,0 +1,6 @@
+#pragma once
+/// \file
+/// Every header of pgm/pipeline/ in one include; target pgm::core. The pipeline sits above
+/// learning and transfer and joins them: data in, counts, priors (transferred ones too), tables.
+
+#include "pgm/pipeline/fit_pipeline.hpp"
