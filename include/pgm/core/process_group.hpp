@@ -3,7 +3,7 @@
 /// The processes a job is spread over, as the few collective steps pgm needs: the smallest of
 /// a number, a broadcast, a gather to process 0 in rank order and a sum of integers. One
 /// process, as started without a launcher, is the default and does no communication; the
-/// program installs an MPI group when mpirun or srun started it (src/mpi), and a test can
+/// program installs an MPI group when mpirun or srun started it (src/app/mpi), and a test can
 /// install threads as processes. Whatever scales out takes its group as an argument
 /// (csv_source, count_csv) or chooses between processes() and lone_process() (sim/run.hpp,
 /// eval/experiment.hpp, run_scenarios.hpp); jobs are split into blocks of items in

@@ -10,7 +10,7 @@
 /// it is refused rather than guessed.)
 
 ///
-/// Compiled into the library (src/io/bif.cpp, pgm::pgm). Errors name the file, line and column.
+/// Compiled into the library (src/lib/io/bif.cpp, pgm::pgm). Errors name the file, line and column.
 
 #include <filesystem>
 #include <optional>

@@ -5,7 +5,7 @@
 /// `csv_options` says otherwise. Every error names the file, line, column and what was
 /// expected.
 ///
-/// Reading is compiled into the library (src/data/csv.cpp): a file is mapped and parsed in
+/// Reading is compiled into the library (src/lib/data/csv.cpp): a file is mapped and parsed in
 /// chunks split at line boundaries on several threads; standard input ("-") and
 /// gzip-compressed data (a .csv.gz) are read as streams. The result is the same for any
 /// number of threads and any chunk size. To count families without holding the data in

@@ -31,7 +31,7 @@
 namespace pgm {
 
 namespace detail {
-struct csv_access;  // the implementation's way in (src/data)
+struct csv_access;  // the implementation's way in (src/lib/data)
 }  // namespace detail
 
 /// A CSV input opened and its header read: a file (mapped), standard input ("-", named

@@ -2,7 +2,7 @@
 /// \file
 /// gzip data in memory, inflated: how a model file compressed as `.bif.gz`, `.xml.gz`,
 /// `.net.gz` or `.json.gz` (as the bnlearn repository and pgmpy ship them) is read. Compiled
-/// (src/io/gzip.cpp, pgm::pgm, zlib).
+/// (src/lib/io/gzip.cpp, pgm::pgm, zlib).
 
 #include <cstdint>
 #include <string>

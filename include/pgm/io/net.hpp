@@ -9,7 +9,7 @@
 /// Names must be NET identifiers (a letter or '_', then letters, digits and '_'): a variable
 /// named otherwise is refused when writing, with the reason. Continuous, decision and utility
 /// nodes and object-oriented `class` files are refused when reading. Compiled into the library
-/// (src/io/net.cpp, pgm::pgm); errors name the file, line and column.
+/// (src/lib/io/net.cpp, pgm::pgm); errors name the file, line and column.
 
 #include <filesystem>
 #include <optional>

@@ -5,7 +5,7 @@
 /// through `read_model` or `read_network`, so every command reads every format.
 /// docs/formats.md says what each format carries.
 ///
-/// Compiled into the library (src/io/network_file.cpp, pgm::pgm).
+/// Compiled into the library (src/lib/io/network_file.cpp, pgm::pgm).
 
 #include <filesystem>
 #include <string>

@@ -9,7 +9,7 @@
 ///
 ///     static const pgm::register_network_format registered(my_format_codec());
 ///
-/// Compiled into the library (src/io/network_format.cpp, pgm::pgm).
+/// Compiled into the library (src/lib/io/network_format.cpp, pgm::pgm).
 
 #include <filesystem>
 #include <functional>

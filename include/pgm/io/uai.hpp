@@ -16,7 +16,7 @@
 /// column and what was expected. A `.uai` file is also a network format (pgm/io/network_format.hpp)
 /// for Bayesian networks: `pgm convert alarm.bif alarm.uai` writes `BAYES`.
 ///
-/// Compiled into the library (src/io/uai.cpp, pgm::pgm).
+/// Compiled into the library (src/lib/io/uai.cpp, pgm::pgm).
 
 #include <cstddef>
 #include <filesystem>

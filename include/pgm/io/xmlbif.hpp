@@ -6,7 +6,7 @@
 /// attributes and pgm reads back. Each `<TABLE>` lists, per configuration of the `<GIVEN>`
 /// parents (the last parent changing fastest), the child's probabilities, as pgmpy writes it.
 ///
-/// Compiled into the library (src/io/xmlbif.cpp, pgm::pgm) so that the XML parser
+/// Compiled into the library (src/lib/io/xmlbif.cpp, pgm::pgm) so that the XML parser
 /// (pugixml) stays out of the headers. Errors name the file, line and column.
 
 #include <filesystem>

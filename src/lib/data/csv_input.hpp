@@ -1,5 +1,5 @@
 #pragma once
-// Internal to the CSV reader (src/data), not installed: an opened CSV input (csv_reader's
+// Internal to the CSV reader (src/lib/data), not installed: an opened CSV input (csv_reader's
 // state) and the way parallel chunk parsers report a failure before their line is known.
 
 #include <cstddef>

@@ -1,5 +1,5 @@
 #pragma once
-// Internal to the CSV reader (src/data), not installed: where the bytes of an input come from.
+// Internal to the CSV reader (src/lib/data), not installed: where the bytes of an input come from.
 // A regular file is mapped (the pages already parsed are given back, so memory stays bounded
 // by the window however large the file); standard input and pipes are read into a buffer;
 // gzip data is inflated into one. Every source shows the bytes it holds from the current

@@ -1,5 +1,5 @@
 #pragma once
-// Internal to the CSV reader (src/data), not installed: the one record scanner every CSV path
+// Internal to the CSV reader (src/lib/data), not installed: the one record scanner every CSV path
 // uses (csv_scanner, read_csv, count_csv), how a field's text becomes a value, the label
 // dictionary and the order of states. Callable on any byte buffer (for fuzzing, issue 17).
 

@@ -1,8 +1,8 @@
-// The `pgm` program: each command lives in src/commands and only parses arguments, calls the
+// The `pgm` program: each command lives in src/app/commands and only parses arguments, calls the
 // library and prints. Errors in the input end the program with one line on stderr and exit
 // code 1; usage errors with code 2.
 //
-// Started by mpirun or srun (src/cli/launch.hpp), the program joins the job's MPI processes:
+// Started by mpirun or srun (src/app/cli/launch.hpp), the program joins the job's MPI processes:
 // the commands that scale out split their work over them, only process 0 prints, and every
 // process ends with the same exit code after agreeing on the failure, if any
 // (pgm/core/process_group.hpp).
