@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include "pgm/detail/file.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "support/program_test.hpp"
@@ -237,7 +237,7 @@ TEST_F(cli_test, transfer_writes_the_zero_shot_prior_and_correspond_proposes_the
                      path("prior.csv").string());
   ASSERT_EQ(r.code, 0) << r.err;
   EXPECT_THAT(r.out, HasSubstr("u = (xOff1=1, yOff1=1, xOff2=0, yOff2=1)  <-  u' = (xOff1=0, yOff1=1) [cross]"));
-  const auto csv = pgm::detail::read_file(path("prior.csv"));
+  const auto csv = pgm::read_file(path("prior.csv"));
   EXPECT_THAT(csv, HasSubstr("xOff1,yOff1,xOff2,yOff2,onTop2,probability\n"));
   EXPECT_THAT(csv, HasSubstr("1,1,0,1,1,0.2\n"));
   ASSERT_EQ(run("fit --data " + file("two.csv", two_stack).string() + " --edges \"" + edges + "\" --out " +

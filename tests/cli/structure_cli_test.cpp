@@ -7,7 +7,7 @@
 #include <cstdint>
 #include <string>
 
-#include "pgm/detail/file.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/io/json_model.hpp"
 #include "support/program_test.hpp"
 
@@ -109,7 +109,7 @@ TEST_F(structure_cli_test, learn_structure_by_score) {
     const auto one = run("learn-structure --algorithm " + algorithm + " --restarts 3 --perturb 2 --seed 5 --data " +
                          data.string() + " --out " + path("one.json").string() + " --threads 1");
     ASSERT_EQ(two.code, 0) << two.err;
-    EXPECT_EQ(detail::read_file(path("two.json")), detail::read_file(path("one.json")));
+    EXPECT_EQ(pgm::read_file(path("two.json")), pgm::read_file(path("one.json")));
   }
   // The score printed is what pgm score says of the learned structure.
   const auto hc = run("learn-structure --algorithm hc --score bdeu --iss 10 --data " + data.string() + " --out " +
@@ -171,7 +171,7 @@ TEST_F(structure_cli_test, learn_structure_takes_a_learner_with_its_options) {
   const auto learned = [&](const std::string& arguments) {
     const auto r = run(base + " " + arguments + " --out " + path("l.json").string());
     EXPECT_EQ(r.code, 0) << arguments << ": " << r.err;
-    return detail::read_file(path("l.json"));
+    return pgm::read_file(path("l.json"));
   };
   // The shorthands and the brackets choose the same learner.
   EXPECT_EQ(learned("--algorithm hc --start pc --alpha 0.05"), learned("--algorithm 'hc[start=pc[alpha=0.05]]'"));
@@ -194,9 +194,9 @@ TEST_F(structure_cli_test, learn_structure_bootstrap) {
   EXPECT_THAT(r.out, HasSubstr("hc on 8 bootstrap resamples of 4000 rows, 3 variables"));
   EXPECT_THAT(r.out, HasSubstr("  a -> c  strength 1  direction 1\n"));
   EXPECT_THAT(r.out, HasSubstr("(bnlearn's L1 rule) (2 edges):\n  a -> c\n  b -> c\n"));
-  EXPECT_THAT(detail::read_file(path("b.json")), HasSubstr("\"bootstrap\": 8"));
+  EXPECT_THAT(pgm::read_file(path("b.json")), HasSubstr("\"bootstrap\": 8"));
   ASSERT_EQ(run(base + path("one.json").string() + " --threads 1").code, 0);
-  EXPECT_EQ(detail::read_file(path("one.json")), detail::read_file(path("b.json")));
+  EXPECT_EQ(pgm::read_file(path("one.json")), pgm::read_file(path("b.json")));
   const auto fixed = run(base + path("t.json").string() + " --threshold 0.99");
   ASSERT_EQ(fixed.code, 0) << fixed.err;
   EXPECT_THAT(fixed.out, HasSubstr("averaged network at threshold 0.99 (2 edges)"));

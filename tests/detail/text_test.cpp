@@ -1,7 +1,7 @@
 // How pgm reads the numbers users type (docs/limits.md, "Numbers"): parse_double and the
 // reasons number_hint gives for what it refuses.
 
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -9,7 +9,7 @@
 #include <cmath>
 #include <string>
 
-namespace pgm::detail::text_tests {
+namespace pgm::text::text_tests {
 namespace {
 
 using ::testing::HasSubstr;
@@ -87,4 +87,4 @@ TEST(closest_name_test, a_name_within_two_edits_is_suggested) {
 }
 
 }  // namespace
-}  // namespace pgm::detail::text_tests
+}  // namespace pgm::text::text_tests

@@ -173,7 +173,7 @@ TEST(fit_statistics, survive_every_model_file_format_to_the_last_bit) {
   // Base64 of JSON that is not the statistics: refused with the JSON path, naming the property.
   const auto fitted = fit_text(text, network.structure(), {});
   write_network(fitted.network, folder / "model.bif", {.statistics = &*fitted.statistics});
-  auto bif = detail::read_file(folder / "model.bif");
+  auto bif = pgm::read_file(folder / "model.bif");
   const auto begin = bif.find("pgm.statistics = ") + 17;
   bif.replace(begin, bif.find(' ', begin) - begin, "eyJyb3dzIjotMX0");  // {"rows":-1}
   std::ofstream(folder / "wrong.bif") << bif;

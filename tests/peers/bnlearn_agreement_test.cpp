@@ -96,12 +96,12 @@ std::string as_csv(const dataset& data) {
 
 void expect_close(double pgm_value, double bnlearn_value, const std::string& what) {
   EXPECT_LE(std::abs(pgm_value - bnlearn_value), 1e-9 * std::max(1.0, std::abs(bnlearn_value)))
-      << what << ": pgm " << detail::format_double(pgm_value) << ", bnlearn " << detail::format_double(bnlearn_value);
+      << what << ": pgm " << text::format_double(pgm_value) << ", bnlearn " << text::format_double(bnlearn_value);
 }
 
 // bnlearn's score by its name and iss, which only bde reads.
 family_score score_named(const std::string& bnlearn_name, double iss) {
-  return make_score(bnlearn_name == "bde" ? "bde[iss=" + detail::format_double(iss) + "]" : bnlearn_name);
+  return make_score(bnlearn_name == "bde" ? "bde[iss=" + text::format_double(iss) + "]" : bnlearn_name);
 }
 
 TEST_F(bnlearn_agreement_test, scores_and_hill_climbing_on_published_networks) {
@@ -122,7 +122,7 @@ TEST_F(bnlearn_agreement_test, scores_and_hill_climbing_on_published_networks) {
     // score() of the true DAG, the data under the network's states.
     for (const auto& s : answers.scores) {
       const auto mine = score_network(net.structure(), data, score_named(s.type, s.iss));
-      expect_close(mine.total, s.total, s.type + " (iss " + detail::format_short(s.iss) + ")");
+      expect_close(mine.total, s.total, s.type + " (iss " + text::format_short(s.iss) + ")");
       ASSERT_EQ(mine.nodes.size(), s.nodes.size());
       for (std::size_t i = 0; i < s.nodes.size(); ++i) {
         expect_close(mine.nodes[i], s.nodes[i], s.type + " of " + net.structure().variables()[i].name());
@@ -142,9 +142,9 @@ TEST_F(bnlearn_agreement_test, scores_and_hill_climbing_on_published_networks) {
     for (const auto& e : learned.edges) mine.add_edge(e.from, e.to);
     for (const auto& e : answers.hc_arcs) theirs.add_edge(e.from, e.to);
     const auto truth = cpdag_of(net.graph());
-    std::cout << plan.network << " " << plan.rows << " rows: BIC pgm hc " << detail::format_double(learned.score)
-              << ", bnlearn hc " << detail::format_double(answers.hc_bic) << " (" << answers.hc_seconds
-              << " s), bnlearn tabu " << detail::format_double(answers.tabu_bic) << "; CPDAG SHD to the truth: pgm "
+    std::cout << plan.network << " " << plan.rows << " rows: BIC pgm hc " << text::format_double(learned.score)
+              << ", bnlearn hc " << text::format_double(answers.hc_bic) << " (" << answers.hc_seconds
+              << " s), bnlearn tabu " << text::format_double(answers.tabu_bic) << "; CPDAG SHD to the truth: pgm "
               << structural_hamming_distance(cpdag_of(mine), truth) << ", bnlearn "
               << structural_hamming_distance(cpdag_of(theirs), truth) << "; between them "
               << structural_hamming_distance(cpdag_of(mine), cpdag_of(theirs)) << '\n';
@@ -156,7 +156,7 @@ TEST_F(bnlearn_agreement_test, scores_and_hill_climbing_on_published_networks) {
     const auto searched = hill_climb(seen, names, tabu);
     EXPECT_GE(searched.score, learned.score - 1e-9 * std::abs(learned.score));
     EXPECT_GE(searched.score, answers.tabu_bic - 1e-9 * std::abs(answers.tabu_bic));
-    std::cout << "  pgm tabu " << detail::format_double(searched.score) << '\n';
+    std::cout << "  pgm tabu " << text::format_double(searched.score) << '\n';
   }
 }
 

@@ -85,7 +85,7 @@ TEST(calibrate_test, writes_the_constants_into_the_task_file_and_keeps_the_rest)
   const auto task = shipped("1-stack");
   const auto data = analytic_data(task, 2000, 5);
   const auto result = calibrate(task, data, 5, {.reference = "analytic"});
-  const auto original = pgm::detail::read_file(task.source);
+  const auto original = pgm::read_file(task.source);
   const auto text = calibrated_task_text(original, result);
   const auto again = parse_task(text, "calibrated.json");
   const auto& p = std::get<stacking_physics>(again.physics);

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "pgm/detail/file.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/sim/analytic_probability.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task.hpp"
@@ -23,8 +23,7 @@ inline task_definition shipped(const std::string& name) {
 /// 2-Stack with a third cube (xOff3, yOff3, dropOff3, colorUp3, onTop3) released on the
 /// second one, the same way, and onTop3 as success.
 inline task_definition three_stack() {
-  auto doc =
-      nlohmann::json::parse(pgm::detail::read_file(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "2-stack.json"));
+  auto doc = nlohmann::json::parse(pgm::read_file(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "2-stack.json"));
   doc["name"] = "3-stack";
   auto& variables = doc["variables"];
   const auto count = variables.size();

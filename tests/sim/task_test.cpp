@@ -92,7 +92,7 @@ std::string with(std::string text, const std::string& from, const std::string& t
 }
 
 TEST(task_test, errors_name_the_file_and_the_key) {
-  const auto good = pgm::detail::read_file(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "1-stack.json");
+  const auto good = pgm::read_file(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "1-stack.json");
   EXPECT_NO_THROW((void)parse_task(good, "good.json"));
   EXPECT_THAT(error_of("{ \"format\": "), HasSubstr("bad.json:1:"));
   EXPECT_THAT(error_of(with(good, "\"success\": \"onTop1\"", "\"success\": \"colorDown\"")),
@@ -118,7 +118,7 @@ TEST(task_test, errors_name_the_file_and_the_key) {
   auto document = nlohmann::json::parse(good);
   document["physics"]["analytic"] = 3;
   EXPECT_THAT(error_of(document.dump()), HasSubstr("/physics/analytic: expected an object"));
-  const auto glass = pgm::detail::read_file(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "drop-glass.json");
+  const auto glass = pgm::read_file(std::filesystem::path(PGM_SOURCE_DIR) / "tasks" / "drop-glass.json");
   EXPECT_THAT(error_of(with(glass, "\"landing_noise\": 0.5,", "\"landing_noise\": 0.5, \"rim_catch\": 0.7,")),
               HasSubstr("bad.json: /physics/rim_catch: is no longer used"));
   // (The later of two equal keys counts.)

@@ -16,7 +16,7 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 
 namespace pgm {
 

@@ -192,13 +192,13 @@ class cpt {
     for (const T value : column) {
       if (!std::isfinite(value) || value < T{0} || value > T{1}) {
         throw model_error("the table of '" + child_.name() + "' has the value " +
-                          detail::format_double(static_cast<double>(value)) + ", which is not a probability" + place());
+                          text::format_double(static_cast<double>(value)) + ", which is not a probability" + place());
       }
       sum += value;
     }
     if (std::abs(sum - T{1}) > tolerance) {
       throw model_error("the distribution of '" + child_.name() + "'" + place() + " sums to " +
-                        detail::format_double(static_cast<double>(sum)) + ", not 1");
+                        text::format_double(static_cast<double>(sum)) + ", not 1");
     }
   }
 

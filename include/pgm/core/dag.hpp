@@ -18,7 +18,7 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/strong_index.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 
 namespace pgm {
 

@@ -16,9 +16,9 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/discretizer.hpp"
-#include "pgm/detail/text.hpp"
 
 namespace pgm {
 

@@ -19,9 +19,9 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/data/missing.hpp"
-#include "pgm/detail/text.hpp"
 
 namespace pgm {
 

@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "pgm/core/compilation.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 
 namespace pgm {
 
@@ -65,7 +65,7 @@ template <class Labels>
   values.reserve(labels.size());
   result.numeric = true;
   for (std::size_t i = 0; i < labels.size() && result.numeric; ++i) {
-    const auto number = detail::parse_double(labels[i]);
+    const auto number = text::parse_double(labels[i]);
     result.numeric = number.has_value();
     if (number && !std::isfinite(*number)) {
       result.non_finite = result.non_finite.value_or(i);

@@ -15,7 +15,7 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 
 namespace pgm {

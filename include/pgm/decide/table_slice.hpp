@@ -14,9 +14,9 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/decide/assignment.hpp"
 #include "pgm/decide/success_table.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/inference/junction_tree_engine.hpp"
 #include "pgm/learn/fit_statistics.hpp"
 

@@ -16,8 +16,8 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/core/variable.hpp"
-#include "pgm/detail/text.hpp"
 
 namespace pgm::detail {
 

@@ -109,7 +109,7 @@ struct estimator_line {
   }
   /// The `weight` column: "0" for MLE, the weight, or "auto".
   [[nodiscard]] std::string weight_label() const {
-    return !prior ? "0" : weight ? detail::format_short(*weight) : "auto";
+    return !prior ? "0" : weight ? text::format_short(*weight) : "auto";
   }
 };
 

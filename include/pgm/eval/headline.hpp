@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "pgm/core/compilation.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/eval/experiment.hpp"
 #include "pgm/eval/scenario.hpp"
 

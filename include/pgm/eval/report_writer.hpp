@@ -15,7 +15,7 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/detail/file.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/eval/experiment.hpp"
 #include "pgm/eval/headline.hpp"
 #include "pgm/eval/plot.hpp"

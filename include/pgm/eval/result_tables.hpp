@@ -18,9 +18,9 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/file.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/core/unknown_name.hpp"
-#include "pgm/detail/file.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/eval/experiment.hpp"
 #include "pgm/io/csv.hpp"
 
@@ -40,7 +40,7 @@ PGM_DECL void write_points_csv(const std::vector<experiment_point>& points, std:
 
 /// Writes the points to a file atomically (see the stream overload).
 inline void write_points_csv(const std::vector<experiment_point>& points, const std::filesystem::path& path) {
-  detail::write_file_atomically(path, [&](std::ostream& out) { write_points_csv(points, out); });
+  pgm::write_file_atomically(path, [&](std::ostream& out) { write_points_csv(points, out); });
 }
 
 /// Writes the summary as CSV: scenario, target, strategy, w, rows, metric, mean, sd, repetitions.
@@ -48,7 +48,7 @@ PGM_DECL void write_summary_csv(const std::vector<aggregated_point>& summary, st
 
 /// Writes the summary to a file atomically (see the stream overload).
 inline void write_summary_csv(const std::vector<aggregated_point>& summary, const std::filesystem::path& path) {
-  detail::write_file_atomically(path, [&](std::ostream& out) { write_summary_csv(summary, out); });
+  pgm::write_file_atomically(path, [&](std::ostream& out) { write_summary_csv(summary, out); });
 }
 
 /// Reads a summary as write_summary_csv writes it (columns in any order, others ignored).
@@ -58,7 +58,7 @@ inline void write_summary_csv(const std::vector<aggregated_point>& summary, cons
 
 /// Reads a summary file; see parse_summary_csv.
 [[nodiscard]] inline std::vector<aggregated_point> read_summary_csv(const std::filesystem::path& path) {
-  return parse_summary_csv(detail::read_file(path), path.string());
+  return parse_summary_csv(pgm::read_file(path), path.string());
 }
 
 }  // namespace pgm

@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "pgm/core/compilation.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/core/limits.hpp"
-#include "pgm/detail/file.hpp"
 #include "pgm/detail/json_reader.hpp"
 
 namespace pgm {
@@ -70,7 +70,7 @@ class scenario_reader : public json_reader {
 [[nodiscard]] PGM_DECL scenario parse_scenario(std::string_view text, const std::string& source);
 
 [[nodiscard]] inline scenario load_scenario(const std::filesystem::path& path) {
-  return parse_scenario(detail::read_file(path), path.string());
+  return parse_scenario(pgm::read_file(path), path.string());
 }
 
 }  // namespace pgm

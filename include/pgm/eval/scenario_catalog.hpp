@@ -13,8 +13,8 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/core/unknown_name.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/eval/scenario.hpp"
 
 namespace pgm {

@@ -16,8 +16,8 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/detail/checksum.hpp"
-#include "pgm/detail/file.hpp"
 #include "pgm/eval/experiment.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task.hpp"

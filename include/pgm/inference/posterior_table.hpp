@@ -24,7 +24,6 @@
 #include "pgm/core/error.hpp"
 #include "pgm/core/text.hpp"
 #include "pgm/core/unknown_name.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/inference/query.hpp"
 
 namespace pgm {

@@ -29,7 +29,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/core/graphical_model.hpp"
 #include "pgm/core/markov_network.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/inference/factor.hpp"
 
 namespace pgm {

@@ -12,8 +12,8 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/core/limits.hpp"
-#include "pgm/detail/file.hpp"
 #include "pgm/io/csv.hpp"
 
 namespace pgm {
@@ -24,7 +24,7 @@ PGM_DECL void write_cpt_csv(const cpt<double>& table, std::ostream& out,
 
 inline void write_cpt_csv(const cpt<double>& table, const std::filesystem::path& path,
                           const std::string& value_header = "probability") {
-  detail::write_file_atomically(path, [&](std::ostream& out) { write_cpt_csv(table, out, value_header); });
+  pgm::write_file_atomically(path, [&](std::ostream& out) { write_cpt_csv(table, out, value_header); });
 }
 
 /// Reads a table written by write_cpt_csv for known variables. Every configuration and state

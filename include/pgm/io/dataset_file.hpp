@@ -32,10 +32,10 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/detail/checksum.hpp"
-#include "pgm/detail/file.hpp"
 #include "pgm/detail/json_reader.hpp"
 #include "pgm/io/json_model.hpp"
 
@@ -111,7 +111,7 @@ PGM_DECL void write_dataset_file(const std::filesystem::path& path, const datase
 /// Reads a dataset file; errors name it. Its size is not bounded: the file holds the data set
 /// it is read into (and its header's length and checksum are checked).
 [[nodiscard]] inline dataset_file_content read_dataset_file(const std::filesystem::path& path) {
-  return decode_dataset(detail::read_file(path, std::numeric_limits<std::uint64_t>::max()), path.string());
+  return decode_dataset(pgm::read_file(path, std::numeric_limits<std::uint64_t>::max()), path.string());
 }
 
 }  // namespace pgm

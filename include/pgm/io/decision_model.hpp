@@ -15,8 +15,8 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/core/success_event.hpp"
-#include "pgm/detail/file.hpp"
 #include "pgm/io/network_file.hpp"
 
 namespace pgm {

@@ -53,12 +53,12 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/dynamic_network.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/core/limits.hpp"
 #include "pgm/core/markov_network.hpp"
 #include "pgm/core/mixed_radix.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/discretizer.hpp"
-#include "pgm/detail/file.hpp"
 #include "pgm/detail/json_reader.hpp"
 #include "pgm/io/statistics_json.hpp"
 #include "pgm/learn/fit_statistics.hpp"
@@ -132,14 +132,14 @@ PGM_DECL void write_model_json(std::ostream& out, const bayesian_network& networ
 [[nodiscard]] PGM_DECL model_document parse_model_json(std::string_view text, const std::string& source);
 
 [[nodiscard]] inline model_document read_model_json(const std::filesystem::path& path) {
-  return parse_model_json(detail::read_file(path), path.string());
+  return parse_model_json(pgm::read_file(path), path.string());
 }
 
 /// Writes `document` to `path` atomically; `before_replacing` as write_file_atomically's.
 inline void write_model_json(const nlohmann::json& document, const std::filesystem::path& path,
                              const std::function<void()>& before_replacing = {}) {
   const auto text = document.dump(2) + "\n";
-  detail::write_file_atomically(
+  pgm::write_file_atomically(
       path, [&](std::ostream& out) { out << text; }, before_replacing);
 }
 
@@ -150,7 +150,7 @@ inline void write_model_json(const nlohmann::json& document, const std::filesyst
 [[nodiscard]] PGM_DECL discretization parse_discretization_json(std::string_view text, const std::string& source);
 
 [[nodiscard]] inline discretization read_discretization_json(const std::filesystem::path& path) {
-  return parse_discretization_json(detail::read_file(path), path.string());
+  return parse_discretization_json(pgm::read_file(path), path.string());
 }
 
 }  // namespace pgm

@@ -26,7 +26,7 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/inference/posterior_table.hpp"
 #include "pgm/inference/query.hpp"
 #include "pgm/io/csv.hpp"

@@ -18,7 +18,7 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 
 namespace pgm {
 
@@ -58,8 +58,8 @@ class column_normalizer {
 
   /// The message for a column off by more than the tolerance.
   [[nodiscard]] std::string refusal(const std::string& variable_name, double sum) const {
-    return "a distribution of '" + variable_name + "' sums to " + format_double(sum) + ", not 1 within " +
-           format_short(tolerance_) + " (the tolerance for rounded published tables)";
+    return "a distribution of '" + variable_name + "' sums to " + text::format_double(sum) + ", not 1 within " +
+           text::format_short(tolerance_) + " (the tolerance for rounded published tables)";
   }
 
  private:

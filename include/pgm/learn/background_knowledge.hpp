@@ -15,7 +15,7 @@
 #include "pgm/core/dag.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/network_structure.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 
 namespace pgm {
 

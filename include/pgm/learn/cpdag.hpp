@@ -18,8 +18,8 @@
 #include "pgm/core/error.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/core/strong_index.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/core/variable.hpp"
-#include "pgm/detail/text.hpp"
 
 namespace pgm {
 

@@ -73,7 +73,7 @@ void posterior_column(const basic_count_table<Count>& counts, std::size_t u, std
   if (!std::isfinite(denominator)) {
     throw model_error("the pseudo-counts and counts of '" + counts.child().name() + "'" + where() +
                       " add up to more than the largest finite number (" +
-                      format_double(std::numeric_limits<double>::max()) +
+                      text::format_double(std::numeric_limits<double>::max()) +
                       "): the pseudo-counts (alpha, the equivalent sample size) must keep that sum finite");
   }
   if (denominator == 0.0) {

@@ -48,10 +48,10 @@
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
 #include "pgm/core/network_structure.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/sufficient_statistics.hpp"
 #include "pgm/detail/parallel_for.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/inference/inference_engine.hpp"
 #include "pgm/inference/junction_tree_engine.hpp"
 #include "pgm/inference/sampling.hpp"
@@ -471,7 +471,7 @@ requires InferenceEngine<Engine> && std::constructible_from<Engine, const bayesi
     }
   }
   if (!std::isfinite(options.tolerance) || options.tolerance < 0.0) {
-    throw model_error("the EM tolerance must be a finite number >= 0, got " + detail::format_double(options.tolerance));
+    throw model_error("the EM tolerance must be a finite number >= 0, got " + text::format_double(options.tolerance));
   }
   for (const auto& [name, prior] : fitting.node_priors) {
     if (!structure.contains(name)) {

@@ -16,11 +16,11 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/discretizer.hpp"
 #include "pgm/data/family_counts.hpp"
 #include "pgm/data/sufficient_statistics.hpp"
-#include "pgm/detail/text.hpp"
 
 namespace pgm {
 

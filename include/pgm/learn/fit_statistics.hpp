@@ -18,8 +18,8 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/network_structure.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/data/sufficient_statistics.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/learn/estimate.hpp"
 #include "pgm/learn/fit.hpp"
 #include "pgm/learn/parameter_prior.hpp"
@@ -84,7 +84,7 @@ template <class Count>
 [[nodiscard]] fit_statistics updated(const fit_statistics& old, std::span<const basic_count_table<Count>> more,
                                      double more_rows, double decay = 1.0) {
   if (!(decay > 0.0 && decay <= 1.0)) {
-    throw model_error("the decay must be in (0, 1], got " + detail::format_double(decay));
+    throw model_error("the decay must be in (0, 1], got " + text::format_double(decay));
   }
   if (more.size() != old.counts.size()) {
     throw model_error("the new counts have " + std::to_string(more.size()) + " tables, the model " +

@@ -31,10 +31,10 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/component_options.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/core/unknown_name.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/sufficient_statistics.hpp"
-#include "pgm/detail/text.hpp"
 
 namespace pgm {
 

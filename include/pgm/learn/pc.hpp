@@ -25,9 +25,9 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/detail/parallel_for.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/learn/background_knowledge.hpp"
 #include "pgm/learn/cpdag.hpp"
 #include "pgm/learn/independence_test_registry.hpp"

@@ -129,8 +129,8 @@ template <row_source Source>
       if (!structure.contains(v.name)) throw model_error("the latent variable '" + v.name + "' is not in the model");
       if (!v.states.empty() && v.states != structure.at(v.name).states()) {
         throw model_error("the latent variable '" + v.name + "' is given the states {" +
-                          detail::list_for_message(v.states) + "}, the model {" +
-                          detail::list_for_message(structure.at(v.name).states()) + "}");
+                          text::list_for_message(v.states) + "}, the model {" +
+                          text::list_for_message(structure.at(v.name).states()) + "}");
       }
     }
     for (const auto& v : structure.variables()) {
@@ -308,7 +308,7 @@ template <family_source Source>
 [[nodiscard]] fit_result update(Source& source, const network_structure& structure, const fit_statistics& statistics,
                                 const update_request& request) {
   if (!(request.decay > 0.0 && request.decay <= 1.0)) {
-    throw model_error("the decay must be in (0, 1], got " + detail::format_double(request.decay));
+    throw model_error("the decay must be in (0, 1], got " + text::format_double(request.decay));
   }
   fit_request counting;
   counting.structure = structure;

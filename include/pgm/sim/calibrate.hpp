@@ -30,8 +30,8 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/data/dataset.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/sim/analytic.hpp"
 #include "pgm/sim/analytic_probability.hpp"
 #include "pgm/sim/container.hpp"

@@ -20,10 +20,10 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/core/unknown_name.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/detail/named_registry.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/sim/analytic.hpp"
 #include "pgm/sim/run.hpp"
 #include "pgm/sim/simulator_concept.hpp"

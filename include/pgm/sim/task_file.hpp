@@ -18,10 +18,10 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/dag.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/core/network_structure.hpp"
-#include "pgm/detail/file.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/detail/json_reader.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/sim/distribution.hpp"
 #include "pgm/sim/task.hpp"
 
@@ -67,7 +67,7 @@ class task_reader : public pgm::detail::json_reader {
 
 /// Reads a task file. Errors name the file and the JSON path of the offending key.
 [[nodiscard]] inline task_definition load_task(const std::filesystem::path& path) {
-  return parse_task(pgm::detail::read_file(path), path.string());
+  return parse_task(pgm::read_file(path), path.string());
 }
 
 }  // namespace pgm::sim

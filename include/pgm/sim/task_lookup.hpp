@@ -14,8 +14,8 @@
 #include "pgm/config.hpp"
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/core/unknown_name.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/sim/task.hpp"
 #include "pgm/sim/task_file.hpp"
 

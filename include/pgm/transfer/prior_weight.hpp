@@ -19,8 +19,8 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/data/sufficient_statistics.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/learn/dirichlet.hpp"
 
 namespace pgm {

@@ -17,7 +17,7 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/correspondence.hpp"
 #include "pgm/core/network_structure.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/transfer/state_map.hpp"
 
 namespace pgm {

@@ -16,9 +16,9 @@
 #include <vector>
 
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/core/unknown_name.hpp"
 #include "pgm/detail/named_registry.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/transfer/prior_transfer.hpp"
 #include "pgm/transfer/replacement.hpp"
 

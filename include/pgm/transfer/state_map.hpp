@@ -16,9 +16,9 @@
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/core/unknown_name.hpp"
 #include "pgm/core/variable.hpp"
-#include "pgm/detail/text.hpp"
 
 namespace pgm {
 
@@ -55,7 +55,7 @@ using state_mapping = std::vector<std::vector<weighted_state>>;
 namespace detail {
 
 [[nodiscard]] inline std::string states_for_message(const variable& v) {
-  return "{" + list_for_message(v.states()) + "}";
+  return "{" + text::list_for_message(v.states()) + "}";
 }
 
 [[nodiscard]] PGM_DECL std::vector<weighted_state> overlap_weights(const variable& prior, double lo, double hi);

@@ -219,7 +219,7 @@ class report_template_renderer {
     }
     if (token == "range") fail(at, "range must come first, right after the format");
     if (token.find('/') == std::string::npos) {
-      const auto number = parse_double(token);
+      const auto number = text::parse_double(token);
       if (!number || !std::isfinite(*number)) {
         fail(at, "'" + token +
                      "' is neither a number, a selector (scenario/target/strategy/w/rows/metric) nor one of "
@@ -288,7 +288,7 @@ class report_template_renderer {
       }
       if (kept.empty()) {
         fail(at, "no summary row matches '" + selector + "': " + names[f] + " '" + parts[f] +
-                     "' is none of those left (" + list_for_message(seen) + ")");
+                     "' is none of those left (" + text::list_for_message(seen) + ")");
       }
       rows = std::move(kept);
     }
@@ -350,7 +350,7 @@ class report_template_renderer {
         return result;
       }
     }
-    fail(at, "the two never come within " + format_short(tolerance));
+    fail(at, "the two never come within " + text::format_short(tolerance));
   }
 
   const std::vector<named_summary>& summaries_;

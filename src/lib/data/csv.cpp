@@ -12,7 +12,7 @@
 #include <variant>
 
 #include "data/csv_input.hpp"
-#include "pgm/detail/file.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/detail/parallel_for.hpp"
 
 namespace pgm {
@@ -183,7 +183,7 @@ void add_value(const column_plan& plan, column_part& part, const detail::csv_fie
       return;
     case column_mode::automatic: {
       if (part.text_seen) return;
-      const auto value = detail::parse_double(field.text);
+      const auto value = text::parse_double(field.text);
       if (!value) {
         part.text_seen = true;  // a text column: a second pass reads its labels
         part.numbers.clear();
@@ -208,7 +208,7 @@ void add_value(const column_plan& plan, column_part& part, const detail::csv_fie
       if (id == detail::label_dictionary::none) {
         detail::fail_field(field, plan.name,
                            "'" + std::string(field.text) + "' is not a state of '" + plan.name +
-                               "' (states: " + detail::list_for_message(plan.known->states()) + ")");
+                               "' (states: " + text::list_for_message(plan.known->states()) + ")");
       }
       part.codes.push_back(id);
       return;
@@ -520,7 +520,7 @@ void write_csv_rows(const dataset& data, std::ostream& out, char delimiter, std:
         buffer += code < escaped_labels[c].size() ? escaped_labels[c][code] : escaped_missing;
       } else {
         const double value = std::get<continuous_column>(columns[c]).values()[row];
-        buffer += std::isnan(value) ? escaped_missing : detail::format_double(value);
+        buffer += std::isnan(value) ? escaped_missing : text::format_double(value);
       }
     }
     buffer += '\n';
@@ -533,7 +533,7 @@ void write_csv_rows(const dataset& data, std::ostream& out, char delimiter, std:
 }
 
 void write_csv(const dataset& data, const std::filesystem::path& path, char delimiter, std::string_view missing) {
-  detail::write_file_atomically(path, [&](std::ostream& out) { write_csv(data, out, delimiter, missing); });
+  pgm::write_file_atomically(path, [&](std::ostream& out) { write_csv(data, out, delimiter, missing); });
 }
 
 }  // namespace pgm

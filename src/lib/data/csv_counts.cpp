@@ -322,7 +322,7 @@ std::uint32_t provisional_id(const counted_column& column, partial_impl& partial
       if (id == detail::label_dictionary::none) {
         detail::fail_field(field, column.name,
                            "'" + std::string(field.text) + "' is not a state of '" + column.name +
-                               "' (states: " + detail::list_for_message(column.var.states()) + ")");
+                               "' (states: " + text::list_for_message(column.var.states()) + ")");
       }
       return id;
     }

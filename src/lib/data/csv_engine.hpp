@@ -21,9 +21,9 @@
 
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/data/missing.hpp"
 #include "pgm/data/state_order.hpp"
-#include "pgm/detail/text.hpp"
 #include "pgm/io/csv.hpp"
 
 namespace pgm::detail {
@@ -324,7 +324,8 @@ std::size_t for_each_record(std::string_view text, char delimiter, std::vector<c
   for (const auto& name : names) {
     const auto it = std::find(header.begin(), header.end(), name);
     if (it == header.end()) {
-      throw data_error(source + ": there is no column '" + name + "' (columns: " + list_for_message(header) + ")");
+      throw data_error(source + ": there is no column '" + name + "' (columns: " + text::list_for_message(header) +
+                       ")");
     }
     wanted.push_back(static_cast<std::size_t>(it - header.begin()));
   }
@@ -346,7 +347,7 @@ std::size_t for_each_record(std::string_view text, char delimiter, std::vector<c
 }
 
 [[nodiscard]] inline std::string non_finite_message(std::string_view text) {
-  return "'" + std::string(text) + "' is not a finite number (" + number_hint(text) + ")";
+  return "'" + std::string(text) + "' is not a finite number (" + text::number_hint(text) + ")";
 }
 
 /// Whether a field's text is one of the missing tokens, in one table look-up for most texts
@@ -425,8 +426,8 @@ struct missing_rule {
 
 /// A field's number for a continuous column: fails on text and on NaN or an infinity.
 [[nodiscard]] inline double continuous_value(const csv_field& field, const std::string& column) {
-  const auto value = parse_double(field.text);
-  if (!value) fail_field(field, column, "expected a number, got " + quoted_number(field.text));
+  const auto value = text::parse_double(field.text);
+  if (!value) fail_field(field, column, "expected a number, got " + text::quoted_number(field.text));
   if (!std::isfinite(*value)) fail_field(field, column, non_finite_message(field.text));
   return *value + 0.0;  // -0 is 0 (docs/limits.md): written back as "0"
 }
@@ -519,7 +520,7 @@ using pgm::order_states;
 /// exactly equal (pgm/data/state_order.hpp). Looked up only for a label that is no state's text.
 [[nodiscard]] inline std::uint32_t numeric_state(const variable& known, std::string_view text) {
   const auto value = exact_decimal_of(text);
-  if (!value || !parse_double(text)) return label_dictionary::none;
+  if (!value || !text::parse_double(text)) return label_dictionary::none;
   for (std::size_t s = 0; s < known.cardinality(); ++s) {
     if (exact_decimal_of(known.states()[s]) == value) return static_cast<std::uint32_t>(s);
   }

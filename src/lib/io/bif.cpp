@@ -12,9 +12,9 @@
 
 #include "io/builtin_formats.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/core/limits.hpp"
-#include "pgm/detail/file.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 
 namespace pgm {
 
@@ -82,7 +82,7 @@ class bif_lexer {
       }
       ++pos_;
     }
-    return std::string(trim(text_.substr(start, pos_ - start)));
+    return std::string(text::trim(text_.substr(start, pos_ - start)));
   }
 
  private:
@@ -296,8 +296,8 @@ class bif_parser {
         const auto where = current_;
         const auto text = property_value();
         const auto eq = text.find('=');
-        const auto key = eq == std::string::npos ? std::string() : std::string(trim(text.substr(0, eq)));
-        const auto value = eq == std::string::npos ? std::string() : std::string(trim(text.substr(eq + 1)));
+        const auto key = eq == std::string::npos ? std::string() : std::string(text::trim(text.substr(0, eq)));
+        const auto value = eq == std::string::npos ? std::string() : std::string(text::trim(text.substr(eq + 1)));
         if (key == "quantity") tags.quantity = value;
         if (key == "unit") tags.unit = value;
         if (key == "role") tags.role = value;
@@ -311,11 +311,11 @@ class bif_parser {
       variable var(name.text, std::move(*states), tags);
       if (edges_text) {
         std::vector<double> edges;
-        for (const auto& piece : split(edges_text->second, ',')) {
-          const auto value = parse_double(piece);
+        for (const auto& piece : text::split(edges_text->second, ',')) {
+          const auto value = text::parse_double(piece);
           if (!value || !std::isfinite(*value)) {
             fail(edges_text->first,
-                 "the edges of '" + name.text + "' must be finite numbers, found " + quoted_number(piece));
+                 "the edges of '" + name.text + "' must be finite numbers, found " + text::quoted_number(piece));
           }
           edges.push_back(*value);
         }
@@ -332,9 +332,9 @@ class bif_parser {
     std::vector<double> values;
     while (!accept_symbol(';')) {
       const auto token = expect_word("a probability or ';'");
-      const auto value = parse_double(token.text);
+      const auto value = text::parse_double(token.text);
       if (!value || !std::isfinite(*value)) {
-        fail(token, "expected a probability, found " + quoted_number(token.text));
+        fail(token, "expected a probability, found " + text::quoted_number(token.text));
       }
       values.push_back(*value);
       accept_symbol(',');
@@ -451,7 +451,7 @@ class bif_parser {
           const auto state = parents[i].find_state(labels[i]);
           if (!state) {
             fail(at, "'" + labels[i] + "' is not a state of '" + parents[i].name() +
-                         "' (states: " + list_for_message(parents[i].states()) + ")");
+                         "' (states: " + text::list_for_message(parents[i].states()) + ")");
           }
           codes.push_back(state->value());
         }
@@ -532,7 +532,7 @@ bayesian_network parse_bif(std::string_view text, const std::string& source, con
 }
 
 bayesian_network read_bif(const std::filesystem::path& path, const network_read_options& options) {
-  return parse_bif(detail::read_file(path), path.string(), options);
+  return parse_bif(pgm::read_file(path), path.string(), options);
 }
 
 void write_bif(const bayesian_network& network, std::ostream& out, const bif_write_options& options) {
@@ -569,7 +569,7 @@ void write_bif(const bayesian_network& network, std::ostream& out, const bif_wri
       if (v.has_intervals()) {
         text << "  property edges = ";
         for (std::size_t e = 0; e < v.edges().size(); ++e) {
-          text << (e ? ", " : "") << detail::format_double(v.edges()[e]);
+          text << (e ? ", " : "") << text::format_double(v.edges()[e]);
         }
         text << " ;\n";
       }
@@ -594,7 +594,7 @@ void write_bif(const bayesian_network& network, std::ostream& out, const bif_wri
     text << " ) {\n";
     auto write_values = [&](std::span<const double> values) {
       for (std::size_t x = 0; x < values.size(); ++x) {
-        text << (x ? ", " : " ") << detail::format_double(values[x]);
+        text << (x ? ", " : " ") << text::format_double(values[x]);
       }
       text << ";\n";
     };
@@ -615,7 +615,7 @@ void write_bif(const bayesian_network& network, std::ostream& out, const bif_wri
     text << "}\n";
   }
   if (options.notes != nullptr && !dotted.empty()) {
-    options.notes->push_back("names with '.' (" + detail::list_for_message(dotted) +
+    options.notes->push_back("names with '.' (" + text::list_for_message(dotted) +
                              ") are written as they are; pgmpy 0.1.26 cannot read them in 'probability' lines "
                              "(pgm reads them)");
   }
@@ -630,7 +630,7 @@ std::string to_bif(const bayesian_network& network, const bif_write_options& opt
 
 void write_bif(const bayesian_network& network, const std::filesystem::path& path, const bif_write_options& options) {
   const auto text = to_bif(network, options);  // fails before the file is touched
-  detail::write_file_atomically(path, [&](std::ostream& out) { out << text; });
+  pgm::write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
 network_format_codec detail::bif_format() {

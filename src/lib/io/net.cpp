@@ -11,9 +11,9 @@
 #include "io/builtin_formats.hpp"
 #include "io/network_text.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/core/limits.hpp"
-#include "pgm/detail/file.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 
 namespace pgm {
 namespace {
@@ -269,7 +269,7 @@ class net_parser {
       has_data = true;
       table.values_at = start.at;
       read_value([&](const net_token& leaf) {
-        const auto value = leaf.type == net_token::kind::word ? detail::parse_double(leaf.text) : std::nullopt;
+        const auto value = leaf.type == net_token::kind::word ? text::parse_double(leaf.text) : std::nullopt;
         if (!value || !std::isfinite(*value)) {
           fail(leaf.at, "expected a probability in the data of '" + table.child + "', found " + describe(leaf));
         }
@@ -323,7 +323,7 @@ void write_data(const cpt<double>& table, std::ostream& out) {
     for (std::size_t p = codes.size(); p-- > 0 && codes[p] + 1 == cards[p];) ++closing;
     if (u > 0) out << "\n         " << std::string(codes.size() - opening, ' ');
     out << std::string(opening, '(') << '(';
-    for (std::size_t x = 0; x < j; ++x) out << (x ? " " : "") << detail::format_double(values[u * j + x]);
+    for (std::size_t x = 0; x < j; ++x) out << (x ? " " : "") << text::format_double(values[u * j + x]);
     out << ')' << std::string(closing, ')');
   }
   out << ";\n";
@@ -336,7 +336,7 @@ bayesian_network parse_net(std::string_view text, const std::string& source, con
 }
 
 bayesian_network read_net(const std::filesystem::path& path, const network_read_options& options) {
-  return parse_net(detail::read_file(path), path.string(), options);
+  return parse_net(pgm::read_file(path), path.string(), options);
 }
 
 std::optional<std::string> net_name_problem(std::string_view name) {
@@ -376,8 +376,8 @@ void write_net(const bayesian_network& network, std::ostream& out, const net_wri
     if (options.properties) {
       if (v.has_intervals()) {
         std::vector<std::string> edges;
-        for (const double e : v.edges()) edges.push_back(detail::format_double(e));
-        text << "  pgm_edges = \"" << detail::join(edges, " ") << "\";\n";
+        for (const double e : v.edges()) edges.push_back(text::format_double(e));
+        text << "  pgm_edges = \"" << text::join(edges, " ") << "\";\n";
       }
       const auto& tags = v.tags();
       for (const auto& [key, value] : {std::pair<const char*, const std::string*>{"quantity", &tags.quantity},
@@ -411,7 +411,7 @@ std::string to_net(const bayesian_network& network, const net_write_options& opt
 
 void write_net(const bayesian_network& network, const std::filesystem::path& path, const net_write_options& options) {
   const auto text = to_net(network, options);
-  detail::write_file_atomically(path, [&](std::ostream& out) { out << text; });
+  pgm::write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
 network_format_codec detail::net_format() {

@@ -13,7 +13,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
 #include "pgm/core/mixed_radix.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/io/read_options.hpp"
 
 namespace pgm::detail {
@@ -102,7 +102,7 @@ inline bool apply_pgm_property(declared_variable& v, std::string_view key, std::
     std::string piece;
     auto flush = [&] {
       if (piece.empty()) return;
-      const auto number = parse_double(piece);
+      const auto number = text::parse_double(piece);
       if (!number) throw model_error("the edges of '" + v.name + "' must be numbers, found '" + piece + "'");
       edges.push_back(*number);
       piece.clear();

@@ -15,9 +15,9 @@
 #include "io/builtin_formats.hpp"
 #include "io/network_text.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/file.hpp"
 #include "pgm/core/limits.hpp"
-#include "pgm/detail/file.hpp"
-#include "pgm/detail/text.hpp"
+#include "pgm/core/text.hpp"
 
 namespace pgm {
 namespace {
@@ -400,7 +400,7 @@ class xmlbif_reader {
       if (eq == std::string::npos) continue;  // pgmpy writes an empty <PROPERTY/>
       const std::string_view view = text;
       try {
-        detail::apply_pgm_property(v, detail::trim(view.substr(0, eq)), detail::trim(view.substr(eq + 1)), ", \t\n");
+        detail::apply_pgm_property(v, text::trim(view.substr(0, eq)), text::trim(view.substr(eq + 1)), ", \t\n");
       } catch (const model_error& e) {
         fail(at(property), e.what());
       }
@@ -434,7 +434,7 @@ class xmlbif_reader {
       const auto word = numbers.substr(start, i - start);
       // Found only for an error: a scan of the file per number would make reading quadratic.
       const auto where = [&] { return verbatim ? position(offset_of(text_node) + start) : table.values_at; };
-      const auto value = detail::parse_double(word);
+      const auto value = text::parse_double(word);
       if (!value || !std::isfinite(*value)) {
         fail(where(),
              "expected a probability in the table of '" + table.child + "', found '" + std::string(word) + "'");
@@ -465,7 +465,7 @@ bayesian_network parse_xmlbif(std::string_view text, const std::string& source, 
 }
 
 bayesian_network read_xmlbif(const std::filesystem::path& path, const network_read_options& options) {
-  return parse_xmlbif(detail::read_file(path), path.string(), options);
+  return parse_xmlbif(pgm::read_file(path), path.string(), options);
 }
 
 void write_xmlbif(const bayesian_network& network, std::ostream& out, const xmlbif_write_options& options) {
@@ -490,8 +490,8 @@ void write_xmlbif(const bayesian_network& network, std::ostream& out, const xmlb
     if (!options.properties) continue;
     if (v.has_intervals()) {
       std::vector<std::string> edges;
-      for (const double e : v.edges()) edges.push_back(detail::format_double(e));
-      add_text(node, "PROPERTY", "edges = " + detail::join(edges, ", "));
+      for (const double e : v.edges()) edges.push_back(text::format_double(e));
+      add_text(node, "PROPERTY", "edges = " + text::join(edges, ", "));
     }
     const auto& tags = v.tags();
     for (const auto& [key, value] : {std::pair<const char*, const std::string*>{"quantity", &tags.quantity},
@@ -512,7 +512,7 @@ void write_xmlbif(const bayesian_network& network, std::ostream& out, const xmlb
     std::string values;
     for (const double value : table.values()) {
       if (!values.empty()) values += ' ';
-      values += detail::format_double(value);
+      values += text::format_double(value);
     }
     add_text(node, "TABLE", values);
   }
@@ -528,7 +528,7 @@ std::string to_xmlbif(const bayesian_network& network, const xmlbif_write_option
 void write_xmlbif(const bayesian_network& network, const std::filesystem::path& path,
                   const xmlbif_write_options& options) {
   const auto text = to_xmlbif(network, options);
-  detail::write_file_atomically(path, [&](std::ostream& out) { out << text; });
+  pgm::write_file_atomically(path, [&](std::ostream& out) { out << text; });
 }
 
 network_format_codec detail::xmlbif_format() {

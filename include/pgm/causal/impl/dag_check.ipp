@@ -9,7 +9,7 @@ namespace pgm {
 PGM_DECL dag_check check_dag(const network_structure& structure, const dataset& data,
                              const dag_check_options& options) {
   if (!(options.alpha > 0.0 && options.alpha < 1.0)) {
-    throw model_error("alpha must lie strictly between 0 and 1, got " + detail::format_double(options.alpha));
+    throw model_error("alpha must lie strictly between 0 and 1, got " + text::format_double(options.alpha));
   }
   const auto& graph = structure.graph();
   const auto n = structure.size();

@@ -15,17 +15,17 @@ PGM_DECL std::optional<std::string> correspondence::related_to(std::string_view 
 PGM_DECL correspondence parse_correspondence(std::string_view text) {
   correspondence map;
   std::size_t position = 0;
-  for (const auto& raw : detail::split(text, ',')) {
+  for (const auto& raw : text::split(text, ',')) {
     ++position;
-    const std::string entry(detail::trim(raw));
+    const std::string entry(text::trim(raw));
     auto fail = [&](const std::string& why) -> void {
       throw model_error("map entry " + std::to_string(position) + " ('" + entry + "') " + why +
                         "; expected 'target=prior', 'target~prior', 'target==prior' or "
                         "'prior@value'");
     };
     auto pair_at = [&](std::size_t at, std::size_t width) {
-      std::string left(detail::trim(std::string_view(entry).substr(0, at)));
-      std::string right(detail::trim(std::string_view(entry).substr(at + width)));
+      std::string left(text::trim(std::string_view(entry).substr(0, at)));
+      std::string right(text::trim(std::string_view(entry).substr(at + width)));
       if (left.empty() || right.empty()) fail("lacks a name");
       return std::pair{std::move(left), std::move(right)};
     };
@@ -66,7 +66,7 @@ PGM_DECL std::string to_string(const correspondence& map) {
   for (const auto& [t, p] : map.identical) entries.push_back(t + "==" + p);
   for (const auto& [t, p] : map.related) entries.push_back(t + "~" + p);
   for (const auto& [p, pin] : map.pinned) entries.push_back(p + "@" + (pin.marginalize() ? "*" : pin.value));
-  return detail::join(entries, ",");
+  return text::join(entries, ",");
 }
 
 }  // namespace pgm

@@ -19,7 +19,7 @@ PGM_DECL variable_id dag::id(std::string_view name) const {
   if (it == index_.end()) {
     std::vector<std::string> known;
     for (const auto& [node, vertex] : index_) known.push_back(node);
-    throw model_error("unknown variable '" + std::string(name) + "' (known: " + detail::list_for_message(known) + ")");
+    throw model_error("unknown variable '" + std::string(name) + "' (known: " + text::list_for_message(known) + ")");
   }
   return to_id(it->second);
 }

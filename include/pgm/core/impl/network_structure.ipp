@@ -30,13 +30,13 @@ PGM_DECL void network_structure::update_variable(variable replacement) {
 PGM_DECL std::vector<named_edge> parse_edge_list(std::string_view text) {
   std::vector<named_edge> edges;
   std::size_t number = 0;
-  for (const auto& piece : detail::split(text, ',')) {
+  for (const auto& piece : text::split(text, ',')) {
     ++number;
     const auto arrow = piece.find("->");
     const auto from =
-        arrow == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(0, arrow));
+        arrow == std::string::npos ? std::string_view{} : text::trim(std::string_view(piece).substr(0, arrow));
     const auto to =
-        arrow == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(arrow + 2));
+        arrow == std::string::npos ? std::string_view{} : text::trim(std::string_view(piece).substr(arrow + 2));
     if (from.empty() || to.empty() || to.find("->") != std::string_view::npos) {
       throw model_error("edge " + std::to_string(number) + " ('" + piece + "') is not of the form 'from->to'");
     }

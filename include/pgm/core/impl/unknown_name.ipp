@@ -12,13 +12,13 @@ PGM_DECL unknown_name::unknown_name(std::string kind, std::string name, std::vec
       kind_(std::move(kind)),
       name_(std::move(name)),
       known_(std::move(known)),
-      suggestion_(detail::closest_name(name_, known_)) {}
+      suggestion_(text::closest_name(name_, known_)) {}
 
 PGM_DECL std::string unknown_name::message(const std::string& kind, const std::string& name,
                                            const std::vector<std::string>& known, const std::string& where) {
-  const auto near = detail::closest_name(name, known);
+  const auto near = text::closest_name(name, known);
   return "unknown " + kind + " '" + name + "'" + (near ? "; did you mean '" + *near + "'?" : "") +
-         " (known: " + detail::list_for_message(known, 40) + (where.empty() ? "" : "; " + where) + ")";
+         " (known: " + text::list_for_message(known, 40) + (where.empty() ? "" : "; " + where) + ")";
 }
 
 }  // namespace pgm

@@ -32,13 +32,13 @@ PGM_DECL std::optional<state_index> variable::find_state(std::string_view label)
 PGM_DECL state_index variable::state(std::string_view label) const {
   if (auto found = find_state(label)) return *found;
   throw model_error("variable '" + name_ + "' has no state '" + std::string(label) +
-                    "' (states: " + detail::list_for_message(states_) + ")");
+                    "' (states: " + text::list_for_message(states_) + ")");
 }
 
 PGM_DECL std::optional<double> variable::midpoint(state_index state) const {
   const auto i = state.value();
   if (has_intervals()) return 0.5 * (edges_[i] + edges_[i + 1]);
-  auto value = detail::parse_double(states_.at(i));
+  auto value = text::parse_double(states_.at(i));
   if (value && std::isfinite(*value)) return value;
   return std::nullopt;
 }

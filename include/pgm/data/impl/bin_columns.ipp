@@ -13,7 +13,7 @@ PGM_DECL discrete_column values_as_states(const continuous_column& values) {
   }
   const std::vector<double> levels(distinct.begin(), distinct.end());
   std::vector<std::string> labels;
-  for (double level : levels) labels.push_back(detail::format_double(level));
+  for (double level : levels) labels.push_back(text::format_double(level));
   variable var(values.name(), std::move(labels), values.tags());
   const auto missing = values.missing();
   auto codes = make_code_vector(var.cardinality() + (missing ? 1 : 0), values.size());

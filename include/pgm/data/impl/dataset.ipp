@@ -129,7 +129,7 @@ PGM_DECL std::size_t dataset::position(std::string_view name) const {
   const auto it = index_.find(name);
   if (it == index_.end()) {
     throw data_error(prefix() + "there is no column '" + std::string(name) +
-                     "' (columns: " + detail::list_for_message(names()) + ")");
+                     "' (columns: " + text::list_for_message(names()) + ")");
   }
   return it->second;
 }

@@ -10,11 +10,11 @@ PGM_DECL state_index state_of(const variable& v, const planned_value& value) {
   if (const auto* label = std::get_if<std::string>(&value)) return v.state(*label);
   const double number = std::get<double>(value);
   if (!std::isfinite(number)) {
-    throw model_error("'" + v.name() + "': " + detail::format_double(number) + " is not a finite number");
+    throw model_error("'" + v.name() + "': " + text::format_double(number) + " is not a finite number");
   }
   if (!v.has_intervals()) {
-    throw model_error("'" + v.name() + "' has no interval edges, so the number " + detail::format_short(number) +
-                      " cannot be binned; give one of its states (" + detail::list_for_message(v.states()) + ")");
+    throw model_error("'" + v.name() + "' has no interval edges, so the number " + text::format_short(number) +
+                      " cannot be binned; give one of its states (" + text::list_for_message(v.states()) + ")");
   }
   return v.bin(number);
 }
@@ -31,7 +31,7 @@ PGM_DECL std::vector<observation> resolve(const bayesian_network& network, const
 
 PGM_DECL planned_value planned_value_of(const variable& v, std::string_view text) {
   if (!text.empty() && text.front() == '@') return std::string(text.substr(1));
-  if (const auto number = detail::parse_double(text); number && (v.has_intervals() || !v.find_state(text))) {
+  if (const auto number = text::parse_double(text); number && (v.has_intervals() || !v.find_state(text))) {
     return *number;
   }
   return std::string(text);
@@ -39,12 +39,12 @@ PGM_DECL planned_value planned_value_of(const variable& v, std::string_view text
 
 PGM_DECL assignment parse_assignment(std::string_view text, const bayesian_network& network) {
   assignment result;
-  for (const auto& piece : detail::split(text, ',')) {
+  for (const auto& piece : text::split(text, ',')) {
     const auto equals = piece.find('=');
     const auto name =
-        equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(0, equals));
+        equals == std::string::npos ? std::string_view{} : text::trim(std::string_view(piece).substr(0, equals));
     const auto value =
-        equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(equals + 1));
+        equals == std::string::npos ? std::string_view{} : text::trim(std::string_view(piece).substr(equals + 1));
     if (name.empty() || value.empty()) throw model_error("'" + piece + "' is not of the form name=value");
     const auto& v = network.structure().at(node_of(network, name));
     if (!result.emplace(std::string(name), planned_value_of(v, value)).second) {

@@ -21,8 +21,8 @@ namespace pgm::detail {
 
 PGM_DECL void throw_missing(const success_event& success, const std::vector<std::string>& missing) {
   throw model_error("no value is given for " + std::string(missing.size() == 1 ? "" : "the parents ") +
-                    list_for_message(missing) + (missing.size() == 1 ? ", a parent" : "") + " of '" + success.variable +
-                    "'; assign " + (missing.size() == 1 ? "it" : "them") + " or ask to marginalize");
+                    text::list_for_message(missing) + (missing.size() == 1 ? ", a parent" : "") + " of '" +
+                    success.variable + "'; assign " + (missing.size() == 1 ? "it" : "them") + " or ask to marginalize");
 }
 
 PGM_DECL bool observes_descendant(const bayesian_network& network, variable_id node,

@@ -11,7 +11,7 @@ PGM_DECL void check_epsilon(double epsilon) {
     throw model_error(
         "epsilon must be at least 0 and below 1 (success is a prediction above epsilon, and no "
         "probability exceeds 1), got " +
-        detail::format_double(epsilon));
+        text::format_double(epsilon));
   }
 }
 

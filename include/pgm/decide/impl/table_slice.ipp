@@ -48,7 +48,7 @@ PGM_DECL table_slice slice_table(const bayesian_network& network, const table_sl
   for (const auto* axis : {&request.x, &request.y}) {
     if (!is_parent(*axis)) {
       throw model_error("'" + *axis + "' is not a parent of '" + request.node +
-                        "' (its parents: " + (parent_names.empty() ? "none" : detail::join(parent_names)) + ")");
+                        "' (its parents: " + (parent_names.empty() ? "none" : text::join(parent_names)) + ")");
     }
   }
   if (request.x == request.y) throw model_error("the two axes are both '" + request.x + "'");
@@ -70,7 +70,7 @@ PGM_DECL table_slice slice_table(const bayesian_network& network, const table_sl
       if (!set) open.push_back(name);
     }
     if (!open.empty()) {
-      throw model_error("'" + request.node + "' has more parents than the two axes: give " + detail::join(open) +
+      throw model_error("'" + request.node + "' has more parents than the two axes: give " + text::join(open) +
                         " a state each (e.g. " + open.front() + "=" +
                         (network.at(open.front()).has_intervals() ? "@" : "") +
                         network.at(open.front()).states().front() + "), or average over them");

@@ -20,9 +20,9 @@ PGM_DECL void json_reader::only_keys(const nlohmann::json& object, const std::st
   for (const auto& item : object.items()) {
     const auto& key = item.key();
     if (std::find(known.begin(), known.end(), key) != known.end()) continue;
-    const auto near = closest_name(key, known);
+    const auto near = text::closest_name(key, known);
     fail(path + "/" + key, "unknown key '" + key + "'" + (near ? "; did you mean '" + *near + "'?" : "") +
-                               " (the keys here: " + join(known) + ")");
+                               " (the keys here: " + text::join(known) + ")");
   }
 }
 
@@ -115,7 +115,7 @@ PGM_DECL void json_reader::check_format(const nlohmann::json& document, const ch
     fail("/format", "expected \"" + std::string(expected) + "\", found \"" + format + "\"");
   }
   const auto version = number(member(document, "", "version"), "/version");
-  if (version != 1) fail("/version", "this pgm reads version 1, the file is version " + format_double(version));
+  if (version != 1) fail("/version", "this pgm reads version 1, the file is version " + text::format_double(version));
 }
 
 PGM_DECL void json_reader::check_depth(std::string_view text) const {

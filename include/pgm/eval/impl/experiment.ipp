@@ -43,7 +43,7 @@ PGM_DECL prepared_target prepare_target(const scenario& s, std::size_t index, co
   if (!success) {
     throw data_error("task '" + t.task + "': '" + s.target_node + "' has no success state" +
                      (facts.success_state.empty() ? "" : " '" + facts.success_state + "'") +
-                     " (its states: " + detail::list_for_message(child.states()) + ")");
+                     " (its states: " + text::list_for_message(child.states()) + ")");
   }
   target.success_state = success->value();
 

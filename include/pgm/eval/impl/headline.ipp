@@ -24,7 +24,7 @@ PGM_DECL std::string headline(const scenario& s, const std::string& target,
                               const std::vector<aggregated_point>& summary) {
   std::string text = s.title + ", " + target + ": success after prevention at |D| = 0:";
   for (const auto& entry : prevention_at_zero_data(summary, s.name, target)) {
-    text += "  " + entry.strategy + " " + detail::format_short(100 * entry.success, 3) + "%";
+    text += "  " + entry.strategy + " " + text::format_short(100 * entry.success, 3) + "%";
   }
   return text;
 }

@@ -30,7 +30,7 @@ PGM_DECL std::string gnuplot_script(const scenario& s, const std::string& target
       block_of[metric + "#" + line] = name;
       g << name << " << EOD\n";
       for (const auto* p : points) {
-        g << p->rows << ' ' << detail::format_double(p->mean) << ' ' << detail::format_double(p->standard_deviation)
+        g << p->rows << ' ' << text::format_double(p->mean) << ' ' << text::format_double(p->standard_deviation)
           << '\n';
       }
       g << "EOD\n";
@@ -41,7 +41,7 @@ PGM_DECL std::string gnuplot_script(const scenario& s, const std::string& target
   const std::vector<std::string> palette{"#2ca02c", "#d62728", "#e6b800", "#8c564b", "#17becf"};
   std::size_t rank = 0;
   for (double w : s.weights) {
-    if (w > 0) colour.emplace(detail::format_short(w), palette[std::min(rank++, palette.size() - 1)]);
+    if (w > 0) colour.emplace(text::format_short(w), palette[std::min(rank++, palette.size() - 1)]);
   }
   const std::vector<std::pair<std::string, std::string>> metrics{{"max_difference", "Max-Difference"},
                                                                  {"mean_difference", "Mean-Difference"},
@@ -80,7 +80,7 @@ PGM_DECL std::string gnuplot_script(const scenario& s, const std::string& target
           }
         }
         if (metric == "failure_prevention") add("oracle|0", "oracle", "lw 1 dt 4 lc rgb '#7f7f7f'");
-        g << "plot " << detail::join(plots, ", \\\n     ") << "\n";
+        g << "plot " << text::join(plots, ", \\\n     ") << "\n";
       }
     }
     g << "unset multiplot\n";

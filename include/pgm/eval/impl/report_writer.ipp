@@ -25,7 +25,7 @@ PGM_DECL void report_writer::add(const scenario& s, const std::vector<experiment
     const auto stem = folder_ / (s.name + "-" + t.task);
     const auto script = gnuplot_script(s, t.task, summary, stem);
     const std::filesystem::path script_file = stem.string() + ".gp";
-    detail::write_file_atomically(script_file, [&](std::ostream& out) { out << script; });
+    pgm::write_file_atomically(script_file, [&](std::ostream& out) { out << script; });
     if (options_.render_plots && !options_.render_plots(script_file)) {
       say("the plot script " + script_file.string() + " failed to render");
     }

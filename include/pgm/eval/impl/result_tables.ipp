@@ -11,16 +11,16 @@ PGM_DECL void write_points_csv(const std::vector<experiment_point>& points, std:
   for (const auto& p : points) {
     out << detail::csv_text(p.scenario) << ',' << detail::csv_text(p.target) << ',' << detail::csv_text(p.strategy)
         << ',' << detail::csv_text(p.weight) << ',' << p.rows << ',' << p.repetition << ',' << to_string(p.metric)
-        << ',' << detail::format_double(p.value) << '\n';
+        << ',' << text::format_double(p.value) << '\n';
   }
 }
 
 PGM_DECL void write_summary_csv(const std::vector<aggregated_point>& summary, std::ostream& out) {
-  out << detail::join(detail::summary_columns, ",") << '\n';
+  out << text::join(detail::summary_columns, ",") << '\n';
   for (const auto& p : summary) {
     out << detail::csv_text(p.scenario) << ',' << detail::csv_text(p.target) << ',' << detail::csv_text(p.strategy)
         << ',' << detail::csv_text(p.weight) << ',' << p.rows << ',' << to_string(p.metric) << ','
-        << detail::format_double(p.mean) << ',' << detail::format_double(p.standard_deviation) << ',' << p.repetitions
+        << text::format_double(p.mean) << ',' << text::format_double(p.standard_deviation) << ',' << p.repetitions
         << '\n';
   }
 }
@@ -38,7 +38,7 @@ PGM_DECL std::vector<aggregated_point> parse_summary_csv(std::string_view text, 
     if (!found) {
       throw parse_error(source, 1, 1,
                         "the header has no column '" + std::string(detail::summary_columns[c]) + "' (a summary has " +
-                            detail::join(detail::summary_columns) + ")");
+                            text::join(detail::summary_columns) + ")");
     }
     position[c] = *found;
   }
@@ -65,7 +65,7 @@ PGM_DECL std::vector<aggregated_point> parse_summary_csv(std::string_view text, 
       return value;
     };
     auto real = [&](std::size_t c) {
-      const auto value = detail::parse_double(field(c).text);
+      const auto value = text::parse_double(field(c).text);
       if (!value || !std::isfinite(*value)) fail(c, "expected a finite number");
       return *value;
     };

@@ -13,7 +13,7 @@ PGM_DECL std::filesystem::path find_scenario_folder(const std::vector<std::files
   }
   std::vector<std::string> names;
   for (const auto& folder : task_folders) names.push_back(folder.string());
-  throw io_error("no scenarios folder under the task folders (" + detail::list_for_message(names) +
+  throw io_error("no scenarios folder under the task folders (" + text::list_for_message(names) +
                  "); give --tasks-dir");
 }
 

@@ -33,7 +33,7 @@ PGM_DECL task_source simulated_source(simulated_source_options options) {
       if (it == tasks.end()) {
         // The file is read once for both, so the checksum is of the text the task came from.
         const auto file = sim::find_task(name, options.task_folders);
-        const auto text = pgm::detail::read_file(file);
+        const auto text = pgm::read_file(file);
         it = tasks.emplace(name, sim::parse_task(text, file.string())).first;
         origins.emplace(name, options.backend + " on " + file.filename().string() + " (crc32 " +
                                   pgm::detail::crc32_hex(text) + ")");

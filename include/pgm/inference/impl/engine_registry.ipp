@@ -164,7 +164,7 @@ PGM_DECL std::string engine_registry::refusal(std::string_view name, std::string
   const auto serving =
       kind == model_kind<bayesian_network>() ? names_for<bayesian_network>() : names_for<markov_network>();
   return "the engine '" + std::string(name) + "' does not serve a " + std::string(kind) +
-         (name == "lw" ? " (it samples along a DAG)" : "") + "; engines for it: " + detail::list_for_message(serving);
+         (name == "lw" ? " (it samples along a DAG)" : "") + "; engines for it: " + text::list_for_message(serving);
 }
 
 }  // namespace pgm

@@ -7,7 +7,7 @@
 namespace pgm {
 
 PGM_DECL std::vector<std::string> parse_query_variables(std::string_view text) {
-  auto names = detail::split(text, ',');
+  auto names = text::split(text, ',');
   if (names.empty()) throw model_error("the query names no variable; give one or more, e.g. --query X,Y");
   for (const auto& name : names) {
     if (name.empty()) throw model_error("the query '" + std::string(text) + "' has an empty variable name");
@@ -17,12 +17,12 @@ PGM_DECL std::vector<std::string> parse_query_variables(std::string_view text) {
 
 PGM_DECL evidence parse_evidence(std::string_view text) {
   evidence result;
-  for (const auto& piece : detail::split(text, ',')) {
+  for (const auto& piece : text::split(text, ',')) {
     const auto equals = piece.find('=');
     const auto name =
-        equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(0, equals));
+        equals == std::string::npos ? std::string_view{} : text::trim(std::string_view(piece).substr(0, equals));
     const auto state =
-        equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(equals + 1));
+        equals == std::string::npos ? std::string_view{} : text::trim(std::string_view(piece).substr(equals + 1));
     if (name.empty() || state.empty()) {
       throw model_error("the evidence '" + piece + "' is not of the form variable=state");
     }
@@ -41,21 +41,21 @@ PGM_DECL intervention parse_intervention(std::string_view text) {
 
 PGM_DECL soft_evidence parse_soft_evidence(std::string_view text) {
   soft_evidence result;
-  for (const auto& piece : detail::split(text, ',')) {
+  for (const auto& piece : text::split(text, ',')) {
     const auto equals = piece.find('=');
     const auto name =
-        equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(0, equals));
+        equals == std::string::npos ? std::string_view{} : text::trim(std::string_view(piece).substr(0, equals));
     const auto weights =
-        equals == std::string::npos ? std::string_view{} : detail::trim(std::string_view(piece).substr(equals + 1));
+        equals == std::string::npos ? std::string_view{} : text::trim(std::string_view(piece).substr(equals + 1));
     if (name.empty() || weights.empty()) {
       throw model_error("the soft evidence '" + piece + "' is not of the form variable=w1:w2:…, e.g. rain=0.2:0.8");
     }
     std::vector<double> values;
-    for (const auto& number : detail::split(weights, ':')) {
-      const auto value = detail::parse_double(number);
+    for (const auto& number : text::split(weights, ':')) {
+      const auto value = text::parse_double(number);
       if (!value || !std::isfinite(*value)) {
         throw model_error("the soft evidence on '" + std::string(name) + "' has the weight " +
-                          detail::quoted_number(number) + ", which is not a finite number");
+                          text::quoted_number(number) + ", which is not a finite number");
       }
       values.push_back(*value);
     }
@@ -74,7 +74,7 @@ PGM_DECL std::string format_probability(double value, int digits) {
   if (digits < 1 || digits > 17) {
     throw model_error("digits must be between 1 and 17, got " + std::to_string(digits));
   }
-  return format_short(value, digits);
+  return text::format_short(value, digits);
 }
 
 /// A probability for JSON; null for one the engine could not estimate (NaN: a Gibbs chain on a
@@ -160,7 +160,7 @@ PGM_DECL void write_posterior_table(std::ostream& out, const posterior& p, const
     text += "  \"evidence_probability\": " + detail::json_probability(p.evidence_probability, number) + ",\n";
     if (p.evidence_probability < std::numeric_limits<double>::min()) {
       // Beyond a double: the logarithm carries it.
-      text += "  \"log_evidence_probability\": " + detail::format_double(p.log_evidence_probability) + ",\n";
+      text += "  \"log_evidence_probability\": " + text::format_double(p.log_evidence_probability) + ",\n";
     }
     if (!p.engine.empty()) text += "  \"engine\": " + detail::json_text(p.engine) + ",\n";
     text += "  \"distribution\": [";
@@ -257,7 +257,7 @@ PGM_DECL void write_mpe_table(std::ostream& out, const mpe_result& best, const e
     }
     text += "},\n  \"probability\": " + number(best.probability) +
             ",\n  \"joint_probability\": " + number(best.joint_probability) +
-            ",\n  \"log_probability\": " + detail::format_double(best.log_joint_probability) +
+            ",\n  \"log_probability\": " + text::format_double(best.log_joint_probability) +
             ",\n  \"engine\": " + detail::json_text(best.engine) + "\n}\n";
   }
   out << text;

@@ -42,8 +42,8 @@ PGM_DECL std::string describe(const std::vector<variable>& variables, const evid
   }
   for (const auto& l : observed.soft) {
     std::vector<std::string> weights;
-    for (double w : l.weights) weights.push_back(detail::format_short(w));
-    text += (text.empty() ? "" : ", ") + variables[l.variable.value()].name() + "~" + join(weights, ":");
+    for (double w : l.weights) weights.push_back(text::format_short(w));
+    text += (text.empty() ? "" : ", ") + variables[l.variable.value()].name() + "~" + text::join(weights, ":");
   }
   return text;
 }
@@ -53,12 +53,12 @@ PGM_DECL std::vector<double> checked_likelihood(const variable& v, const std::ve
   if (weights.size() != v.cardinality()) {
     throw model_error("the soft evidence on '" + name + "' has " + std::to_string(weights.size()) + " weights, but '" +
                       name + "' has " + std::to_string(v.cardinality()) + " states (" +
-                      detail::list_for_message(v.states()) + ")");
+                      text::list_for_message(v.states()) + ")");
   }
   bool positive = false;
   for (double w : weights) {
     if (!std::isfinite(w) || w < 0.0) {
-      throw model_error("the soft evidence on '" + name + "' has the weight " + detail::format_double(w) +
+      throw model_error("the soft evidence on '" + name + "' has the weight " + text::format_double(w) +
                         "; likelihoods are finite and not negative");
     }
     positive = positive || w > 0.0;

@@ -20,7 +20,7 @@ PGM_DECL void write_cpt_csv(const cpt<double>& table, std::ostream& out, const s
     }
     const auto column = table.column(config_index(u));
     for (std::size_t x = 0; x < column.size(); ++x) {
-      text += prefix + text::csv_escape(table.child().states()[x], ',') + "," + detail::format_double(column[x]) + "\n";
+      text += prefix + text::csv_escape(table.child().states()[x], ',') + "," + text::format_double(column[x]) + "\n";
     }
   }
   out << text;

@@ -145,7 +145,7 @@ PGM_DECL std::string encode_dataset(const dataset& data, const dataset_file_meta
 PGM_DECL void write_dataset_file(const std::filesystem::path& path, const dataset& data,
                                  const dataset_file_meta& meta) {
   const auto bytes = encode_dataset(data, meta);
-  detail::write_file_atomically(
+  pgm::write_file_atomically(
       path, [&](std::ostream& out) { out.write(bytes.data(), static_cast<std::streamsize>(bytes.size())); });
 }
 

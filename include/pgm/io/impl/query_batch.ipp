@@ -64,7 +64,7 @@ PGM_DECL std::vector<query_request> parse_query_batch(std::string_view text, con
             request.intervened = parse_intervention(f.text);
             break;
           case engine:
-            request.engine = std::string(detail::trim(f.text));
+            request.engine = std::string(text::trim(f.text));
             break;
           case unknown:
             break;

@@ -9,8 +9,8 @@ namespace pgm::detail {
 PGM_DECL void keep_pgm_property(std::string_view text, std::map<std::string, std::string>* properties) {
   const auto eq = text.find('=');
   if (properties == nullptr || eq == std::string_view::npos) return;
-  const auto key = trim(text.substr(0, eq));
-  if (key.starts_with("pgm.")) (*properties)[std::string(key.substr(4))] = std::string(trim(text.substr(eq + 1)));
+  const auto key = text::trim(text.substr(0, eq));
+  if (key.starts_with("pgm.")) (*properties)[std::string(key.substr(4))] = std::string(text::trim(text.substr(eq + 1)));
 }
 
 PGM_DECL std::optional<std::pair<std::size_t, double>> column_normalizer::normalize(std::span<double> values,
@@ -42,8 +42,8 @@ PGM_DECL void column_normalizer::report(const std::string& source, std::vector<s
   if (notes == nullptr || columns_ == 0) return;
   notes->push_back("'" + source + "': normalized " + std::to_string(columns_) + " column" + (columns_ == 1 ? "" : "s") +
                    " of " + std::to_string(tables_) + " table" + (tables_ == 1 ? "" : "s") +
-                   " that summed to 1 only within " + format_short(tolerance_) + " (largest deviation " +
-                   format_short(largest_, 3) + ")");
+                   " that summed to 1 only within " + text::format_short(tolerance_) + " (largest deviation " +
+                   text::format_short(largest_, 3) + ")");
 }
 
 }  // namespace pgm::detail

@@ -52,7 +52,8 @@ PGM_DECL std::vector<double> cells_of(const json_reader& reader, const nlohmann:
     }
     for (std::size_t x = 0; x < row.size(); ++x) {
       if (!std::isfinite(row[x]) || row[x] < 0.0) {
-        reader.fail(row_path + "/" + std::to_string(x), "expected a finite number >= 0, got " + format_double(row[x]));
+        reader.fail(row_path + "/" + std::to_string(x),
+                    "expected a finite number >= 0, got " + text::format_double(row[x]));
       }
     }
     values.insert(values.end(), row.begin(), row.end());
@@ -93,7 +94,7 @@ PGM_DECL parameter_prior prior_from_json(const json_reader& reader, const nlohma
     if (given.is_number_integer()) {
       text = std::to_string(given.get<std::int64_t>());
     } else if (given.is_number()) {
-      text = format_double(reader.number(given, key_path));
+      text = text::format_double(reader.number(given, key_path));
     } else if (given.is_boolean()) {
       text = given.get<bool>() ? "true" : "false";
     } else {

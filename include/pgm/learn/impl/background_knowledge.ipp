@@ -8,8 +8,8 @@ namespace pgm {
 
 PGM_DECL std::vector<std::vector<std::string>> parse_tiers(std::string_view text) {
   std::vector<std::vector<std::string>> tiers;
-  for (const auto& tier : detail::split(text, ';')) {
-    auto names = detail::split(tier, ',');
+  for (const auto& tier : text::split(text, ';')) {
+    auto names = text::split(tier, ',');
     for (const auto& name : names) {
       if (name.empty()) {
         throw model_error("tier " + std::to_string(tiers.size() + 1) + " ('" + tier + "') has an empty name");
@@ -31,7 +31,7 @@ PGM_DECL edge_constraints::edge_constraints(const background_knowledge& knowledg
     const auto it = index.find(name);
     if (it == index.end()) {
       throw model_error("unknown variable '" + name + "' in the " + where +
-                        " (variables: " + detail::list_for_message(names) + ")");
+                        " (variables: " + text::list_for_message(names) + ")");
     }
     return it->second;
   };

@@ -79,7 +79,7 @@ PGM_DECL bootstrap_result bootstrap_structure(const dataset& data, std::span<con
   if (options.replicates == 0) throw model_error("the bootstrap needs at least one replicate");
   if (options.threshold && !(*options.threshold >= 0.0 && *options.threshold <= 1.0)) {
     throw model_error("the bootstrap threshold must lie between 0 and 1, got " +
-                      detail::format_short(*options.threshold));
+                      text::format_short(*options.threshold));
   }
   const std::size_t n = names.size();
   const std::size_t rows = data.rows();

@@ -19,7 +19,7 @@ PGM_DECL cpdag::cpdag(std::vector<std::string> names)
 PGM_DECL variable_id cpdag::id(std::string_view name) const {
   const auto it = index_.find(name);
   if (it == index_.end()) {
-    throw model_error("unknown variable '" + std::string(name) + "' (known: " + detail::list_for_message(names_) + ")");
+    throw model_error("unknown variable '" + std::string(name) + "' (known: " + text::list_for_message(names_) + ")");
   }
   return variable_id(static_cast<variable_id::rep>(it->second));
 }

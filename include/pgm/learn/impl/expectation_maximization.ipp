@@ -9,7 +9,7 @@ namespace pgm {
 PGM_DECL std::string summary_of(const em_result& em) {
   return "EM: " + std::to_string(em.iterations) + " iterations" +
          (em.converged ? " (converged)" : " (stopped at the iteration limit)") + ", log-likelihood " +
-         detail::format_double(em.log_likelihood) + ", " + std::to_string(em.patterns) + " distinct rows (" +
+         text::format_double(em.log_likelihood) + ", " + std::to_string(em.patterns) + " distinct rows (" +
          std::to_string(em.incomplete_patterns) + " with a missing value)" +
          (em.restart > 0 ? ", from start " + std::to_string(em.restart + 1) : "");
 }
@@ -34,8 +34,8 @@ PGM_DECL observed_patterns patterns_of(const network_structure& structure, const
     const auto& column = data.discrete(v.name());
     if (column.var().states() != v.states()) {
       throw data_error((data.source().empty() ? std::string() : data.source() + ": ") + "column '" + v.name() +
-                       "' has the states {" + detail::list_for_message(column.var().states()) +
-                       "} but the network expects {" + detail::list_for_message(v.states()) + "}");
+                       "' has the states {" + text::list_for_message(column.var().states()) +
+                       "} but the network expects {" + text::list_for_message(v.states()) + "}");
     }
     columns[i] = &column;
   }

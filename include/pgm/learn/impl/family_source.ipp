@@ -13,8 +13,8 @@ PGM_DECL discrete_column recode_to(const discrete_column& column, const variable
     const auto found = known.find_state(label);
     if (!found) {
       throw data_error((source.empty() ? std::string() : source + ": ") + "column '" + column.name() +
-                       "' holds the value '" + detail::printable(label) + "', which is not a state of '" +
-                       known.name() + "' {" + detail::list_for_message(known.states()) + "}");
+                       "' holds the value '" + text::printable(label) + "', which is not a state of '" + known.name() +
+                       "' {" + text::list_for_message(known.states()) + "}");
     }
     index_of.push_back(static_cast<std::uint32_t>(found->value()));
   }

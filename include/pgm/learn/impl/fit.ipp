@@ -27,8 +27,8 @@ PGM_DECL network_structure with_intervals(network_structure structure, const dis
     const auto& own = structure.at(name);
     if (own.states() != binned.states()) {
       throw data_error("'" + std::string(source) + "' gives '" + name + "' the states {" +
-                       detail::list_for_message(binned.states()) + "}, the data {" +
-                       detail::list_for_message(own.states()) + "}" +
+                       text::list_for_message(binned.states()) + "}, the data {" +
+                       text::list_for_message(own.states()) + "}" +
                        (own.cardinality() > binned.cardinality() ? "; are the columns still raw? bin them first" : ""));
     }
     structure.update_variable(variable::with_edges(name, own.states(), binned.edges(), binned.tags()));
@@ -44,8 +44,8 @@ PGM_DECL count_table count_node(const network_structure& structure, variable_id 
     const auto& column = data.discrete(v.name());
     if (column.var().states() != v.states()) {
       throw data_error((data.source().empty() ? std::string() : data.source() + ": ") + "column '" + v.name() +
-                       "' has the states {" + detail::join(column.var().states()) + "} but the model expects {" +
-                       detail::join(v.states()) + "}");
+                       "' has the states {" + text::join(column.var().states()) + "} but the model expects {" +
+                       text::join(v.states()) + "}");
     }
     return column;
   };

@@ -320,7 +320,7 @@ PGM_DECL search_result hill_climb(std::span<const discrete_column* const> column
     for (const auto& it : {from, to}) {
       if (it == index.end()) {
         throw model_error("the start network's edge " + e.from + "->" + e.to + " names a variable not in the data (" +
-                          detail::list_for_message(names) + ")");
+                          text::list_for_message(names) + ")");
       }
     }
     if (!constraints.allowed(from->second, to->second)) {
@@ -357,8 +357,7 @@ PGM_DECL search_result hill_climb(std::span<const discrete_column* const> column
   if (!options.favoured.empty()) {
     if (!(options.favour_weight >= 0.0) || !(options.favour_weight <= max_favour_weight)) {
       throw model_error("the structure prior's weight must be a number from 0 to " +
-                        detail::format_short(max_favour_weight) + ", got " +
-                        detail::format_short(options.favour_weight));
+                        text::format_short(max_favour_weight) + ", got " + text::format_short(options.favour_weight));
     }
     std::vector<double> bonus(n * n, 0.0);
     for (const auto& e : options.favoured) {

@@ -16,7 +16,7 @@ PGM_DECL ci_result test_independence(std::span<const std::uint64_t> counts, std:
                                      const ci_test_options& options) {
   if (!(options.min_rows_per_cell >= 0.0) || !std::isfinite(options.min_rows_per_cell)) {
     throw model_error("the minimum rows per cell must be a finite number >= 0, got " +
-                      detail::format_short(options.min_rows_per_cell));
+                      text::format_short(options.min_rows_per_cell));
   }
   const std::size_t cells = x_states * y_states;
   if (cells == 0 || counts.size() % cells != 0) {

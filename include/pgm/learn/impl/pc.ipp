@@ -68,7 +68,7 @@ PGM_DECL bool skeleton_worker::search(const edge_task& task, std::size_t level,
 
 PGM_DECL void check_pc_options(const pc_options& options) {
   if (!(options.alpha > 0.0 && options.alpha < 1.0)) {
-    throw model_error("alpha must lie strictly between 0 and 1, got " + detail::format_short(options.alpha));
+    throw model_error("alpha must lie strictly between 0 and 1, got " + text::format_short(options.alpha));
   }
 }
 

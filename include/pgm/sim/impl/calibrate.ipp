@@ -242,8 +242,8 @@ PGM_DECL std::string calibrated_task_text(std::string_view original, const calib
   const auto previous = physics.contains("analytic") ? physics["analytic"] : nlohmann::ordered_json::object();
   analytic["note"] = "fitted by pgm calibrate to " + std::to_string(result.rows) + " " + result.reference +
                      " experiments (seed " + std::to_string(result.seed) + "): log-likelihood " +
-                     pgm::detail::format_double(detail::rounded(result.log_likelihood_before, 6)) + " before, " +
-                     pgm::detail::format_double(detail::rounded(result.log_likelihood_after, 6)) + " after";
+                     pgm::text::format_double(detail::rounded(result.log_likelihood_before, 6)) + " before, " +
+                     pgm::text::format_double(detail::rounded(result.log_likelihood_after, 6)) + " after";
   for (const auto& [key, value] : previous.items()) {
     if (key != "note") analytic[key] = value;
   }

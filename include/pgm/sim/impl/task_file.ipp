@@ -13,7 +13,7 @@ PGM_DECL task_definition task_reader::read(const nlohmann::json& doc, const std:
   const auto format = string(member(doc, "", "format"), "/format");
   if (format != "pgm-task") fail("/format", "expected \"pgm-task\", found \"" + format + "\"");
   const auto version = number(member(doc, "", "version"), "/version");
-  if (version != 1) fail("/version", "version " + pgm::detail::format_double(version) + " is not supported (1 is)");
+  if (version != 1) fail("/version", "version " + pgm::text::format_double(version) + " is not supported (1 is)");
   // sample_sizes: free, for people (the paper's sizes of a reality task).
   only_keys(doc, "",
             {"format", "version", "name", "variant", "description", "note", "sample_sizes", "variables", "success",
@@ -21,7 +21,7 @@ PGM_DECL task_definition task_reader::read(const nlohmann::json& doc, const std:
   task.name = string(member(doc, "", "name"), "/name");
   task.variant = optional_string(doc, "variant", "/variant", "sim");
   if (const auto known = known_task_variants(); std::find(known.begin(), known.end(), task.variant) == known.end()) {
-    fail("/variant", "expected one of " + pgm::detail::join(known));
+    fail("/variant", "expected one of " + pgm::text::join(known));
   }
   task.description = optional_string(doc, "description", "/description", "");
   task.note = optional_string(doc, "note", "/note", "");
@@ -59,7 +59,7 @@ PGM_DECL task_definition task_reader::read(const nlohmann::json& doc, const std:
         graph.add_edge(e.from, e.to);
       } catch (const not_a_dag& cycle) {
         fail(where, "the structure is not a DAG: " + e.from + " -> " + e.to + " closes the cycle " +
-                        pgm::detail::join(cycle.cycle(), " -> "));
+                        pgm::text::join(cycle.cycle(), " -> "));
       } catch (const model_error& problem) {
         fail(where, problem.what());
       }

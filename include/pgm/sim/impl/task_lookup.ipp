@@ -38,7 +38,7 @@ PGM_DECL std::filesystem::path find_task(std::string_view name, const std::vecto
   }
   std::vector<std::string> where;
   for (const auto& dir : directories) where.push_back(dir.string());
-  throw unknown_name("task", std::string(name), list_tasks(directories), "looked in " + pgm::detail::join(where));
+  throw unknown_name("task", std::string(name), list_tasks(directories), "looked in " + pgm::text::join(where));
 }
 
 }  // namespace pgm::sim

@@ -28,7 +28,7 @@ PGM_DECL prior_weight_choice choose_prior_weight(const count_table& counts, cons
   }
   if (counts.total() == 0) {
     choice.reason =
-        "no target data: every w > 0 gives the prior itself; w = " + detail::format_short(search.without_data);
+        "no target data: every w > 0 gives the prior itself; w = " + text::format_short(search.without_data);
     choice.log_evidence_on_grid.assign(choice.grid.size(), 0.0);
     return choice;
   }
@@ -39,18 +39,18 @@ PGM_DECL prior_weight_choice choose_prior_weight(const count_table& counts, cons
   }
   choice.weight = choice.grid[best];
   choice.log_evidence = choice.log_evidence_on_grid[best];
-  choice.reason = "w = " + detail::format_short(choice.weight, 3) + " maximizes the marginal likelihood of the " +
+  choice.reason = "w = " + text::format_short(choice.weight, 3) + " maximizes the marginal likelihood of the " +
                   std::to_string(counts.total()) + " target rows (log evidence " +
-                  detail::format_short(choice.log_evidence, 6) + ")";
+                  text::format_short(choice.log_evidence, 6) + ")";
   if (best == 0 || best + 1 == choice.grid.size()) {
     choice.reason += best == 0 ? "; at the grid's low end: the data trusts the prior little"
                                : "; at the grid's high end: the data agrees with the prior closely";
   } else {
     auto relative = [&](std::size_t k) {
-      return detail::format_short(choice.log_evidence_on_grid[k] - choice.log_evidence, 3);
+      return text::format_short(choice.log_evidence_on_grid[k] - choice.log_evidence, 3);
     };
-    choice.reason += "; neighbours w = " + detail::format_short(choice.grid[best - 1], 3) + " (" + relative(best - 1) +
-                     ") and w = " + detail::format_short(choice.grid[best + 1], 3) + " (" + relative(best + 1) + ")";
+    choice.reason += "; neighbours w = " + text::format_short(choice.grid[best - 1], 3) + " (" + relative(best - 1) +
+                     ") and w = " + text::format_short(choice.grid[best + 1], 3) + " (" + relative(best + 1) + ")";
   }
   return choice;
 }

@@ -68,7 +68,7 @@ PGM_DECL correspondence_candidate score_pair(const variable& target, const varia
     const double overlap = std::max(0.0, std::min(tr->second, pr->second) - std::max(tr->first, pr->first));
     const double span = std::max(tr->second, pr->second) - std::min(tr->first, pr->first);
     const double part = span > 0 ? overlap / span : 1.0;
-    add(part, 0.15, "value ranges overlap " + detail::format_short(100 * part, 3) + " %");
+    add(part, 0.15, "value ranges overlap " + text::format_short(100 * part, 3) + " %");
   } else if (tr.has_value() != pr.has_value()) {
     add(0.0, 0.15, "one is numeric, the other categorical");
   }
@@ -84,7 +84,7 @@ PGM_DECL correspondence_candidate score_pair(const variable& target, const varia
       double tv = 0;
       for (std::size_t s = 0; s < moved.size(); ++s) tv += std::abs(moved[s] - (*pm)[s]);
       tv /= 2;
-      add(1 - tv, 0.15, "marginals differ by " + detail::format_short(tv, 2) + " in total variation");
+      add(1 - tv, 0.15, "marginals differ by " + text::format_short(tv, 2) + " in total variation");
     } catch (const model_error&) {
       add(0.0, 0.15, "states cannot be matched");
     }

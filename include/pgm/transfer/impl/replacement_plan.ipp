@@ -36,8 +36,8 @@ PGM_DECL std::vector<std::size_t> match_child(const transfer_problem& problem) {
     used[child[s]] = true;
   }
   if (target.cardinality() != prior.cardinality() || std::find(used.begin(), used.end(), false) != used.end()) {
-    throw model_error("the states of '" + target.name() + "' {" + list_for_message(target.states()) +
-                      "} and of the prior's '" + prior.name() + "' {" + list_for_message(prior.states()) +
+    throw model_error("the states of '" + target.name() + "' {" + text::list_for_message(target.states()) +
+                      "} and of the prior's '" + prior.name() + "' {" + text::list_for_message(prior.states()) +
                       "} do not correspond one to one");
   }
   return child;

@@ -74,7 +74,7 @@ PGM_DECL state_mapping map_states(const variable& target, const variable& prior,
 }
 
 PGM_DECL std::size_t pinned_state(const variable& prior, const std::string& value) {
-  const auto number = detail::parse_double(value);
+  const auto number = text::parse_double(value);
   if (prior.has_intervals() && number && std::isfinite(*number)) return prior.bin(*number).value();
   if (const auto same = prior.find_state(value)) return same->value();
   if (number && std::isfinite(*number)) {

@@ -26,7 +26,7 @@ PGM_DECL transfer_problem::transfer_problem(const cpt<double>& prior_table, vari
 PGM_DECL std::size_t transfer_problem::success_state() const {
   if (const auto s = target_child_.find_state(options_.success_state)) return s->value();
   throw model_error("'" + target_child_.name() + "' has no success state '" + options_.success_state +
-                    "' (its states: " + detail::list_for_message(target_child_.states()) + ")");
+                    "' (its states: " + text::list_for_message(target_child_.states()) + ")");
 }
 
 PGM_DECL const char* to_string(replacement r) {
@@ -69,7 +69,7 @@ PGM_DECL std::string transferred_prior::describe_sources(config_index u) const {
       states += (k ? ", " : "") + prior_parents_[k].name() + "=" + prior_parents_[k].states()[codes[k]];
     }
     if (states.empty()) states = "(no parents)";
-    text += term.weight == 1.0 ? states : detail::format_short(term.weight, 4) + "·(" + states + ")";
+    text += term.weight == 1.0 ? states : text::format_short(term.weight, 4) + "·(" + states + ")";
   }
   return text;
 }
