@@ -90,19 +90,19 @@ PGM_DECL parameter_prior prior_from_json(const json_reader& reader, const nlohma
     if (!value.contains(option.name)) continue;
     const auto& given = value.at(option.name);
     const auto key_path = path + "/" + option.name;
-    std::string text;
+    std::string written;
     if (given.is_number_integer()) {
-      text = std::to_string(given.get<std::int64_t>());
+      written = std::to_string(given.get<std::int64_t>());
     } else if (given.is_number()) {
-      text = text::format_double(reader.number(given, key_path));
+      written = text::format_double(reader.number(given, key_path));
     } else if (given.is_boolean()) {
-      text = given.get<bool>() ? "true" : "false";
+      written = given.get<bool>() ? "true" : "false";
     } else {
-      text = reader.string(given, key_path);
+      written = reader.string(given, key_path);
     }
-    const auto refusal = option_value_refusal(option, text);
+    const auto refusal = option_value_refusal(option, written);
     if (!refusal.empty()) reader.fail(key_path, "the " + option.name + refusal);
-    settings += (settings.empty() ? "" : ",") + option.name + "=" + text;
+    settings += (settings.empty() ? "" : ",") + option.name + "=" + written;
   }
   reader.only_keys(value, path, keys);
   return registry.make(settings.empty() ? kind : kind + "[" + settings + "]");
