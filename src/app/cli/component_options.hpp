@@ -64,24 +64,18 @@ template <class Product>
 /// The text given to `option`, if it was given.
 [[nodiscard]] std::optional<std::string> given_value(const CLI::Option& option);
 
-/// A shorthand option that sets one option of a choice: --iss N for bdeu[iss=N].
-struct shorthand {
-  std::string flag;
-  std::string key;
-  std::optional<std::string> value;
-};
-
-/// The component `text` chooses, with the shorthands given set on it. A shorthand that cannot
-/// be set, or whose value its option refuses, is a usage error naming its flag.
+/// The component `text` chooses, with the shorthand options given (--iss N for bdeu[iss=N],
+/// each labelled by its flag) set on it. A shorthand that cannot be set, or whose value its
+/// option refuses, is a usage error naming its flag.
 template <class Product>
 [[nodiscard]] Product chosen_with(const component_registry<Product>& registry, std::string text,
-                                  const std::vector<shorthand>& shorthands) {
+                                  const std::vector<component_setting>& shorthands) {
   for (const auto& given : shorthands) {
     if (!given.value) continue;
     try {
       text = registry.with_setting(text, given.key, *given.value);
     } catch (const error& refused) {
-      throw CLI::ValidationError(given.flag, refused.what());
+      throw CLI::ValidationError(given.label, refused.what());
     }
   }
   return registry.make(text);

@@ -56,8 +56,7 @@ PGM_DECL component_choice dirichlet_prior::choice() const {
 }
 
 PGM_DECL family_pseudo_counts dirichlet_prior::pseudo_counts(const variable&, const std::vector<variable>&) const {
-  detail::check_pseudo_count(alpha, "the Dirichlet pseudo-count alpha");
-  return family_pseudo_counts::uniform(alpha);
+  return family_pseudo_counts::uniform(alpha);  // estimate() checks it
 }
 
 PGM_DECL std::vector<option_declaration> bdeu_prior::options() {
