@@ -68,6 +68,25 @@ TEST(csv_engine_test, plain_reader_reads_as_the_general_reader) {
   }
 }
 
+TEST(csv_engine_test, a_lone_cr_ends_a_blank_line_as_it_ends_a_record) {
+  // A chunk may start at any line's start, a lone CR's included, so a blank line ends where a
+  // record's line would: "\r b" is the line " b", not an empty field before it. (The fuzzer
+  // found two readings of one file that differed here.)
+  for (const bool quoted : {false, true}) {
+    const std::string text = std::string(quoted ? "\"a\"" : "a") + "\r\r\r\n\r b\r\r c\n";
+    std::vector<detail::csv_field> fields;
+    std::vector<std::pair<std::string, std::size_t>> seen;  // text, line
+    const auto lines = detail::for_each_record(text, ',', fields, [&](const auto& record) {
+      ASSERT_EQ(record.size(), 1u);
+      seen.emplace_back(record[0].text, record[0].line);
+    });
+    EXPECT_EQ(lines, 7u) << "quoted " << quoted;
+    EXPECT_EQ(seen, (std::vector<std::pair<std::string, std::size_t>>{{"a", 0}, {"b", 4}, {"c", 6}}))
+        << "quoted " << quoted;
+  }
+  expect_same("x\r\r\n\ry\r \t\rz");
+}
+
 TEST(csv_engine_test, records_are_read_alike_with_and_without_quotes) {
   // for_each_record takes the plain reader only for text without a quote.
   std::vector<detail::csv_field> fields;

@@ -250,6 +250,26 @@ TEST(csv_test, tricky_text_in_tiny_chunks) {
   EXPECT_EQ(mixed.discrete("x").var().states(), (std::vector<std::string>{"1", "2", "2.0", "late"}));
 }
 
+TEST(csv_test, lone_crs_read_alike_in_any_chunks) {
+  // Lone CRs end lines, blank or not, wherever a chunk starts; an error names the same place.
+  const std::string text = "x\n1\r\r\r\n\r-2\r\r3\r\n\r\r4";
+  csv_options options;
+  options.threads = 1;
+  const auto whole = parse(text, options);
+  EXPECT_THAT(whole.continuous("x").values(), ElementsAre(1.0, -2.0, 3.0, 4.0));
+  const std::string bad = "x\n1\r\r\r\n\r-2\r\r,\r\n\r\r4";
+  for (unsigned threads : {1u, 2u}) {
+    for (std::size_t chunk : {1u, 2u, 3u, 5u, 0u}) {
+      options.threads = threads;
+      options.chunk_bytes = chunk;
+      EXPECT_EQ(parse(text, options), whole) << "threads " << threads << " chunk " << chunk;
+      EXPECT_THAT([&] { parse(bad, options); },
+                  ThrowsMessage<parse_error>(HasSubstr("runs.csv:8:2: expected 1 fields as in the header, found 2")))
+          << "threads " << threads << " chunk " << chunk;
+    }
+  }
+}
+
 TEST(csv_test, the_scanner_reads_records_one_at_a_time) {
   detail::csv_scanner scanner(
       "\xEF\xBB\xBF"

@@ -114,17 +114,24 @@ class csv_record_reader {
     cursor_.line_start = cursor_.pos;
   }
 
-  // False when, before the whole input is here, the text ends in a line that is blank so far.
+  // Lines of blanks only, each ended as a record is (LF, CRLF or a lone CR), so that a reading
+  // from any line's start meets the same records. False when, before the whole input is here,
+  // the text ends in a line that is blank so far, or in a CR whose LF may follow.
   bool skip_blank_lines() {
     while (cursor_.pos < text_.size()) {
       std::size_t p = cursor_.pos;
-      while (p < text_.size() && (text_[p] == ' ' || text_[p] == '\t' || text_[p] == '\r')) ++p;
-      if (p < text_.size() && text_[p] == '\n') {
-        cursor_.pos = p + 1;
-        new_line();
-      } else if (p >= text_.size()) {
+      while (p < text_.size() && (text_[p] == ' ' || text_[p] == '\t')) ++p;
+      if (p >= text_.size()) {
         if (!final_) return false;
         cursor_.pos = p;
+      } else if (text_[p] == '\n' || text_[p] == '\r') {
+        ++p;
+        if (text_[p - 1] == '\r') {
+          if (p >= text_.size() && !final_) return false;
+          if (p < text_.size() && text_[p] == '\n') ++p;
+        }
+        cursor_.pos = p;
+        new_line();
       } else {
         return true;
       }
@@ -221,15 +228,16 @@ class csv_plain_reader {
     fields.clear();
     const std::size_t n = text_.size();
     const char* const text = text_.data();
-    while (true) {  // blank lines: only blanks and CRs before a line feed
+    while (true) {  // blank lines: only blanks before a line end (LF, CRLF or a lone CR)
       std::size_t p = pos_;
-      while (p < n && (text[p] == ' ' || text[p] == '\t' || text[p] == '\r')) ++p;
+      while (p < n && (text[p] == ' ' || text[p] == '\t')) ++p;
       if (p >= n) {
         pos_ = n;
         return false;
       }
-      if (text[p] != '\n') break;
-      pos_ = p + 1;
+      if (text[p] != '\n' && text[p] != '\r') break;
+      if (text[p++] == '\r' && p < n && text[p] == '\n') ++p;
+      pos_ = p;
       ++line_;
       line_start_ = pos_;
     }
