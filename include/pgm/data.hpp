@@ -6,6 +6,7 @@
 #include "pgm/data/bin_columns.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/discretizer.hpp"
+#include "pgm/data/episodes.hpp"
 #include "pgm/data/family_counts.hpp"
 #include "pgm/data/missing.hpp"
 #include "pgm/data/state_order.hpp"

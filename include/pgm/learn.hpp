@@ -14,6 +14,7 @@
 #include "pgm/learn/family_score_cache.hpp"
 #include "pgm/learn/family_source.hpp"
 #include "pgm/learn/fit.hpp"
+#include "pgm/learn/fit_dynamic.hpp"
 #include "pgm/learn/fit_statistics.hpp"
 #include "pgm/learn/hill_climbing.hpp"
 #include "pgm/learn/independence_test.hpp"

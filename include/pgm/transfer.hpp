@@ -3,6 +3,7 @@
 /// Prior transfer between tasks: the paper's Direct-, Cross- and Minimal-Replacement (eq. 7-9) and their seam.
 /// Every header of pgm/transfer/ in one include; target pgm::core.
 
+#include "pgm/transfer/dynamic_transfer.hpp"
 #include "pgm/transfer/network_transfer.hpp"
 #include "pgm/transfer/prior_transfer.hpp"
 #include "pgm/transfer/prior_weight.hpp"

@@ -14,7 +14,6 @@
 
 #include "network_handle.hpp"
 #include "pgm/core/dynamic_network.hpp"
-#include "pgm/core/file.hpp"
 #include "pgm/inference/dynamic_inference.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
@@ -112,10 +111,7 @@ void add_dynamic(py::module_& m) {
       .def("filter", &filter_steps)
       .def("most_probable", &most_probable_steps_of)
       .def("to_json", [](const dynamic_network& d) { return to_json(d).dump(2); })
-      .def("write", [](const dynamic_network& d, const std::filesystem::path& path) {
-        const auto text = to_json(d).dump(2) + "\n";
-        write_file_atomically(path, [&](std::ostream& out) { out << text; });
-      });
+      .def("write", [](const dynamic_network& d, const std::filesystem::path& path) { write_dynamic_json(d, path); });
   m.def("read_dynamic_json", &read_dynamic_json);
 }
 

@@ -20,52 +20,13 @@
 #include "pgm/io/csv.hpp"
 #include "pgm/io/json_model.hpp"
 #include "support/program_test.hpp"
+#include "support/random_dynamic_network.hpp"
 #include "support/random_network.hpp"
 
 namespace pgm {
 namespace dynamic_inference_test {
 
 using ::testing::HasSubstr;
-
-// A random 2-TBN: a random first slice over v0 … v(n−1); in the transition, each variable has up
-// to two parents among the earlier ones of its slice and up to two in the previous slice (any
-// variable, itself included), its tables from a flat Dirichlet (a zero among them with `zeros`).
-dynamic_network random_dynamic(std::uint64_t seed, std::size_t n, bool zeros = false) {
-  testing::random_network_options shape;
-  shape.nodes = n;
-  shape.max_parents = 2;
-  shape.max_states = 3;
-  const auto first = testing::random_network(seed, shape);
-  std::mt19937_64 engine(seed * 977);
-  std::exponential_distribution<double> gamma1(1.0);
-  std::vector<cpt<double>> tables;
-  for (std::size_t i = 0; i < n; ++i) {
-    std::vector<variable> parents;
-    for (std::size_t k = 0; k < i; ++k) {
-      if (engine() % 3 == 0 && parents.size() < 2) parents.push_back(first.variables()[k]);
-    }
-    std::size_t before = 0;
-    for (std::size_t k = 0; k < n && before < 2; ++k) {
-      if (engine() % 3 != 0) continue;
-      parents.push_back(detail::renamed(first.variables()[k], slice_name(first.variables()[k].name(), -1)));
-      ++before;
-    }
-    cpt<double> shape_of(first.variables()[i], parents);
-    const auto j = first.variables()[i].cardinality();
-    std::vector<double> values(shape_of.size());
-    for (std::size_t u = 0; u < shape_of.configurations(); ++u) {
-      double sum = 0.0;
-      for (std::size_t x = 0; x < j; ++x) {
-        values[u * j + x] = zeros && engine() % 4 == 0 ? 0.0 : gamma1(engine);
-        sum += values[u * j + x];
-      }
-      if (sum == 0.0) values[u * j] = sum = 1.0;
-      for (std::size_t x = 0; x < j; ++x) values[u * j + x] /= sum;
-    }
-    tables.emplace_back(first.variables()[i], parents, values);
-  }
-  return dynamic_network(first, tables);
-}
 
 // Random evidence at each of `horizon` steps: hard on about a third of the variables, soft on
 // some, do() on a few when `interventions`.
@@ -144,7 +105,7 @@ void expect_near(const std::vector<std::vector<double>>& a, const std::vector<st
 TEST(dynamic_inference_test, filtering_prediction_and_smoothing_equal_the_unrolled_junction_tree) {
   for (std::uint64_t seed = 1; seed <= 24; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    const auto model = random_dynamic(seed, 2 + seed % 4);
+    const auto model = testing::random_dynamic(seed, 2 + seed % 4);
     const std::size_t horizon = seed % 3 == 0 ? 20 : 1 + seed % 7;
     const std::size_t predict = seed % 4;
     const auto steps = random_steps(model, horizon, seed * 13, seed % 2 == 0);
@@ -176,7 +137,7 @@ TEST(dynamic_inference_test, filtering_prediction_and_smoothing_equal_the_unroll
 TEST(dynamic_inference_test, the_most_probable_sequence_is_the_unrolled_trees_most_probable_explanation) {
   for (std::uint64_t seed = 1; seed <= 24; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    const auto model = random_dynamic(seed + 50, 2 + seed % 4);
+    const auto model = testing::random_dynamic(seed + 50, 2 + seed % 4);
     const std::size_t horizon = seed % 3 == 0 ? 20 : 1 + seed % 7;
     const auto steps = random_steps(model, horizon, seed * 17, seed % 2 == 0);
     interface_filter filter(model);
@@ -207,7 +168,7 @@ TEST(dynamic_inference_test, zeros_in_the_tables_and_kept_messages_between_episo
   std::size_t checked = 0;
   for (std::uint64_t seed = 1; seed <= 12; ++seed) {
     SCOPED_TRACE("seed " + std::to_string(seed));
-    const auto model = random_dynamic(seed + 100, 3 + seed % 3, true);
+    const auto model = testing::random_dynamic(seed + 100, 3 + seed % 3, true);
     interface_filter filter(model);
     for (std::uint64_t episode = 0; episode < 3; ++episode) {
       const std::size_t horizon = 3 + (seed + episode) % 5;
@@ -232,7 +193,7 @@ TEST(dynamic_inference_test, zeros_in_the_tables_and_kept_messages_between_episo
 }
 
 TEST(dynamic_inference_test, the_interface_is_what_the_next_slice_depends_on) {
-  const auto model = random_dynamic(5, 4);
+  const auto model = testing::random_dynamic(5, 4);
   interface_filter filter(model);
   std::vector<variable_id> expected;
   for (std::size_t i = 0; i < model.size(); ++i) {
@@ -272,7 +233,7 @@ using filter_cli_test = pgm::testing::program_test;
 // junction tree's marginal, for filtering, smoothing and prediction; bad input is refused with
 // nothing written.
 TEST_F(filter_cli_test, writes_the_unrolled_trees_marginals_and_refuses_bad_input) {
-  const auto model = random_dynamic(7, 3);
+  const auto model = testing::random_dynamic(7, 3);
   const auto model_file = file("m.json", to_json(model).dump(2));
   std::mt19937_64 engine(3);
   std::string data = "episode,t";

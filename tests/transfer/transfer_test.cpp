@@ -230,6 +230,11 @@ TEST(transfer_test, correspondence_syntax) {
   EXPECT_EQ(map.pinned.at("yOff1").value, "0");
   EXPECT_TRUE(map.pinned.at("yOff2").marginalize());
   EXPECT_EQ(parse_correspondence(to_string(map)), map);
+  // A dynamic network's previous slice in a pair is no pin.
+  const auto slices = parse_correspondence("onTop=onTop1, xOff@-1==xOff1, yOff@-1~yOff1, xOff1@*");
+  EXPECT_EQ(slices.identical_to("xOff@-1"), "xOff1");
+  EXPECT_EQ(slices.related.at("yOff@-1"), "yOff1");
+  EXPECT_EQ(slices.pinned.size(), 1u);
   EXPECT_THAT([] { static_cast<void>(parse_correspondence("onTop2=onTop1,xOff2")); },
               ThrowsMessage<model_error>(HasSubstr("map entry 2 ('xOff2') has no '=', '~', '==' or '@'")));
   EXPECT_THAT([] { static_cast<void>(parse_correspondence("xOff2~xOff1")); },

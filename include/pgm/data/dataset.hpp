@@ -77,9 +77,14 @@ class discrete_column {
   }
 
   /// The same codes under a variable of equal cardinality (new labels, edges or tags).
-  [[nodiscard]] PGM_DECL discrete_column with_variable(variable replacement) const;
+  [[nodiscard]] PGM_DECL discrete_column with_variable(variable replacement) const&;
+  /// The same, its codes moved rather than copied.
+  [[nodiscard]] PGM_DECL discrete_column with_variable(variable replacement) &&;
 
   [[nodiscard]] PGM_DECL discrete_column select(std::span<const std::size_t> rows) const;
+  /// The rows of each run [begin, end), the runs one after another: a copy per run where
+  /// select() looks up every row.
+  [[nodiscard]] PGM_DECL discrete_column select_runs(std::span<const std::pair<std::size_t, std::size_t>> runs) const;
 
   friend bool operator==(const discrete_column&, const discrete_column&) = default;
 

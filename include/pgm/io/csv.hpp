@@ -23,6 +23,7 @@
 #include "pgm/core/text.hpp"
 #include "pgm/core/variable.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/data/episodes.hpp"
 #include "pgm/data/missing.hpp"
 
 namespace pgm {
@@ -56,6 +57,15 @@ struct csv_options {
   /// put chunk boundaries everywhere.
   std::size_t chunk_bytes = 0;
 };
+
+/// How episodes in long form (pgm/data/episodes.hpp) are read: every column as states, the
+/// step as a number.
+[[nodiscard]] inline csv_options long_form_options(const episode_columns& columns = {}) {
+  csv_options options;
+  options.default_kind = column_kind::discrete;
+  options.kinds[columns.step] = column_kind::continuous;
+  return options;
+}
 
 namespace detail {
 

@@ -113,6 +113,9 @@ PGM_DECL void write_markov_json(std::ostream& out, const markov_network& model);
 /// A dynamic network as pgm's JSON model ("kind": "dynamic").
 [[nodiscard]] PGM_DECL nlohmann::json to_json(const dynamic_network& model);
 
+/// Writes a dynamic network's JSON model to `path`, atomically (nothing is left half-written).
+PGM_DECL void write_dynamic_json(const dynamic_network& model, const std::filesystem::path& path);
+
 /// Reads a dynamic network; errors name the source and the JSON path of what is wrong.
 [[nodiscard]] PGM_DECL dynamic_network parse_dynamic_json(std::string_view text, const std::string& source);
 

@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <filesystem>
 #include <iostream>
 #include <optional>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -12,13 +15,16 @@
 #include "cli/transfer_arguments.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/process_group.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/io/csv_source.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/learn/estimator_choice.hpp"
 #include "pgm/learn/family_source.hpp"
+#include "pgm/learn/fit_dynamic.hpp"
 #include "pgm/learn/parameter_prior_registry.hpp"
 #include "pgm/pipeline/fit_pipeline.hpp"
+#include "pgm/transfer/dynamic_transfer.hpp"
 #include "pgm/transfer/transfer_settings.hpp"
 
 namespace pgm::cli {
@@ -49,6 +55,10 @@ struct fit_arguments {
   bool hard = false;
   bool verbose = false;
   bool keep_counts = false;
+  bool dynamic = false;
+  // --dynamic with --prior-model: the first slice's own transfer.
+  std::string initial_map;
+  std::string initial_strategy;
 };
 
 /// --latent NAME:COUNT (states 0 … COUNT-1), NAME=STATE,STATE,… or NAME (a model's states).
@@ -105,18 +115,123 @@ void note_transfer(const transfer_report& report, const std::string& strategy) {
   }
 }
 
+/// The prior (--estimator, --prior and its shorthands), the empty-configuration rule and the
+/// counting threads.
+void set_estimation(const fit_arguments& args, fit_options& options) {
+  options.prior =
+      prior_of({args.estimator,
+                args.prior,
+                {{"--alpha", "alpha", given_value(*args.alpha)}, {"--ess", "ess", given_value(*args.ess)}}});
+  options.estimation.empty = parse_empty_configuration(args.empty);
+  options.counting.threads = args.threads;
+}
+
+/// The options of a static fit that a dynamic one does not take yet, each with why.
+void refuse_static_only(const fit_arguments& args) {
+  const auto refuse = [](bool given, const std::string& what) {
+    if (given) throw error("--dynamic: " + what);
+  };
+  refuse(args.missing.policy == "em",
+         "--missing em is not available for dynamic networks yet; --missing available counts each family over the "
+         "steps where its variables are present");
+  refuse(args.missing.policy == "drop",
+         "--missing drop leaves gaps in the episodes where it drops a row; --missing available counts each family "
+         "over the steps where its variables are present");
+  refuse(!args.latent.empty(), "--latent applies with --missing em, which dynamic networks do not have yet");
+  refuse(args.keep_counts, "--keep-counts is not available for dynamic networks yet");
+  refuse(!args.discretization_file.empty() || !args.intervals_file.empty(),
+         "--discretization and --intervals are not available for dynamic networks yet: bin the columns first "
+         "(pgm discretize)");
+  refuse(processes().size() > 1, "a dynamic network is fitted in one process, not under mpirun");
+}
+
+/// The options that apply to --dynamic only, refused without it.
+void refuse_dynamic_only(const fit_arguments& args) {
+  if (!args.initial_map.empty() || !args.initial_strategy.empty()) {
+    throw error("--initial-map and --initial-strategy apply with --dynamic (the first slice's own transfer)");
+  }
+}
+
+/// pgm fit --dynamic: a 2-TBN with tied tables from episodes in long form (episode,t,<variables>).
+void run_dynamic_fit(const fit_arguments& args) {
+  refuse_static_only(args);
+  if (std::filesystem::path(args.out).extension() != ".json") {
+    throw error("--out: a dynamic network is written as pgm's JSON model (.json), not '" + args.out +
+                "'; pgm unroll then writes it unrolled in any format");
+  }
+  pgm::check_output_path(args.out);
+  const episode_columns columns;
+  auto reading = long_form_options(columns);
+  reading.missing = missing_of(args.missing);
+  reading.threads = args.threads;
+  dynamic_structure structure;
+  std::optional<dynamic_network> given;
+  std::vector<named_edge> edges;
+  std::set<std::string> templates;  // the columns read besides the episode's and the step's
+  if (!args.model.empty()) {
+    given = read_dynamic_model_file(args.model);
+    structure = structure_of(*given);
+    for (const auto& v : given->variables()) {
+      reading.variables.emplace(v.name(), v);
+      templates.insert(v.name());
+    }
+  } else {
+    edges = parse_edge_list(args.edges);
+    for (const auto& [from, to] : edges) {
+      templates.insert(from.substr(0, from.rfind('@')));
+      templates.insert(to.substr(0, to.rfind('@')));
+    }
+  }
+  if (args.data != "-") {  // other columns are not read (standard input is read once)
+    const auto header = csv_reader(args.data).header();
+    reading.columns.assign(templates.begin(), templates.end());
+    reading.columns.push_back(columns.step);
+    if (std::find(header.begin(), header.end(), columns.episode) != header.end()) {
+      reading.columns.push_back(columns.episode);
+    }
+  }
+  const auto data = read_csv(args.data, reading);
+  if (!given) structure = dynamic_structure_from_data(data, edges);
+  dynamic_fit_options options;
+  set_estimation(args, options.fit);
+  options.columns = columns;
+  const auto counts = count_dynamic(structure, data, options.columns, options.fit.counting);
+  if (!args.transfer.prior_model.empty()) {
+    const auto prior = read_network_file(args.transfer.prior_model);
+    require_map(args.transfer);
+    const auto settings = settings_of(args.transfer);
+    std::optional<transfer_settings> initial;
+    if (!args.initial_map.empty() || !args.initial_strategy.empty()) {
+      initial = settings;
+      if (!args.initial_map.empty()) initial->map = args.initial_map;
+      if (!args.initial_strategy.empty()) initial->strategy = args.initial_strategy;
+    }
+    note_transfer(add_transferred_priors(options, structure, counts, prior, settings, initial ? &*initial : nullptr),
+                  args.transfer.strategy);
+  } else if (!args.transfer.map.empty() || !args.initial_map.empty() || !args.initial_strategy.empty()) {
+    throw error("--map, --initial-map and --initial-strategy apply with --prior-model");
+  }
+  const auto model = fit_dynamic(structure, counts, options);
+  std::ostringstream summary;
+  summary << "fitted a dynamic network of " << model.size() << " template variables from " << counts.episodes
+          << (counts.episodes == 1 ? " episode" : " episodes") << " (" << counts.steps << " steps; "
+          << counts.steps - counts.episodes << " transitions counted into the tied tables) -> " << args.out << '\n';
+  write_dynamic_json(model, args.out);
+  summary_stream(args.out) << summary.str();
+}
+
 void run_fit(const fit_arguments& args) {
+  if (args.dynamic) {
+    run_dynamic_fit(args);
+    return;
+  }
+  refuse_dynamic_only(args);
   require_network_extension(args.out);
   if (args.data == "-" && processes().size() > 1) {
     throw error("--data -: standard input reaches one process only; under mpirun give a file every process can read");
   }
   fit_request request;
-  request.options.prior =
-      prior_of({args.estimator,
-                args.prior,
-                {{"--alpha", "alpha", given_value(*args.alpha)}, {"--ess", "ess", given_value(*args.ess)}}});
-  request.options.estimation.empty = parse_empty_configuration(args.empty);
-  request.options.counting.threads = args.threads;
+  set_estimation(args, request.options);
   request.missing = missing_of(args.missing);
   const bool em = args.missing.policy == "em";
   if (em) {
@@ -249,6 +364,18 @@ void add_fit_command(CLI::App& app) {
                 "Keep the counts and priors in the model (in JSON under \"statistics\", in BIF, XMLBIF and NET as a "
                 "property peers ignore), so that pgm update can add new data to it");
   add_transfer_options(*cmd, args->transfer, true);
+  cmd->add_flag("--dynamic", args->dynamic,
+                "Fit a dynamic network (a 2-TBN, written as pgm's JSON model) from episodes in long form: columns "
+                "episode, t (0, 1, … within an episode) and the variables, one row per episode and step. --edges "
+                "\"a->b\" lies within a slice, \"a@-1->b\" runs from the step before; --model takes a dynamic "
+                "model's structure. Each variable's transition table is tied: every step after the first of every "
+                "episode counts towards it. --prior-model transfers into both slices (a previous slice's parent "
+                "has counterparts of its own: \"onTop=onTop1,xOff~xOff1,xOff@-1==xOff1\")");
+  cmd->add_option("--initial-map", args->initial_map,
+                  "With --dynamic and --prior-model: the first slice's own map (default: --map less its x@-1 "
+                  "entries), or none to leave the first slice to the data");
+  cmd->add_option("--initial-strategy", args->initial_strategy,
+                  "With --dynamic and --prior-model: the first slice's own strategy (default: --strategy)");
   cmd->callback([args] {
     if (args->edges.empty() && args->model.empty()) throw error("give the structure with --edges or --model");
     run_fit(*args);

@@ -39,17 +39,19 @@ PGM_DECL correspondence parse_correspondence(std::string_view text) {
     const auto identical_at = entry.find("==");
     const auto related_at = entry.find('~');
     const auto transferred_at = entry.find('=');
-    if (pin_at != std::string::npos) {
-      auto [variable, value] = pair_at(pin_at, 1);
-      if (!map.pinned.emplace(variable, prior_pin{value == "*" ? std::string() : value}).second) {
-        fail("pins '" + variable + "' twice");
-      }
-    } else if (identical_at != std::string::npos) {
+    // A pair before a pin: a target name may hold '@' (a dynamic network's previous slice,
+    // 'xOff@-1~xOff1'), a pin's value holds no '=' or '~'.
+    if (identical_at != std::string::npos) {
       insert(map.identical, pair_at(identical_at, 2), "identical");
     } else if (related_at != std::string::npos) {
       insert(map.related, pair_at(related_at, 1), "related");
     } else if (transferred_at != std::string::npos) {
       insert(map.transferred, pair_at(transferred_at, 1), "transferred");
+    } else if (pin_at != std::string::npos) {
+      auto [variable, value] = pair_at(pin_at, 1);
+      if (!map.pinned.emplace(variable, prior_pin{value == "*" ? std::string() : value}).second) {
+        fail("pins '" + variable + "' twice");
+      }
     } else {
       fail("has no '=', '~', '==' or '@'");
     }

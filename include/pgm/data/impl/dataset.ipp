@@ -29,12 +29,16 @@ PGM_DECL bool discrete_column::is_missing(std::size_t row) const {
                               codes_);
 }
 
-PGM_DECL discrete_column discrete_column::with_variable(variable replacement) const {
+PGM_DECL discrete_column discrete_column::with_variable(variable replacement) const& {
+  return discrete_column(*this).with_variable(std::move(replacement));
+}
+
+PGM_DECL discrete_column discrete_column::with_variable(variable replacement) && {
   if (replacement.cardinality() != variable_.cardinality()) {
     throw model_error("column '" + name() + "' has " + std::to_string(variable_.cardinality()) +
                       " states, the replacement variable " + std::to_string(replacement.cardinality()));
   }
-  return discrete_column(std::move(replacement), codes_, std::in_place, missing_);
+  return discrete_column(std::move(replacement), std::move(codes_), std::in_place, missing_);
 }
 
 PGM_DECL discrete_column discrete_column::select(std::span<const std::size_t> rows) const {
@@ -47,6 +51,30 @@ PGM_DECL discrete_column discrete_column::select(std::span<const std::size_t> ro
           chosen[i] = c.at(rows[i]);
           missing += chosen[i] == missing_code<code_type> && missing_ != 0;
         }
+        return chosen;
+      },
+      codes_);
+  return discrete_column(variable_, std::move(picked), std::in_place, missing);
+}
+
+PGM_DECL discrete_column discrete_column::select_runs(std::span<const std::pair<std::size_t, std::size_t>> runs) const {
+  std::size_t rows = 0;
+  for (const auto& [begin, end] : runs) {
+    if (begin > end || end > size()) throw std::out_of_range("discrete_column::select_runs: a run past the rows");
+    rows += end - begin;
+  }
+  std::size_t missing = 0;
+  auto picked = std::visit(
+      [&](const auto& c) -> code_vector {
+        using code_type = typename std::decay_t<decltype(c)>::value_type;
+        std::decay_t<decltype(c)> chosen(rows);
+        auto out = chosen.begin();
+        for (const auto& [begin, end] : runs) {
+          out = std::copy(c.begin() + static_cast<std::ptrdiff_t>(begin), c.begin() + static_cast<std::ptrdiff_t>(end),
+                          out);
+        }
+        if (missing_ != 0)
+          missing = static_cast<std::size_t>(std::count(chosen.begin(), chosen.end(), missing_code<code_type>));
         return chosen;
       },
       codes_);

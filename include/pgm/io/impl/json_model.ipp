@@ -355,6 +355,11 @@ PGM_DECL nlohmann::json to_json(const dynamic_network& model) {
   return document;
 }
 
+PGM_DECL void write_dynamic_json(const dynamic_network& model, const std::filesystem::path& path) {
+  const auto text = to_json(model).dump(2) + "\n";
+  write_file_atomically(path, [&](std::ostream& out) { out << text; });
+}
+
 PGM_DECL dynamic_network parse_dynamic_json(std::string_view text, const std::string& source) {
   const detail::json_reader reader(source);
   const auto document = reader.parse(text);
