@@ -19,6 +19,7 @@
 #include "pgm/learn/hill_climbing.hpp"
 #include "pgm/learn/independence_test.hpp"
 #include "pgm/learn/independence_test_registry.hpp"
+#include "pgm/learn/learn_dynamic_structure.hpp"
 #include "pgm/learn/learn_structure.hpp"
 #include "pgm/learn/log_gamma_ratio.hpp"
 #include "pgm/learn/network_score.hpp"

@@ -113,8 +113,11 @@ PGM_DECL void write_markov_json(std::ostream& out, const markov_network& model);
 /// A dynamic network as pgm's JSON model ("kind": "dynamic").
 [[nodiscard]] PGM_DECL nlohmann::json to_json(const dynamic_network& model);
 
-/// Writes a dynamic network's JSON model to `path`, atomically (nothing is left half-written).
-PGM_DECL void write_dynamic_json(const dynamic_network& model, const std::filesystem::path& path);
+/// Writes a dynamic network's JSON model to `path`, atomically (nothing is left half-written);
+/// `before_replacing` runs once the new file is complete, before it replaces `path`, and may fail
+/// the write (write_file_atomically).
+PGM_DECL void write_dynamic_json(const dynamic_network& model, const std::filesystem::path& path,
+                                 const std::function<void()>& before_replacing = {});
 
 /// Reads a dynamic network; errors name the source and the JSON path of what is wrong.
 [[nodiscard]] PGM_DECL dynamic_network parse_dynamic_json(std::string_view text, const std::string& source);

@@ -216,8 +216,7 @@ void run_dynamic_fit(const fit_arguments& args) {
   summary << "fitted a dynamic network of " << model.size() << " template variables from " << counts.episodes
           << (counts.episodes == 1 ? " episode" : " episodes") << " (" << counts.steps << " steps; "
           << counts.steps - counts.episodes << " transitions counted into the tied tables) -> " << args.out << '\n';
-  write_dynamic_json(model, args.out);
-  summary_stream(args.out) << summary.str();
+  write_dynamic_json(model, args.out, summary_before_replacing(summary.str(), args.out));
 }
 
 void run_fit(const fit_arguments& args) {

@@ -21,8 +21,10 @@
 #include "pgm/core/correspondence.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/text.hpp"
+#include "pgm/io/csv.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/learn/bootstrap.hpp"
+#include "pgm/learn/learn_dynamic_structure.hpp"
 #include "pgm/learn/pc.hpp"
 #include "pgm/learn/structure_prior.hpp"
 
@@ -62,7 +64,49 @@ struct learn_structure_arguments {
   bool explain = false;
   std::string out;
   missing_arguments missing;
+  bool dynamic = false;
 };
+
+/// "a->b, a@-1->b", as --edges reads them.
+std::string edge_list_text(const std::vector<named_edge>& edges) {
+  std::vector<std::string> shown;
+  for (const auto& e : edges) shown.push_back(e.from + "->" + e.to);
+  return text::join(shown);
+}
+
+/// pgm learn-structure --dynamic: a dynamic network's structure from episodes in long form, by any
+/// learner over the transitions' data, its tables then fitted by MLE.
+void run_dynamic_learn(const learn_structure_arguments& args, const structure_learner& learner,
+                       const structure_context& context) {
+  const auto refuse = [](bool given, const std::string& option) {
+    if (given) throw error("--dynamic: " + option + " is not available for dynamic networks yet");
+  };
+  refuse(args.bootstrap > 0, "--bootstrap");
+  refuse(!args.prior_model.empty(), "--prior-model");
+  refuse(!args.start.empty(), "--start");
+  refuse(args.missing.policy == "drop", "--missing drop (it would leave gaps in the episodes)");
+  const episode_columns columns;
+  auto reading = long_form_options(columns);
+  reading.missing = missing_of(args.missing);
+  reading.threads = args.threads;
+  const auto data = read_csv(args.data, reading);
+  std::vector<std::string> names;
+  for (const auto& name : data.names()) {
+    if (name != columns.episode && name != columns.step) names.push_back(name);
+  }
+  if (names.empty()) throw data_error("'" + args.data + "' has no column besides the episode and the step");
+  const auto learned = learn_dynamic_structure(data, names, learner, context, columns);
+  const auto counts = count_dynamic(learned.structure, data, columns);
+  const auto model = fit_dynamic(learned.structure, counts);
+  const auto& edges = learned.learned.edges;
+  std::ostringstream out;
+  out << learner.name() << " over " << names.size() << " template variables and the step before each, from "
+      << counts.episodes << " episodes (" << counts.steps << " steps): " << edges.size() << " edges -> " << args.out
+      << "\n  --edges \"" << edge_list_text(edges) << "\"\n";
+  write_dynamic_json(model, args.out, summary_before_replacing(out.str(), args.out));
+  note("the tables of " + args.out + " are fitted by MLE; pgm fit --dynamic --model " + args.out +
+       " refits them with another prior");
+}
 
 /// Each option of a component as a member of `object`, under its name.
 void add_options(nlohmann::json& object, const option_values& options) {
@@ -259,6 +303,10 @@ void run_learn_structure(const learn_structure_arguments& args) {
   if (!args.require.empty()) context.knowledge.required = parse_edge_list(args.require);
   if (!args.start.empty() && args.start != "pc") context.start = read_model_file(args.start).structure.edges();
 
+  if (args.dynamic) {
+    run_dynamic_learn(args, learner, context);
+    return;
+  }
   const auto data = read_discrete_data(args.data, {}, {.missing = missing_of(args.missing)});
   if (data.size() < 2) throw data_error("'" + args.data + "' has fewer than two columns; nothing to learn");
   if (!args.prior_model.empty()) {
@@ -436,7 +484,15 @@ void add_learn_structure_command(CLI::App& app) {
       ->check(whole_number(0, 1024))
       ->capture_default_str();
   cmd->add_flag("--explain", args->explain, "Also print the test that removed each absent edge");
-  cmd->add_option("--out", args->out, "The learned structure, a .json model without tables")->required();
+  cmd->add_option("--out", args->out,
+                  "The learned structure, a .json model without tables (with --dynamic, a dynamic model with its "
+                  "tables fitted by MLE)")
+      ->required();
+  cmd->add_flag("--dynamic", args->dynamic,
+                "Learn a dynamic network (a 2-TBN) from episodes in long form (columns episode, t and the variables): "
+                "the learner runs over each step's variables and the step before's (x@-1), which stay roots, so an "
+                "edge between slices runs forward; the first slice takes the edges within a slice. --tiers, --forbid "
+                "and --require name both slices' variables (\"a@-1->b\")");
   add_missing_options(*cmd, args->missing);
   cmd->callback([args] { run_learn_structure(*args); });
 }

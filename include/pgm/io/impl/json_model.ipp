@@ -355,9 +355,11 @@ PGM_DECL nlohmann::json to_json(const dynamic_network& model) {
   return document;
 }
 
-PGM_DECL void write_dynamic_json(const dynamic_network& model, const std::filesystem::path& path) {
+PGM_DECL void write_dynamic_json(const dynamic_network& model, const std::filesystem::path& path,
+                                 const std::function<void()>& before_replacing) {
   const auto text = to_json(model).dump(2) + "\n";
-  write_file_atomically(path, [&](std::ostream& out) { out << text; });
+  write_file_atomically(
+      path, [&](std::ostream& out) { out << text; }, before_replacing);
 }
 
 PGM_DECL dynamic_network parse_dynamic_json(std::string_view text, const std::string& source) {
