@@ -59,11 +59,13 @@ struct csv_options {
 };
 
 /// How episodes in long form (pgm/data/episodes.hpp) are read: every column as states, the
-/// step as a number.
+/// step as a number, the episode as numbers or labels, whichever it holds (numbers need no
+/// dictionary of 10⁵ labels).
 [[nodiscard]] inline csv_options long_form_options(const episode_columns& columns = {}) {
   csv_options options;
   options.default_kind = column_kind::discrete;
   options.kinds[columns.step] = column_kind::continuous;
+  options.kinds[columns.episode] = column_kind::automatic;
   return options;
 }
 
