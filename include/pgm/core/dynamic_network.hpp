@@ -29,6 +29,11 @@ namespace pgm {
   return std::string(name) + separator + std::to_string(slice);
 }
 
+/// The template variable a slice's name stands for: "X" for "X", "X@-1" and "X@3".
+[[nodiscard]] inline std::string template_of(std::string_view name) {
+  return std::string(name.substr(0, name.rfind('@')));
+}
+
 class dynamic_network {
  public:
   dynamic_network() = default;

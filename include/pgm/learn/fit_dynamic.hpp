@@ -42,6 +42,13 @@ struct dynamic_structure {
 [[nodiscard]] PGM_DECL dynamic_structure dynamic_structure_from_data(const dataset& data,
                                                                      const std::vector<named_edge>& edges);
 
+namespace detail {
+
+/// "a, b, c": the template variables, for messages.
+[[nodiscard]] PGM_DECL std::string template_list(const network_structure& templates);
+
+}  // namespace detail
+
 /// The structure of a dynamic network, without its tables.
 [[nodiscard]] PGM_DECL dynamic_structure structure_of(const dynamic_network& model);
 

@@ -178,8 +178,8 @@ void run_dynamic_fit(const fit_arguments& args) {
   } else {
     edges = parse_edge_list(args.edges);
     for (const auto& [from, to] : edges) {
-      templates.insert(from.substr(0, from.rfind('@')));
-      templates.insert(to.substr(0, to.rfind('@')));
+      templates.insert(template_of(from));
+      templates.insert(template_of(to));
     }
   }
   if (args.data != "-") {  // other columns are not read (standard input is read once)

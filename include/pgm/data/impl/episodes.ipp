@@ -21,12 +21,22 @@ namespace pgm {
 
 namespace detail {
 
+/// "runs.csv: data row 4: the step 't' ", which a message about that step goes on from.
+inline std::string step_at(const dataset& data, const std::string& name, std::size_t row) {
+  return data.source() + ": data row " + std::to_string(row + 1) + ": the step '" + name + "' ";
+}
+
+/// The episode of a row as the data hold it, for messages: its label or number.
+inline std::string episode_at(const dataset& data, const std::string& name, std::size_t row) {
+  if (!data.contains(name)) return "(the only one)";
+  if (data.is_discrete(name)) return data.discrete(name).label(row);
+  return text::format_double(data.continuous(name).values()[row] + 0.0);
+}
+
 /// The step of each row: the column's own numbers, or `parsed` filled from its labels (a
 /// data_error naming the row for a label that is no number).
 inline std::span<const double> steps_of(const dataset& data, const std::string& name, std::vector<double>& parsed) {
-  const auto where = [&](std::size_t row) {
-    return data.source() + ": data row " + std::to_string(row + 1) + ": the step '" + name + "' ";
-  };
+  const auto where = [&](std::size_t row) { return step_at(data, name, row); };
   std::span<const double> steps;
   if (data.is_discrete(name)) {
     const auto& column = data.discrete(name);
@@ -48,7 +58,7 @@ inline std::span<const double> steps_of(const dataset& data, const std::string& 
 inline void check_steps(const dataset& data, const std::string& name, std::span<const double> steps) {
   for (std::size_t r = 0; r < steps.size(); ++r) {
     if (!(steps[r] >= 0.0) || steps[r] != std::floor(steps[r])) {
-      const auto where = data.source() + ": data row " + std::to_string(r + 1) + ": the step '" + name + "' ";
+      const auto where = step_at(data, name, r);
       if (std::isnan(steps[r])) throw data_error(where + "is missing");
       throw data_error(where + "is " + text::format_double(steps[r]) + ", not a whole number ≥ 0");
     }
@@ -150,10 +160,7 @@ std::vector<std::uint32_t> episode_numbers(const dataset& data, const std::strin
 
 PGM_DECL std::string episode_name(const dataset& data, const episode_index& index, std::size_t k,
                                   const episode_columns& columns) {
-  if (!data.contains(columns.episode)) return "(the only one)";
-  const auto row = index.row(index.starts.at(k));
-  if (data.is_discrete(columns.episode)) return data.discrete(columns.episode).label(row);
-  return text::format_double(data.continuous(columns.episode).values()[row] + 0.0);
+  return detail::episode_at(data, columns.episode, index.row(index.starts.at(k)));
 }
 
 PGM_DECL episode_index index_episodes(const dataset& data, const episode_columns& columns) {
@@ -173,11 +180,7 @@ PGM_DECL episode_index index_episodes(const dataset& data, const episode_columns
     // t = 0 … L−1 once, so row r of episode k goes to starts[k] + t.
     episode_index index;
     std::vector<std::size_t> lengths(episodes, 0);
-    std::vector<std::size_t> first_row(episodes, 0);
-    for (std::size_t r = number.size(); r-- > 0;) {
-      ++lengths[number[r]];
-      first_row[number[r]] = r;
-    }
+    for (const auto k : number) ++lengths[k];
     index.starts.resize(episodes + 1);
     for (std::size_t k = 0; k < episodes; ++k) index.starts[k + 1] = index.starts[k] + lengths[k];
     constexpr auto empty = std::numeric_limits<std::size_t>::max();
@@ -192,10 +195,7 @@ PGM_DECL episode_index index_episodes(const dataset& data, const episode_columns
         for (std::size_t s = 0; s < data.rows(); ++s) {
           if (number[s] == k) rows.push_back(s);
         }
-        const auto name = !data.contains(columns.episode)     ? std::string("(the only one)")
-                          : data.is_discrete(columns.episode) ? data.discrete(columns.episode).label(first_row[k])
-                                                              : text::format_double(episode[first_row[k]] + 0.0);
-        detail::fail_episode_steps(data, name, std::move(rows), steps);
+        detail::fail_episode_steps(data, detail::episode_at(data, columns.episode, r), std::move(rows), steps);
       }
       *slot = r;
     }

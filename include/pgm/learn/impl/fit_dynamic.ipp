@@ -13,14 +13,15 @@ namespace pgm {
 
 namespace detail {
 
-/// The template variable a name in an edge stands for: "a" for "a" and "a@-1".
-inline std::string template_name_in(const std::string& name) { return name.substr(0, name.rfind('@')); }
+PGM_DECL std::string template_list(const network_structure& templates) {
+  std::vector<std::string> names;
+  for (const auto& v : templates.variables()) names.push_back(v.name());
+  return text::list_for_message(names);
+}
 
 [[noreturn]] inline void fail_unknown_template(const std::string& edge, const std::string& name,
                                                const network_structure& templates) {
-  std::vector<std::string> names;
-  for (const auto& v : templates.variables()) names.push_back(v.name());
-  throw model_error(edge + " names '" + name + "', which is not a template variable (" + text::list_for_message(names) +
+  throw model_error(edge + " names '" + name + "', which is not a template variable (" + template_list(templates) +
                     ")");
 }
 
@@ -36,6 +37,15 @@ inline void check_template_columns(const dataset& data, const std::vector<variab
   }
 }
 
+/// Each episode's row at t = 0, the template variables' columns only.
+inline dataset first_slice(const dataset& data, const std::vector<variable>& templates, const episode_index& episodes) {
+  std::vector<std::size_t> first;
+  for (std::size_t k = 0; k < episodes.episodes(); ++k) first.push_back(episodes.row(episodes.starts[k]));
+  dataset initial(data.source());
+  for (const auto& v : templates) initial.add(data.discrete(v.name()).select(first).with_variable(v));
+  return initial;
+}
+
 }  // namespace detail
 
 PGM_DECL dynamic_structure dynamic_structure_of(std::vector<variable> templates, const std::vector<named_edge>& edges) {
@@ -48,9 +58,8 @@ PGM_DECL dynamic_structure dynamic_structure_of(std::vector<variable> templates,
   for (const auto& [from, to] : edges) {
     const auto edge = "the edge '" + from + "->" + to + "'";
     if (to.find('@') != std::string::npos) {
-      throw model_error(edge + " ends in another slice: an edge's child lies in this slice ('" +
-                        detail::template_name_in(to) + "'), its parent in this slice or the one before ('" +
-                        detail::template_name_in(from) + "@-1')");
+      throw model_error(edge + " ends in another slice: an edge's child lies in this slice ('" + template_of(to) +
+                        "'), its parent in this slice or the one before ('" + template_of(from) + "@-1')");
     }
     if (!structure.initial.contains(to)) detail::fail_unknown_template(edge, to, structure.initial);
     const auto [name, slice] = detail::slice_of_parent(from, to);
@@ -69,7 +78,7 @@ PGM_DECL dynamic_structure dynamic_structure_from_data(const dataset& data, cons
   std::set<std::string, std::less<>> named;
   for (const auto& edge : edges) {
     for (const auto* name : {&edge.from, &edge.to}) {
-      const auto plain = detail::template_name_in(*name);
+      const auto plain = template_of(*name);
       if (named.insert(plain).second) static_cast<void>(data.discrete(plain));  // exists, discrete
     }
   }
@@ -86,40 +95,20 @@ PGM_DECL dynamic_structure structure_of(const dynamic_network& model) {
 
 PGM_DECL slice_data slices_of(const dataset& data, const std::vector<variable>& templates,
                               const episode_index& episodes) {
-  // Rows in episode and step order (as written, mostly) are taken a run per episode; others
-  // row by row.
-  const bool in_order = episodes.in_order();
-  std::vector<std::size_t> first;
+  detail::check_template_columns(data, templates);
   std::vector<std::size_t> now;
   std::vector<std::size_t> before;
-  std::vector<std::pair<std::size_t, std::size_t>> now_runs;
-  std::vector<std::pair<std::size_t, std::size_t>> before_runs;
   for (std::size_t k = 0; k < episodes.episodes(); ++k) {
-    const auto start = episodes.starts[k];
-    const auto end = episodes.starts[k + 1];
-    if (start == end) continue;
-    first.push_back(episodes.row(start));
-    if (in_order) {
-      if (end - start > 1) {
-        now_runs.emplace_back(start + 1, end);
-        before_runs.emplace_back(start, end - 1);
-      }
-      continue;
-    }
-    for (std::size_t i = start + 1; i < end; ++i) {
+    for (std::size_t i = episodes.starts[k] + 1; i < episodes.starts[k + 1]; ++i) {
       now.push_back(episodes.row(i));
       before.push_back(episodes.row(i - 1));
     }
   }
-  detail::check_template_columns(data, templates);
-  slice_data slices{dataset(data.source()), dataset(data.source())};
+  slice_data slices{detail::first_slice(data, templates, episodes), dataset(data.source())};
   for (const auto& v : templates) {
     const auto& column = data.discrete(v.name());
-    const auto previous = detail::renamed(v, slice_name(v.name(), -1));
-    slices.initial.add(column.select(first).with_variable(v));
-    slices.transitions.add(
-        (in_order ? column.select_runs(before_runs) : column.select(before)).with_variable(previous));
-    slices.transitions.add((in_order ? column.select_runs(now_runs) : column.select(now)).with_variable(v));
+    slices.transitions.add(column.select(before).with_variable(detail::renamed(v, slice_name(v.name(), -1))));
+    slices.transitions.add(column.select(now).with_variable(v));
   }
   return slices;
 }
@@ -127,8 +116,8 @@ PGM_DECL slice_data slices_of(const dataset& data, const std::vector<variable>& 
 namespace detail {
 
 /// Data in episode and step order as every pair of neighbouring rows: X@-1 the rows 0 … n−2, X
-/// the rows 1 … n−1. The pairs that cross from one episode into the next are among them; a copy
-/// of each column where the exact pairs copy each episode's run.
+/// the rows 1 … n−1. The pairs that cross from one episode into the next are among them; one
+/// copy of each column, where the exact pairs (slices_of) look every row up.
 inline dataset neighbour_pairs(const dataset& data, const std::vector<variable>& templates) {
   dataset pairs(data.source());
   const std::vector<std::pair<std::size_t, std::size_t>> before{{0, data.rows() - 1}};
@@ -182,10 +171,7 @@ PGM_DECL dynamic_counts count_dynamic(const dynamic_structure& structure, const 
     if (!slices) slices = slices_of(data, templates, episodes);
     return *slices;
   };
-  std::vector<std::size_t> first;
-  for (std::size_t k = 0; k < episodes.episodes(); ++k) first.push_back(episodes.row(episodes.starts[k]));
-  dataset initial(data.source());
-  for (const auto& v : templates) initial.add(data.discrete(v.name()).select(first).with_variable(v));
+  const auto initial = detail::first_slice(data, templates, episodes);
   const auto n = templates.size();
   for (std::size_t i = 0; i < n; ++i) {
     const variable_id node(static_cast<variable_id::rep>(i));

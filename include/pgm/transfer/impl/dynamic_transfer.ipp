@@ -15,10 +15,8 @@ inline correspondence template_map(std::string_view text, const bayesian_network
   auto map = resolve_correspondence(text, prior, templates);
   for (const auto& [target, source] : map.transferred) {
     if (!templates.contains(target)) {
-      std::vector<std::string> names;
-      for (const auto& v : templates.variables()) names.push_back(v.name());
       throw model_error("the map transfers '" + source + "' to '" + target + "', which is not a template variable (" +
-                        text::list_for_message(names) +
+                        template_list(templates) +
                         "): a prior goes to a template variable, whose tables in both slices it then informs");
     }
   }
