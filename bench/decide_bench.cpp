@@ -1,6 +1,9 @@
 // Failure prevention over every configuration of a 625-configuration table (onTop2 of
 // 2-Stack: 4 parents × 5 bins, binary), beside a plain breadth-first search from each
-// configuration; and exact inference by variable elimination beside brute-force enumeration.
+// configuration; exact inference by variable elimination beside brute-force enumeration; and
+// influence diagrams solved beside enumeration of every policy (the oil wildcatter) and beside
+// single policy updating that evaluates every candidate action by a pass of its own (a robot's
+// 20-decision LIMID).
 
 #include <benchmark/benchmark.h>
 
@@ -9,8 +12,10 @@
 
 #include "check.hpp"
 #include "pgm/decide/prevent.hpp"
+#include "pgm/decide/solve_decisions.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 #include "support/enumeration.hpp"
+#include "support/influence_diagrams.hpp"
 #include "support/random_network.hpp"
 
 namespace {
@@ -147,5 +152,74 @@ void enumeration(benchmark::State& state) {
   pgm::bench::check(state, same, "enumeration disagrees with VE");
 }
 BENCHMARK(enumeration)->Arg(11)->Unit(benchmark::kMillisecond);
+
+void oil_wildcatter_solve(benchmark::State& state) {
+  const auto diagram = pgm::testing::oil_wildcatter();
+  double meu = 0;
+  for (auto _ : state) {
+    meu = pgm::solve_decisions(diagram).meu;
+    benchmark::DoNotOptimize(meu);
+  }
+  pgm::bench::check(state, std::abs(meu - 22.5) < 1e-12, "the oil wildcatter's MEU is not 22.5");
+}
+BENCHMARK(oil_wildcatter_solve)->Unit(benchmark::kMicrosecond);
+
+void oil_wildcatter_every_policy(benchmark::State& state) {
+  const auto diagram = pgm::testing::oil_wildcatter();
+  double meu = 0;
+  for (auto _ : state) {
+    meu = pgm::testing::best_over_every_policy(diagram, {});
+    benchmark::DoNotOptimize(meu);
+  }
+  pgm::bench::check(state, std::abs(meu - 22.5) < 1e-12, "the oil wildcatter's MEU is not 22.5");
+}
+BENCHMARK(oil_wildcatter_every_policy)->Unit(benchmark::kMicrosecond);
+
+// range(0): decisions.
+void limid_single_policy_updating(benchmark::State& state) {
+  const auto diagram = pgm::testing::robot_limid(static_cast<std::size_t>(state.range(0)));
+  pgm::decision_solution solution;
+  for (auto _ : state) solution = pgm::solve_decisions(diagram, {}, {.limited_memory = true});
+  state.counters["rounds"] = static_cast<double>(solution.rounds);
+  state.counters["eu"] = solution.meu;
+  pgm::bench::check(state, solution.meu >= solution.start_expected_utility, "single policy updating lost utility");
+}
+BENCHMARK(limid_single_policy_updating)->Arg(20)->Unit(benchmark::kMillisecond);
+
+/// Single policy updating done plainly: every candidate action of every configuration of every
+/// decision is scored by evaluating the whole policy with it, until no change improves.
+void limid_one_pass_per_candidate(benchmark::State& state) {
+  const auto diagram = pgm::testing::robot_limid(static_cast<std::size_t>(state.range(0)));
+  double eu = 0;
+  std::size_t passes = 0;
+  for (auto _ : state) {
+    std::vector<pgm::decision_policy> policies;
+    for (const auto d : diagram.decision_order())
+      policies.push_back({d, diagram.parents(d), std::vector<std::size_t>(3, 0)});
+    eu = pgm::expected_utility(diagram, policies);
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (auto& policy : policies) {
+        for (auto& action : policy.actions) {
+          for (std::size_t candidate = 0; candidate < 3; ++candidate) {
+            const auto kept = action;
+            action = candidate;
+            const double tried = pgm::expected_utility(diagram, policies);
+            ++passes;
+            if (tried > eu + 1e-12 * std::max(1.0, std::abs(eu))) {
+              eu = tried;
+              changed = true;
+            } else {
+              action = kept;
+            }
+          }
+        }
+      }
+    }
+  }
+  state.counters["passes"] = static_cast<double>(passes) / static_cast<double>(state.iterations());
+  state.counters["eu"] = eu;
+}
+BENCHMARK(limid_one_pass_per_candidate)->Arg(20)->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "pgm/core/factor_table.hpp"
 #include "pgm/core/file.hpp"
 #include "pgm/core/graphical_model.hpp"
+#include "pgm/core/influence_diagram.hpp"
 #include "pgm/core/limits.hpp"
 #include "pgm/core/markov_network.hpp"
 #include "pgm/core/mixed_radix.hpp"

@@ -22,6 +22,7 @@ from . import _checks
 from ._inference import ENGINES, InferenceEngine
 from ._dynamic import DynamicNetwork
 from ._markov import MarkovNetwork
+from ._decisions import DecisionSolution, InfluenceDiagram
 
 __version__ = _core.__version__
 
@@ -30,9 +31,11 @@ __all__ = [
     "backdoor_sets",
     "check",
     "d_separated",
+    "DecisionSolution",
     "DynamicNetwork",
     "Error",
     "InferenceEngine",
+    "InfluenceDiagram",
     "intervene",
     "Network",
     "backends",

@@ -21,6 +21,7 @@
 
 #include "causal.hpp"
 #include "columns.hpp"
+#include "decisions.hpp"
 #include "dynamic.hpp"
 #include "inference.hpp"
 #include "markov.hpp"
@@ -648,6 +649,7 @@ PYBIND11_MODULE(_core, m) {
 
   m.def("read_network", &read_network_file);
   add_markov(m);
+  add_decisions(m);
   add_dynamic(m);
   m.def("network_from_tables", &network_from_tables);
   m.def("parse_edge_list", [](const std::string& text) { return to_pairs(pgm::parse_edge_list(text)); });

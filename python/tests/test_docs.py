@@ -19,7 +19,7 @@ def test_the_heat_map_example_runs_as_written(tmp_path, monkeypatch):
 
 def test_the_two_stack_transfer_runs_as_written(capsys):
     blocks = python_blocks("docs/python.md")
-    assert len(blocks) == 4
+    assert len(blocks) == 5
     names = {}
     exec(compile(blocks[1], "docs/python.md", "exec"), names)
     printed = capsys.readouterr().out.splitlines()
@@ -43,3 +43,20 @@ def test_the_markov_network_example_runs_as_written(capsys):
     assert printed[1] == str([round(4 / 34, 6), round(30 / 34, 6)])
     assert printed[2] == "{'a': '1', 'b': '1', 'c': '1'}"
     assert float(printed[3]) == round(math.log(34), 6)
+
+
+def test_the_influence_diagram_example_runs_as_written(capsys, monkeypatch):
+    from conftest import SOURCE_DIR
+
+    monkeypatch.chdir(SOURCE_DIR)
+    exec(compile(python_blocks("docs/python.md")[4], "docs/python.md", "exec"), {"pgm": pgm})
+    printed = capsys.readouterr().out.splitlines()
+    assert float(printed[0]) == 22.5
+    assert printed[1] == str(
+        [
+            {"Test": "yes", "Seismic": "closed", "action": "yes"},
+            {"Test": "yes", "Seismic": "open", "action": "yes"},
+            {"Test": "yes", "Seismic": "diffuse", "action": "no"},
+        ]
+    )
+    assert float(printed[2]) == 32.5

@@ -155,5 +155,6 @@ void add_check_command(CLI::App& app);
 void add_sample_command(CLI::App& app);
 void add_unroll_command(CLI::App& app);
 void add_filter_command(CLI::App& app);
+void add_decide_command(CLI::App& app);
 
 }  // namespace pgm::cli

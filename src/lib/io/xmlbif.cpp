@@ -284,9 +284,17 @@ class xmlbif_reader {
     }
   }
 
+  influence_diagram read_diagram() {
+    try {
+      return read_diagram_document();
+    } catch (const xml_problem& problem) {
+      fail(position(problem.offset), problem.what);
+    }
+  }
+
  private:
-  bayesian_network read_document(const network_read_options& options) {
-    pugi::xml_document document;
+  /// The <NETWORK> element of the parsed text, entities declared.
+  pugi::xml_node load(pugi::xml_document& document) {
     // References are resolved by xml_text_decoder, as pgmpy's parser resolves them; pugixml
     // would keep an entity it does not know as text ("&two;").
     const auto flags = (pugi::parse_default | pugi::parse_doctype) & ~pugi::parse_escapes;
@@ -304,6 +312,12 @@ class xmlbif_reader {
     }
     const auto network = root.child("NETWORK");
     if (!network) fail(at(root), "<BIF> has no <NETWORK>");
+    return network;
+  }
+
+  bayesian_network read_document(const network_read_options& options) {
+    pugi::xml_document document;
+    const auto network = load(document);
     std::vector<detail::declared_variable> variables;
     std::vector<detail::declared_table> tables;
     for (const auto& node : network.children("VARIABLE")) variables.push_back(read_variable(node));
@@ -320,6 +334,89 @@ class xmlbif_reader {
     if (variables.empty()) fail(at(network), "the file declares no variables");
     return detail::build_network(variables, std::move(tables), source_, options,
                                  [this](detail::text_position p, const std::string& what) { fail(p, what); });
+  }
+
+  influence_diagram read_diagram_document() {
+    pugi::xml_document document;
+    const auto network = load(document);
+    std::vector<detail::declared_variable> variables;
+    std::vector<std::string> types;
+    for (const auto& node : network.children("VARIABLE")) {
+      types.push_back(type_of(node));
+      variables.push_back(read_variable(node, true));
+    }
+    if (variables.empty()) fail(at(network), "the file declares no variables");
+    influence_diagram diagram;
+    for (std::size_t i = 0; i < variables.size(); ++i) {
+      if (types[i] == "utility") continue;
+      try {
+        variable v(variables[i].name, variables[i].states, variables[i].tags);
+        if (variables[i].edges) v.set_edges(*variables[i].edges);
+        types[i] == "decision" ? diagram.add_decision(std::move(v)) : diagram.add_chance(std::move(v));
+      } catch (const model_error& e) {
+        fail(variables[i].at, e.what());
+      }
+    }
+    const auto type_named = [&](const std::string& name) -> const std::string* {
+      for (std::size_t i = 0; i < variables.size(); ++i) {
+        if (variables[i].name == name) return &types[i];
+      }
+      return nullptr;
+    };
+    std::vector<std::string> defined;
+    for (const auto& node : network.children()) {
+      const std::string_view element = node.name();
+      if (node.type() != pugi::node_element || (element != "DEFINITION" && element != "PROBABILITY")) continue;
+      const auto child = single_text(node, "FOR");
+      const auto* type = type_named(child);
+      if (type == nullptr) fail(at(node), "a definition for '" + child + "', which no <VARIABLE> declares");
+      if (std::find(defined.begin(), defined.end(), child) != defined.end()) {
+        fail(at(node), "a second definition for '" + child + "'");
+      }
+      defined.push_back(child);
+      std::vector<variable_id> parents;
+      for (const auto& given : node.children("GIVEN")) {
+        const auto name = text_of(given);
+        const auto* parent_type = type_named(name);
+        if (parent_type != nullptr && *parent_type == "utility") {
+          fail(at(given),
+               "the utility '" + name + "' is given as a parent of '" + child + "'; a utility node has no children");
+        }
+        try {
+          parents.push_back(diagram.id(name));
+        } catch (const error& e) {
+          fail(at(given), e.what());
+        }
+      }
+      try {
+        if (*type == "decision") {
+          if (node.child("TABLE")) {
+            fail(at(node.child("TABLE")), "the decision '" + child +
+                                              "' has a <TABLE>: a decision is chosen, so it has no probabilities; "
+                                              "its <GIVEN>s are what is known when it is taken");
+          }
+          diagram.set_observed(diagram.id(child), parents);
+        } else if (*type == "utility") {
+          diagram.add_utility(child, parents, read_table(node, variables).values);
+        } else {
+          diagram.set_table(diagram.id(child), parents, read_table(node, variables).values);
+        }
+      } catch (const model_error& e) {
+        fail(at(node), e.what());
+      }
+    }
+    for (std::size_t i = 0; i < variables.size(); ++i) {
+      if (types[i] != "decision" && std::find(defined.begin(), defined.end(), variables[i].name) == defined.end()) {
+        fail(variables[i].at, "the " + std::string(types[i] == "utility" ? "utility" : "chance variable") + " '" +
+                                  variables[i].name + "' has no <DEFINITION>");
+      }
+    }
+    try {
+      diagram.validate();
+    } catch (const model_error& e) {
+      fail(at(network), e.what());
+    }
+    return diagram;
   }
 
   [[noreturn]] void fail(detail::text_position p, const std::string& what) const {
@@ -375,15 +472,29 @@ class xmlbif_reader {
     return text_of(child);
   }
 
-  detail::declared_variable read_variable(const pugi::xml_node& node) {
+  /// A VARIABLE's TYPE: "nature" (also when absent), "decision" or "utility".
+  std::string type_of(const pugi::xml_node& node) {
+    auto type = decoder_.decode(node.attribute("TYPE").value(), start_of(node));
+    if (type.empty()) type = "nature";
+    if (type != "nature" && type != "decision" && type != "utility") {
+      fail(at(node), "TYPE=\"" + type + "\"; expected \"nature\", \"decision\" or \"utility\"");
+    }
+    return type;
+  }
+
+  detail::declared_variable read_variable(const pugi::xml_node& node, bool diagram = false) {
     detail::declared_variable v;
     v.at = at(node);
     v.name = single_text(node, "NAME");
-    const auto type_attribute = node.attribute("TYPE");
-    const auto type = decoder_.decode(type_attribute.value(), start_of(node));
-    if (!type.empty() && type != "nature") {
-      fail(v.at,
-           "variable '" + v.name + "' has TYPE=\"" + type + "\"; only chance (\"nature\") variables are supported");
+    const auto type = type_of(node);
+    if (!diagram && type != "nature") {
+      fail(v.at, "variable '" + v.name + "' has TYPE=\"" + type +
+                     "\": the file is an influence diagram, which `pgm decide` reads; a Bayesian network has "
+                     "chance (\"nature\") variables only");
+    }
+    if (type == "utility") {  // aGrUM writes a dummy <OUTCOME>; its one "state" counts the table
+      v.states = {"utility"};
+      return v;
     }
     for (const auto& outcome : node.children("OUTCOME")) {
       // A variable with more states than a table has cells cannot have a table.
@@ -468,12 +579,10 @@ bayesian_network read_xmlbif(const std::filesystem::path& path, const network_re
   return parse_xmlbif(pgm::read_file(path), path.string(), options);
 }
 
-void write_xmlbif(const bayesian_network& network, std::ostream& out, const xmlbif_write_options& options) {
-  if (network.has_sparse_tables()) {
-    write_xmlbif(network.dense("writing XMLBIF, which has no sparse form (pgm's JSON model has),"), out, options);
-    return;
-  }
-  pugi::xml_document document;
+namespace {
+
+/// A document with its declaration and an open <NETWORK>.
+pugi::xml_node start_document(pugi::xml_document& document, const xmlbif_write_options& options) {
   auto declaration = document.append_child(pugi::node_declaration);
   declaration.append_attribute("version") = "1.0";
   declaration.append_attribute("encoding") = "UTF-8";
@@ -482,41 +591,105 @@ void write_xmlbif(const bayesian_network& network, std::ostream& out, const xmlb
   auto net = root.append_child("NETWORK");
   add_text(net, "NAME", options.network_name);
   for (const auto& [key, value] : options.network_properties) add_text(net, "PROPERTY", "pgm." + key + " = " + value);
-  for (const auto& v : network.variables()) {
-    auto node = net.append_child("VARIABLE");
-    node.append_attribute("TYPE") = "nature";
-    add_text(node, "NAME", v.name());
-    for (const auto& state : v.states()) add_text(node, "OUTCOME", state);
-    if (!options.properties) continue;
-    if (v.has_intervals()) {
-      std::vector<std::string> edges;
-      for (const double e : v.edges()) edges.push_back(text::format_double(e));
-      add_text(node, "PROPERTY", "edges = " + text::join(edges, ", "));
-    }
-    const auto& tags = v.tags();
-    for (const auto& [key, value] : {std::pair<const char*, const std::string*>{"quantity", &tags.quantity},
-                                     {"unit", &tags.unit},
-                                     {"role", &tags.role}}) {
-      if (value->empty()) continue;
-      if (value->find('=') != std::string::npos) {
-        throw model_error("the " + std::string(key) + " tag of '" + v.name() +
-                          "' contains '=', which pgmpy's XMLBIF reader splits properties at");
-      }
-      add_text(node, "PROPERTY", std::string(key) + " = " + *value);
-    }
+  return net;
+}
+
+void add_variable(pugi::xml_node net, const variable& v, const char* type, const xmlbif_write_options& options) {
+  auto node = net.append_child("VARIABLE");
+  node.append_attribute("TYPE") = type;
+  add_text(node, "NAME", v.name());
+  for (const auto& state : v.states()) add_text(node, "OUTCOME", state);
+  if (!options.properties) return;
+  if (v.has_intervals()) {
+    std::vector<std::string> edges;
+    for (const double e : v.edges()) edges.push_back(text::format_double(e));
+    add_text(node, "PROPERTY", "edges = " + text::join(edges, ", "));
   }
-  for (const auto& table : network.tables()) {
-    auto node = net.append_child("DEFINITION");
-    add_text(node, "FOR", table.child().name());
-    for (const auto& parent : table.parents()) add_text(node, "GIVEN", parent.name());
-    std::string values;
-    for (const double value : table.values()) {
-      if (!values.empty()) values += ' ';
-      values += text::format_double(value);
+  const auto& tags = v.tags();
+  for (const auto& [key, value] : {std::pair<const char*, const std::string*>{"quantity", &tags.quantity},
+                                   {"unit", &tags.unit},
+                                   {"role", &tags.role}}) {
+    if (value->empty()) continue;
+    if (value->find('=') != std::string::npos) {
+      throw model_error("the " + std::string(key) + " tag of '" + v.name() +
+                        "' contains '=', which pgmpy's XMLBIF reader splits properties at");
     }
-    add_text(node, "TABLE", values);
+    add_text(node, "PROPERTY", std::string(key) + " = " + *value);
+  }
+}
+
+/// A <DEFINITION> of `child` given `parents`, with a <TABLE> of `values` unless it is null.
+void add_definition(pugi::xml_node net, const std::string& child, const std::vector<std::string>& parents,
+                    const std::vector<double>* values) {
+  auto node = net.append_child("DEFINITION");
+  add_text(node, "FOR", child);
+  for (const auto& parent : parents) add_text(node, "GIVEN", parent);
+  if (values == nullptr) return;
+  std::string text;
+  for (const double value : *values) {
+    if (!text.empty()) text += ' ';
+    text += text::format_double(value);
+  }
+  add_text(node, "TABLE", text);
+}
+
+}  // namespace
+
+void write_xmlbif(const bayesian_network& network, std::ostream& out, const xmlbif_write_options& options) {
+  if (network.has_sparse_tables()) {
+    write_xmlbif(network.dense("writing XMLBIF, which has no sparse form (pgm's JSON model has),"), out, options);
+    return;
+  }
+  pugi::xml_document document;
+  auto net = start_document(document, options);
+  for (const auto& v : network.variables()) add_variable(net, v, "nature", options);
+  for (const auto& table : network.tables()) {
+    std::vector<std::string> parents;
+    for (const auto& parent : table.parents()) parents.push_back(parent.name());
+    const std::vector<double> values(table.values().begin(), table.values().end());
+    add_definition(net, table.child().name(), parents, &values);
   }
   document.save(out, "  ", pugi::format_default, pugi::encoding_utf8);
+}
+
+void write_xmlbif(const influence_diagram& diagram, std::ostream& out, const xmlbif_write_options& options) {
+  pugi::xml_document document;
+  auto net = start_document(document, options);
+  for (std::size_t i = 0; i < diagram.size(); ++i) {
+    const auto id = variable_id(static_cast<variable_id::rep>(i));
+    add_variable(net, diagram.at(id), diagram.is_decision(id) ? "decision" : "nature", options);
+  }
+  for (const auto& u : diagram.utilities()) {
+    auto node = net.append_child("VARIABLE");
+    node.append_attribute("TYPE") = "utility";
+    add_text(node, "NAME", u.name);
+  }
+  const auto names = [&](const std::vector<variable_id>& ids) {
+    std::vector<std::string> result;
+    for (const auto id : ids) result.push_back(diagram.at(id).name());
+    return result;
+  };
+  for (std::size_t i = 0; i < diagram.size(); ++i) {
+    const auto id = variable_id(static_cast<variable_id::rep>(i));
+    add_definition(net, diagram.at(id).name(), names(diagram.parents(id)),
+                   diagram.is_decision(id) ? nullptr : &diagram.table(id));
+  }
+  for (const auto& u : diagram.utilities()) add_definition(net, u.name, names(u.parents), &u.values);
+  document.save(out, "  ", pugi::format_default, pugi::encoding_utf8);
+}
+
+std::string to_xmlbif(const influence_diagram& diagram, const xmlbif_write_options& options) {
+  std::ostringstream out;
+  write_xmlbif(diagram, out, options);
+  return out.str();
+}
+
+influence_diagram parse_xmlbif_influence_diagram(std::string_view text, const std::string& source) {
+  return xmlbif_reader(text, source).read_diagram();
+}
+
+influence_diagram read_xmlbif_influence_diagram(const std::filesystem::path& path) {
+  return parse_xmlbif_influence_diagram(pgm::read_file(path), path.string());
 }
 
 std::string to_xmlbif(const bayesian_network& network, const xmlbif_write_options& options) {
