@@ -12,6 +12,7 @@
 
 #include "check.hpp"
 #include "pgm/decide/prevent.hpp"
+#include "pgm/decide/prevent_by_utility.hpp"
 #include "pgm/decide/solve_decisions.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 #include "support/enumeration.hpp"
@@ -221,5 +222,31 @@ void limid_one_pass_per_candidate(benchmark::State& state) {
   state.counters["eu"] = eu;
 }
 BENCHMARK(limid_one_pass_per_candidate)->Arg(20)->Unit(benchmark::kMillisecond);
+
+// One plan, as `pgm prevent` decides it: the move of highest expected utility (an influence
+// diagram of four decisions solved) beside the nearest move above ε (one breadth-first search).
+void prevent_one_plan_by_utility(benchmark::State& state) {
+  const auto table = stacking_table(0.85);
+  const pgm::move_costs costs{.reward = 100, .cost = {{"xOff1", 2}, {"yOff1", 2}, {"xOff2", 2}, {"yOff2", 2}}};
+  pgm::utility_move move;
+  for (auto _ : state) {
+    move = pgm::best_move(table, 1, 0, all_controllable, costs);
+    benchmark::DoNotOptimize(move);
+  }
+  pgm::bench::check(state, move.success_probability > table(pgm::state_index(1), pgm::config_index(0)),
+                    "the best move does not raise success");
+}
+BENCHMARK(prevent_one_plan_by_utility)->Unit(benchmark::kMicrosecond);
+
+void prevent_one_plan_by_epsilon(benchmark::State& state) {
+  const auto table = stacking_table(0.85);
+  std::size_t target = 0;
+  for (auto _ : state) {
+    target = pgm::prevention_target(table, 1, 0, all_controllable, {.epsilon = 0.8});
+    benchmark::DoNotOptimize(target);
+  }
+  pgm::bench::check(state, target != 0, "prevention stayed");
+}
+BENCHMARK(prevent_one_plan_by_epsilon)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

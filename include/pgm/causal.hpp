@@ -7,3 +7,4 @@
 #include "pgm/causal/d_separation.hpp"
 #include "pgm/causal/dag_check.hpp"
 #include "pgm/causal/intervention.hpp"
+#include "pgm/causal/probability_of_causation.hpp"

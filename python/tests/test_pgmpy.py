@@ -80,7 +80,7 @@ def test_something_else_is_refused():
 
 
 def test_the_round_trip_of_docs_python_md_runs_as_written(capsys):
-    _, first, round_trip, _ = python_blocks("docs/python.md")
+    _, first, round_trip, _, _ = python_blocks("docs/python.md")
     names = {}
     exec(compile(first, "docs/python.md", "exec"), names)
     exec(compile(round_trip, "docs/python.md", "exec"), names)

@@ -119,6 +119,7 @@ int main(int argc, char** argv) {
   pgm::cli::add_prevent_command(app);
   pgm::cli::add_decide_command(app);
   pgm::cli::add_dsep_command(app);
+  pgm::cli::add_counterfactual_command(app);
   pgm::cli::add_components_command(app);
   pgm::cli::add_check_command(app);
   pgm::cli::add_sample_command(app);

@@ -1,5 +1,6 @@
-// `pgm predict` and `pgm prevent` as a user meets them: help, the printed prediction,
-// explanation and suggestion, and each kind of bad input ending in one line and exit code 1.
+// `pgm predict`, `pgm prevent` and `pgm decide` as a user meets them: help, the printed
+// prediction, explanation and suggestion, the move of highest expected utility, an influence
+// diagram's policies, and each kind of bad input ending in one line and exit code 1.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -8,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "pgm/io/network_file.hpp"
@@ -114,6 +116,76 @@ TEST_F(decide_cli_test, bad_input_is_one_clear_line) {
   // Given but empty is not the same as absent (every parent).
   expect_error("prevent" + m + " --assign 'xOff1=0,yOff1=0' --controllable ''",
                "no variable is controllable, so nothing can be changed: name at least one");
+}
+
+TEST_F(decide_cli_test, prevent_with_a_reward_weighs_the_gain_against_the_cost) {
+  const auto plan = "prevent --model " + model().string() + " --assign 'xOff1=-1,yOff1=0.1' --controllable xOff1,yOff1";
+  // Moving xOff1 one bin raises success from 0.3 to 0.95: worth 65 of a reward of 100.
+  const auto cheap = run(plan + " --reward 100 --move-cost xOff1=10,yOff1=10 --format json");
+  ASSERT_EQ(cheap.code, 0) << cheap.err;
+  const auto moved = nlohmann::json::parse(cheap.out);
+  EXPECT_EQ(moved["plan"]["xOff1"], "1");
+  EXPECT_EQ(moved["moves"], nlohmann::json::array({"xOff1"}));
+  EXPECT_NEAR(moved["expected_utility"].get<double>(), 85, 1e-12);
+  EXPECT_NEAR(moved["success_probability"].get<double>(), 0.95, 1e-15);
+  EXPECT_NEAR(moved["cost"].get<double>(), 10, 1e-15);
+  const auto dear = run(plan + " --reward 100 --move-cost xOff1=70,yOff1=70");
+  EXPECT_EQ(dear.code, 0) << dear.err;
+  EXPECT_THAT(dear.out, HasSubstr("expected utility 30 (success 0.3, cost 0)"));
+  EXPECT_THAT(dear.out, HasSubstr("keep the plan"));
+  // Per unit: the move is 1.7 cm.
+  const auto units = run(plan + " --reward 100 --move-cost xOff1=10 --per units");
+  EXPECT_THAT(units.out, HasSubstr("expected utility 78 (success 0.95, cost 17)"));
+  EXPECT_THAT(units.out, HasSubstr("xOff1: 0 [-3, -0.4) cm -> 1 [-0.4, 0.4) cm (move +1.7 cm)"));
+  expect_error(plan + " --reward 100 --move-cost colour=1", "'colour', which is not a controllable parent");
+  expect_error(plan + " --reward 100 --move-cost xOff1", "expected NAME=COST, found 'xOff1'");
+  EXPECT_EQ(run(plan + " --move-cost xOff1=1").code, 2);  // needs --reward
+}
+
+TEST_F(decide_cli_test, decide_solves_the_oil_wildcatter) {
+  const auto oil = std::string(PGM_SOURCE_DIR) + "/tests/data/decisions/oil_wildcatter.xml";
+  const auto help = run("decide --help");
+  EXPECT_EQ(help.code, 0);
+  EXPECT_THAT(help.out, HasSubstr("--limited-memory"));
+  const auto text = run("decide --model " + oil + " --policy-out " + (dir_ / "policy.csv").string());
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("maximum expected utility: 22.5\nTest: yes\n"));
+  EXPECT_THAT(text.out, HasSubstr("Test=yes, Seismic=diffuse -> no"));
+  std::ifstream policy(dir_ / "policy.csv");
+  const std::string csv((std::istreambuf_iterator<char>(policy)), std::istreambuf_iterator<char>());
+  EXPECT_THAT(csv, HasSubstr("decision,observed,action\nTest,,yes\nDrill,\"Test=yes,Seismic=closed\",yes\n"));
+  const auto json = run("decide --model " + oil + " --format json --value-of-information Oil --before Drill");
+  ASSERT_EQ(json.code, 0) << json.err;
+  const auto document = nlohmann::json::parse(json.out);
+  EXPECT_EQ(document["meu"].get<double>(), 22.5);
+  EXPECT_EQ(document["value_of_information"].get<double>(), 32.5);
+  EXPECT_EQ(document["policies"]["Drill"][2],
+            (nlohmann::json{{"Test", "yes"}, {"Seismic", "diffuse"}, {"action", "no"}}));
+  EXPECT_EQ(document["local_optimum"], false);
+  const auto limited = nlohmann::json::parse(run("decide --model " + oil + " --limited-memory --format json").out);
+  EXPECT_EQ(limited["local_optimum"], true);
+  EXPECT_LT(limited["start_expected_utility"].get<double>(), 22.5);
+  expect_error("decide --model " + oil + " --evidence Seismic=open", "'Seismic' depends on the decision 'Test'");
+  expect_error("decide --model " + oil + " --evidence Oil=damp", "no state 'damp'");
+  expect_error("decide --model " + model().string(), "expected a file ending in .xml");
+  EXPECT_EQ(run("decide --model " + oil + " --before Drill").code, 2);
+}
+
+TEST_F(decide_cli_test, counterfactual_bounds_necessity_and_sufficiency) {
+  // P(onTop1 = 0 | xOff1) is 2.5/3 at bin 0 and 0.95/3 at bin 1, each bin a third: PN ≥
+  // (2.5/9 + 0.95/9 − 0.95/3) / (2.5/9) = 0.24, the third bin keeping it from 0.62.
+  const auto ask = "counterfactual --model " + model().string() + " --cause xOff1=0 --alternative 1 --effect onTop1=0";
+  const auto text = run(ask);
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("had xOff1 been 1 | xOff1=0, onTop1=0) in [0.24, 1]"));
+  const auto json = nlohmann::json::parse(run(ask + " --format json").out);
+  EXPECT_NEAR(json["pn_lower"].get<double>(), 0.24, 1e-15);
+  for (const auto* bound : {"ps_lower", "ps_upper", "pns_lower", "pns_upper"}) EXPECT_TRUE(json[bound].is_number());
+  expect_error(ask + " --evidence onTop1=1", "evidence on 'onTop1'");
+  expect_error("counterfactual --model " + model().string() + " --cause xOff1 --alternative 1 --effect onTop1=0",
+               "--cause: expected VARIABLE=STATE");
+  expect_error("counterfactual --model " + model().string() + " --cause xOff1=0 --alternative 9 --effect onTop1=0",
+               "no state '9'");
 }
 
 }  // namespace

@@ -82,6 +82,12 @@ inline std::optional<interval> interval_of(const variable& v, std::size_t state)
                                            std::size_t configuration, std::span<const bool> controllable,
                                            const prevention_options& options = {});
 
+/// The explanation of moving from configuration u to `target` (only controllable variables
+/// differ), however the target was chosen.
+[[nodiscard]] PGM_DECL explanation explain_move(const cpt<double>& table, std::size_t success_state,
+                                                std::size_t configuration, std::size_t target,
+                                                std::span<const bool> controllable, double epsilon);
+
 /// What prevention decides for one planned assignment on a network.
 struct prevention_plan {
   /// The success table the decision used: P(success | controllable ∪ assigned parents), the

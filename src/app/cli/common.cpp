@@ -284,4 +284,10 @@ CLI::Validator number_between(double lo, double hi, bool lo_open, bool hi_open) 
       "NUMBER " + range);
 }
 
+std::string json_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
 }  // namespace pgm::cli

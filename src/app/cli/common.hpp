@@ -124,6 +124,9 @@ CLI::Validator number_between(double lo, double hi, bool lo_open, bool hi_open);
 /// pipe) then fails the run before `output` is replaced, so a retry starts from the old file.
 [[nodiscard]] std::function<void()> summary_before_replacing(std::string summary, std::filesystem::path output);
 
+/// A number for JSON to 17 significant digits, which reads back to the same double.
+[[nodiscard]] std::string json_number(double value);
+
 /// Prints "pgm: note: …" to stderr, for what the user should know but need not act on.
 void note(const std::string& text);
 
@@ -156,5 +159,6 @@ void add_sample_command(CLI::App& app);
 void add_unroll_command(CLI::App& app);
 void add_filter_command(CLI::App& app);
 void add_decide_command(CLI::App& app);
+void add_counterfactual_command(CLI::App& app);
 
 }  // namespace pgm::cli

@@ -29,13 +29,6 @@ struct decide_arguments {
   std::string before;
 };
 
-/// A number as `decide` prints it in JSON: 17 significant digits, which read back exactly.
-std::string json_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
 std::string json_string(const std::string& text) { return nlohmann::json(text).dump(); }
 
 /// One row of a policy: each observed variable's state (the evidence's where it is observed

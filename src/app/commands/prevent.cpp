@@ -1,8 +1,13 @@
 // pgm prevent: predict, explain a predicted failure and suggest the nearest values of the
-// controllable variables predicted to succeed.
+// controllable variables predicted to succeed, or (--reward) the move of highest expected utility.
 
+#include <algorithm>
+#include <cstdio>
 #include <iostream>
+#include <limits>
+#include <map>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +17,7 @@
 #include "pgm/core/text.hpp"
 #include "pgm/decide/assignment.hpp"
 #include "pgm/decide/explain.hpp"
+#include "pgm/decide/prevent_by_utility.hpp"
 
 namespace pgm::cli {
 namespace {
@@ -21,7 +27,96 @@ struct prevent_arguments {
   std::optional<std::string> controllable;  // given but empty is an error, not the default
   double epsilon = 0.8;
   std::string distance = "steps";
+  std::optional<double> reward;
+  std::string move_cost;
+  std::string per = "steps";
+  std::string format = "text";
 };
+
+/// Each moving variable, from where to where, then the value suggested for every controllable one.
+void print_moves(const explanation& why, const bayesian_network& network, const assignment& planned) {
+  for (const auto& c : why.responsible()) {
+    const auto& v = network.at(c.variable);
+    std::cout << "  " << c.variable << ": " << describe_state(v, c.from_state) << " -> "
+              << describe_state(v, c.to_state);
+    if (c.move) std::cout << " (move " << (*c.move > 0 ? "+" : "") << with_unit(v, *c.move) << ")";
+    std::cout << '\n';
+  }
+  std::cout << "suggested values:\n";
+  const auto suggested = suggested_values(why, planned);
+  for (const auto& c : why.changes) {
+    const auto& v = network.at(c.variable);
+    const auto& value = suggested.at(c.variable);
+    std::cout << "  " << c.variable << " = ";
+    if (const auto* number = std::get_if<double>(&value)) {
+      std::cout << with_unit(v, *number) << " (interval " << describe_state(v, c.to_state) << ")";
+    } else {
+      std::cout << std::get<std::string>(value);
+    }
+    std::cout << (c.moves() ? "" : " (unchanged)") << '\n';
+  }
+}
+
+/// "x=1.5,y=2" as costs per variable.
+std::map<std::string, double, std::less<>> parse_move_costs(const std::string& text) {
+  std::map<std::string, double, std::less<>> costs;
+  if (text.empty()) return costs;
+  for (const auto& piece : split_list(text, "--move-cost")) {
+    const auto eq = piece.find('=');
+    const auto number = eq == std::string::npos ? std::nullopt : text::parse_double(piece.substr(eq + 1));
+    if (!number) throw model_error("--move-cost: expected NAME=COST, found '" + piece + "'");
+    if (!costs.emplace(piece.substr(0, eq), *number).second) {
+      throw model_error("--move-cost names '" + piece.substr(0, eq) + "' twice");
+    }
+  }
+  return costs;
+}
+
+/// The move of highest expected utility (--reward): prevention as a decision.
+void print_best_move(const prevent_arguments& args, const prevention_plan& plan, const bayesian_network& network,
+                     const assignment& planned, const std::vector<std::string>& controllable) {
+  const auto& table = plan.table;
+  std::vector<char> flags;
+  for (const auto& p : table.parents()) {
+    flags.push_back(std::find(controllable.begin(), controllable.end(), p.name()) != controllable.end());
+  }
+  const std::span<const bool> mask(reinterpret_cast<const bool*>(flags.data()), flags.size());
+  const move_costs costs{.reward = *args.reward,
+                         .cost = parse_move_costs(args.move_cost),
+                         .unit = args.per == "units" ? move_costs::per::units : move_costs::per::steps};
+  const auto success = table.child().state(plan.why.success_state).value();
+  const auto move = best_move(table, success, plan.why.configuration, mask, costs);
+  const auto why = explain_move(table, success, plan.why.configuration, move.target, mask, args.epsilon);
+  if (args.format == "json") {
+    std::string out = "{\"success\": " + nlohmann::json(why.success_variable + "=" + why.success_state).dump() +
+                      ", \"predicted\": " + json_number(why.predicted) + ", \"plan\": {";
+    for (std::size_t i = 0; i < why.changes.size(); ++i) {
+      out += (i ? ", " : "") + nlohmann::json(why.changes[i].variable).dump() + ": " +
+             nlohmann::json(why.changes[i].to_label).dump();
+    }
+    out += "}, \"moves\": [";
+    const auto responsible = why.responsible();
+    for (std::size_t i = 0; i < responsible.size(); ++i) {
+      out += (i ? ", " : "") + nlohmann::json(responsible[i].variable).dump();
+    }
+    out += "], \"expected_utility\": " + json_number(move.expected_utility) +
+           ", \"success_probability\": " + json_number(move.success_probability) +
+           ", \"cost\": " + json_number(move.cost) + "}";
+    std::cout << out << '\n';
+    return;
+  }
+  std::cout << "success: " << why.success_variable << "=" << why.success_state << '\n';
+  std::cout << "predicted success probability: " << text::format_short(why.predicted) << '\n';
+  std::cout << "best move by expected utility (reward " << text::format_short(costs.reward)
+            << " for success, costs per " << (args.per == "units" ? "unit moved" : "bin step") << "): expected utility "
+            << text::format_short(move.expected_utility) << " (success " << text::format_short(move.success_probability)
+            << ", cost " << text::format_short(move.cost) << ")\n";
+  if (why.responsible().empty()) {
+    std::cout << "keep the plan: no move of " << text::join(controllable) << " gains more than it costs\n";
+    return;
+  }
+  print_moves(why, network, planned);
+}
 
 void run_prevent(const prevent_arguments& args) {
   const auto model = read_decision_model(args.decision.model, args.decision.success);
@@ -40,6 +135,10 @@ void run_prevent(const prevent_arguments& args) {
   options.metric = parse_distance(args.distance);
   const auto plan = plan_prevention(network, model.success, planned, controllable, options,
                                     {.marginalize_missing = args.decision.marginalize});
+  if (args.reward) {
+    print_best_move(args, plan, network, planned, controllable);
+    return;
+  }
   const auto& why = plan.why;
   std::cout << "success: " << why.success_variable << "=" << why.success_state << '\n';
   std::cout << "predicted success probability: " << text::format_short(why.predicted) << '\n';
@@ -60,26 +159,7 @@ void run_prevent(const prevent_arguments& args) {
             << " (" << why.steps << " bin step" << (why.steps == 1 ? "" : "s");
   if (why.distance_units) std::cout << ", distance " << text::format_short(*why.distance_units);
   std::cout << ")\n";
-  for (const auto& c : responsible) {
-    const auto& v = network.at(c.variable);
-    std::cout << "  " << c.variable << ": " << describe_state(v, c.from_state) << " -> "
-              << describe_state(v, c.to_state);
-    if (c.move) std::cout << " (move " << (*c.move > 0 ? "+" : "") << with_unit(v, *c.move) << ")";
-    std::cout << '\n';
-  }
-  std::cout << "suggested values:\n";
-  const auto suggested = suggested_values(why, planned);
-  for (const auto& c : why.changes) {
-    const auto& v = network.at(c.variable);
-    const auto& value = suggested.at(c.variable);
-    std::cout << "  " << c.variable << " = ";
-    if (const auto* number = std::get_if<double>(&value)) {
-      std::cout << with_unit(v, *number) << " (interval " << describe_state(v, c.to_state) << ")";
-    } else {
-      std::cout << std::get<std::string>(value);
-    }
-    std::cout << (c.moves() ? "" : " (unchanged)") << '\n';
-  }
+  print_moves(why, network, planned);
   std::cout << "predicted success after prevention: " << text::format_short(why.target_predicted) << '\n';
 }
 
@@ -103,6 +183,22 @@ void add_prevent_command(CLI::App& app) {
   cmd->add_option("--distance", args->distance,
                   "Nearness: steps (bins moved) or units (Euclidean distance between interval midpoints)")
       ->check(CLI::IsMember(known_distances()))
+      ->capture_default_str();
+  auto* reward = cmd->add_option("--reward", args->reward,
+                                 "Choose the move of highest expected utility instead: success is worth this much, "
+                                 "failure 0, less what moving costs (--move-cost)")
+                     ->check(number_between(0, std::numeric_limits<double>::infinity(), false, true));
+  cmd->add_option("--move-cost", args->move_cost,
+                  "With --reward: the cost of moving each variable per bin step (or unit, --per units), e.g. "
+                  "\"xOff2=2,yOff2=2\"; a controllable variable not named moves for free")
+      ->needs(reward);
+  cmd->add_option("--per", args->per, "With --reward: costs per bin step (steps) or per unit moved (units)")
+      ->check(CLI::IsMember({"steps", "units"}))
+      ->needs(reward)
+      ->capture_default_str();
+  cmd->add_option("--format", args->format, "With --reward: text or json (numbers to 17 significant digits)")
+      ->check(CLI::IsMember({"text", "json"}))
+      ->needs(reward)
       ->capture_default_str();
   cmd->callback([args] { run_prevent(*args); });
 }

@@ -17,10 +17,15 @@ PGM_DECL std::vector<variable_change> explanation::responsible() const {
 PGM_DECL explanation explain(const cpt<double>& table, std::size_t success_state, std::size_t configuration,
                              std::span<const bool> controllable, const prevention_options& options) {
   const auto target = prevention_target(table, success_state, configuration, controllable, options);
+  return explain_move(table, success_state, configuration, target, controllable, options.epsilon);
+}
+
+PGM_DECL explanation explain_move(const cpt<double>& table, std::size_t success_state, std::size_t configuration,
+                                  std::size_t target, std::span<const bool> controllable, double epsilon) {
   explanation result;
   result.success_variable = table.child().name();
   result.success_state = table.child().states()[success_state];
-  result.epsilon = options.epsilon;
+  result.epsilon = epsilon;
   result.configuration = configuration;
   result.target = target;
   result.predicted = table(state_index(static_cast<state_index::rep>(success_state)), config_index(configuration));
