@@ -12,6 +12,7 @@
 #include "pgm/io/decision_model.hpp"
 #include "pgm/io/dot.hpp"
 #include "pgm/io/gzip.hpp"
+#include "pgm/io/influence_file.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/net.hpp"
 #include "pgm/io/network_file.hpp"

@@ -45,7 +45,8 @@ class InfluenceDiagram:
 
     @classmethod
     def read(cls, path):
-        """Reads an XMLBIF influence diagram (TYPE="decision" and TYPE="utility" variables)."""
+        """Reads an influence diagram: pgm's JSON model (a .json path) or XMLBIF (TYPE="decision"
+        and TYPE="utility" variables)."""
         return cls(_core.read_influence_diagram(str(path)))
 
     @property
@@ -79,5 +80,5 @@ class InfluenceDiagram:
         return self._model.value_of_information(str(variable), str(before), _evidence(evidence), bool(limited_memory))
 
     def write(self, path):
-        """Writes the diagram as XMLBIF, atomically."""
+        """Writes the diagram atomically: pgm's JSON model to a .json path, else XMLBIF."""
         self._model.write(str(path))

@@ -10,10 +10,9 @@
 #include <string>
 #include <vector>
 
-#include "pgm/core/file.hpp"
 #include "pgm/core/mixed_radix.hpp"
 #include "pgm/decide/solve_decisions.hpp"
-#include "pgm/io/xmlbif.hpp"
+#include "pgm/io/influence_file.hpp"
 
 namespace py = pybind11;
 
@@ -96,12 +95,10 @@ void add_decisions(py::module_& m) {
            [](const diagram_handle& h, const std::string& name) { return h.model.at(h.model.id(name)).states(); })
       .def("solve", &solve)
       .def("value_of_information", &information)
-      .def("write", [](const diagram_handle& h, const std::filesystem::path& path) {
-        const auto text = to_xmlbif(h.model);
-        write_file_atomically(path, [&](std::ostream& out) { out << text; });
-      });
+      .def("write",
+           [](const diagram_handle& h, const std::filesystem::path& path) { write_influence_diagram(h.model, path); });
   m.def("read_influence_diagram",
-        [](const std::filesystem::path& path) { return diagram_handle{read_xmlbif_influence_diagram(path)}; });
+        [](const std::filesystem::path& path) { return diagram_handle{read_influence_diagram(path)}; });
 }
 
 }  // namespace pgm::python

@@ -47,6 +47,8 @@ def test_bad_input_is_a_pgm_error(tmp_path):
 
 
 def test_what_it_writes_reads_back(tmp_path):
-    path = tmp_path / "oil.xml"
-    pgm.InfluenceDiagram.read(OIL).write(path)
-    assert pgm.InfluenceDiagram.read(path).solve().meu == pytest.approx(22.5, abs=1e-12)
+    for name in ("oil.xml", "oil.json"):
+        path = tmp_path / name
+        pgm.InfluenceDiagram.read(OIL).write(path)
+        assert pgm.InfluenceDiagram.read(path).solve().meu == pytest.approx(22.5, abs=1e-12)
+    assert '"kind": "influence"' in (tmp_path / "oil.json").read_text()

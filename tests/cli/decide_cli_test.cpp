@@ -167,7 +167,8 @@ TEST_F(decide_cli_test, decide_solves_the_oil_wildcatter) {
   EXPECT_LT(limited["start_expected_utility"].get<double>(), 22.5);
   expect_error("decide --model " + oil + " --evidence Seismic=open", "'Seismic' depends on the decision 'Test'");
   expect_error("decide --model " + oil + " --evidence Oil=damp", "no state 'damp'");
-  expect_error("decide --model " + model().string(), "expected a file ending in .xml");
+  expect_error("decide --model " + model().string(), "not an influence diagram");
+  expect_error("decide --model " + (dir_ / "model.bif").string(), "expected a file ending in .xml");
   EXPECT_EQ(run("decide --model " + oil + " --before Drill").code, 2);
 }
 

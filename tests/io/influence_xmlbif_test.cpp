@@ -1,5 +1,6 @@
-// Influence diagrams in XMLBIF (aGrUM's BIFXML): the published oil wildcatter read and solved,
-// written and read back, and every malformed diagram refused with its place.
+// Influence diagrams in XMLBIF (aGrUM's BIFXML) and pgm's JSON model: the published oil
+// wildcatter read and solved, written and read back, and every malformed diagram refused with
+// its place.
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -7,6 +8,7 @@
 #include <string>
 
 #include "pgm/decide/solve_decisions.hpp"
+#include "pgm/io/influence_file.hpp"
 #include "pgm/io/xmlbif.hpp"
 
 namespace pgm::influence_xmlbif_tests {
@@ -87,6 +89,38 @@ TEST(influence_xmlbif_test, a_malformed_diagram_is_refused_with_its_place) {
   refused(diagram_text("", "", "<GIVEN>D</GIVEN>"), "the utility 'U' has 4 values; its 1 parents need 2");
   // A decision without a definition observes nothing.
   EXPECT_DOUBLE_EQ(solve_decisions(parse_xmlbif_influence_diagram(diagram_text(""), "blind.xml")).meu, 1.75);
+}
+
+TEST(influence_json_test, what_it_writes_reads_back_the_same) {
+  const auto diagram = read_xmlbif_influence_diagram(oil_file);
+  const auto json = to_json(diagram);
+  EXPECT_EQ(json["kind"], "influence");
+  EXPECT_EQ(json["decisions"][1]["observes"], (nlohmann::json{"Test", "Seismic"}));
+  EXPECT_EQ(parse_influence_json(json.dump(), "oil.json"), diagram);
+}
+
+TEST(influence_json_test, a_malformed_diagram_is_refused_with_its_json_path) {
+  auto json = to_json(read_xmlbif_influence_diagram(oil_file));
+  const auto refused = [](const nlohmann::json& document, const std::string& message) {
+    EXPECT_THAT([&] { (void)parse_influence_json(document.dump(), "bad.json"); },
+                ThrowsMessage<data_error>(AllOf(HasSubstr("bad.json: "), HasSubstr(message))))
+        << document.dump();
+  };
+  auto other = json;
+  other["kind"] = "markov";
+  refused(other, "/kind: expected \"influence\"");
+  other = json;
+  other["decisions"].push_back(other["decisions"][0]);
+  refused(other, "/decisions/2: 'Test' is listed twice");
+  other = json;
+  other["utilities"][1]["parents"][0] = "Payoff";
+  refused(other, "/utilities/1/parents/0: 'Payoff' is not a chance or decision variable");
+  other = json;
+  other["tables"][0]["values"][0][0] = 0.9;
+  refused(other, "/tables/0: column 0 of the table of 'Oil' sums to 1.4");
+  other = json;
+  other["decisions"][1]["observes"].push_back("Oil");
+  EXPECT_NEAR(solve_decisions(parse_influence_json(other.dump(), "clairvoyant.json")).meu, 55, 1e-12);
 }
 
 }  // namespace

@@ -14,7 +14,7 @@
 #include "pgm/core/text.hpp"
 #include "pgm/decide/solve_decisions.hpp"
 #include "pgm/inference/posterior_table.hpp"
-#include "pgm/io/xmlbif.hpp"
+#include "pgm/io/influence_file.hpp"
 
 namespace pgm::cli {
 namespace {
@@ -132,8 +132,8 @@ void write_policies(const influence_diagram& diagram, const decision_solution& s
 }
 
 void run_decide(const decide_arguments& args) {
-  require_extension(args.model, {".xml", ".xmlbif", ".bifxml"});
-  const auto diagram = read_xmlbif_influence_diagram(args.model);
+  require_extension(args.model, {".xml", ".xmlbif", ".bifxml", ".json"});
+  const auto diagram = read_influence_diagram(args.model);
   const auto observed = parse_evidence(args.evidence);
   const decision_options options{.limited_memory = args.limited_memory};
   const auto solution = solve_decisions(diagram, observed, options);
@@ -159,7 +159,7 @@ void add_decide_command(CLI::App& app) {
       "oil.xml --value-of-information Oil --before Drill --format json");
   cmd->add_option("--model", args->model,
                   "The influence diagram: XMLBIF with TYPE=\"decision\" and TYPE=\"utility\" variables (aGrUM's "
-                  "BIFXML)")
+                  "BIFXML), or pgm's JSON model of \"kind\": \"influence\"")
       ->required();
   cmd->add_option("--evidence", args->evidence,
                   "What is observed before the first decision, e.g. \"a=s,b=t\" (default: nothing)");
