@@ -653,12 +653,29 @@ def predict(network, assign, success=None, marginalize=False):
     return _core.predict(handle, assign, _text(success, "success"), _flag(marginalize, "marginalize"))
 
 
-def prevent(network, assign, controllable=None, epsilon=0.8, success=None, distance="steps", marginalize=False):
+def prevent(
+    network,
+    assign,
+    controllable=None,
+    epsilon=0.8,
+    success=None,
+    distance="steps",
+    marginalize=False,
+    *,
+    reward=None,
+    move_cost=None,
+    per="steps",
+):
     """Predicts the plan `assign`; below `epsilon`, explains the failure and suggests the
     nearest values of the `controllable` variables (default: every parent of the success
     variable) predicted to succeed, as `pgm prevent`. Returns a dict: predicted,
     failure_predicted, suggestion ({variable: value}), predicted_after, responsible (the
-    variables that move), steps, distance, target_succeeds and success."""
+    variables that move), steps, distance, target_succeeds and success.
+
+    With a `reward` (the utility of success; failure is worth 0) it suggests instead the move of
+    highest expected utility, each variable's move costing move_cost[variable] per bin step
+    (per="steps") or per unit (per="units"), a variable without a cost moving for free, as
+    `pgm prevent --reward`; the dict then also holds expected_utility and cost."""
     handle = _handle(network)
     assign = _assignment(assign, "assign", "{'xOff1': 0.3}")
     if isinstance(controllable, str):
@@ -671,6 +688,9 @@ def prevent(network, assign, controllable=None, epsilon=0.8, success=None, dista
         _text(distance, "distance"),
         _text(success, "success"),
         _flag(marginalize, "marginalize"),
+        None if reward is None else _real(reward, "reward"),
+        {} if move_cost is None else {str(k): _real(v, f"move_cost[{k!r}]") for k, v in dict(move_cost).items()},
+        _text(per, "per"),
     )
 
 

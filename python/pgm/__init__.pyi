@@ -220,6 +220,10 @@ def prevent(
     success: Optional[str] = None,
     distance: str = "steps",
     marginalize: bool = False,
+    *,
+    reward: Optional[float] = None,
+    move_cost: Optional[Mapping[str, float]] = None,
+    per: str = "steps",
 ) -> dict[str, Any]: ...
 def learn_structure(
     data: pd.DataFrame,

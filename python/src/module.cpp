@@ -33,6 +33,7 @@
 #include "pgm/data/bin_columns.hpp"
 #include "pgm/decide/explain.hpp"
 #include "pgm/decide/predict.hpp"
+#include "pgm/decide/prevent_by_utility.hpp"
 #include "pgm/decide/table_slice.hpp"
 #include "pgm/eval/cached_source.hpp"
 #include "pgm/eval/run_scenarios.hpp"
@@ -333,7 +334,9 @@ py::tuple slice_of(const network_handle& handle, const std::string& node, const 
 
 py::dict prevent_plan(const network_handle& handle, const py::object& planned,
                       const std::optional<std::vector<std::string>>& controllable, double epsilon,
-                      const std::string& distance, const std::optional<std::string>& success, bool marginalize) {
+                      const std::string& distance, const std::optional<std::string>& success, bool marginalize,
+                      const std::optional<double>& reward, const std::map<std::string, double>& move_cost,
+                      const std::string& per) {
   const auto& network = handle.network;
   const auto event = success_of(handle, success);
   const auto plan_values = assignment_of(network, planned);
@@ -345,7 +348,15 @@ py::dict prevent_plan(const network_handle& handle, const py::object& planned,
   options.metric = parse_distance(distance);
   const auto plan =
       plan_prevention(network, event, plan_values, movable, options, {.marginalize_missing = marginalize});
-  const auto& why = plan.why;
+  std::optional<utility_prevention> by_utility;
+  if (reward) {
+    if (per != "steps" && per != "units") throw error("per must be \"steps\" or \"units\", got \"" + per + "\"");
+    by_utility = prevent_by_utility(plan, movable,
+                                    {.reward = *reward,
+                                     .cost = {move_cost.begin(), move_cost.end()},
+                                     .unit = per == "units" ? move_costs::per::units : move_costs::per::steps});
+  }
+  const auto& why = by_utility ? by_utility->why : plan.why;
   py::dict suggestion;
   for (const auto& [name, value] : suggested_values(why, plan_values)) suggestion[py::str(name)] = to_python(value);
   py::list responsible;
@@ -360,6 +371,10 @@ py::dict prevent_plan(const network_handle& handle, const py::object& planned,
   result["responsible"] = responsible;
   result["steps"] = why.steps;
   result["distance"] = why.distance_units ? py::object(py::float_(*why.distance_units)) : py::object(py::none());
+  if (by_utility) {
+    result["expected_utility"] = by_utility->move.expected_utility;
+    result["cost"] = by_utility->move.cost;
+  }
   return result;
 }
 

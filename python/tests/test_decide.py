@@ -1,6 +1,7 @@
 """pgm.query, pgm.predict and pgm.prevent: exact inference and the decisions of `pgm predict` and
 `pgm prevent`, compared with known answers and with the program."""
 
+import json
 import re
 
 import numpy as np
@@ -138,3 +139,26 @@ def test_decision_errors(two_stack):
         pgm.prevent(net, {"xOff1": 0.0, "yOff1": 0.0, "xOff2": 0.0, "yOff2": 0.0}, epsilon=2)
     with pytest.raises(TypeError, match="assign must be a dict"):
         pgm.predict(net, 3)
+
+
+def test_prevent_with_a_reward_equals_the_program_and_weighs_costs(program, two_stack):
+    net, path = two_stack
+    assign = {"xOff1": 0.1, "yOff1": -0.2, "xOff2": 2.5, "yOff2": -2.0}
+    costs = {"xOff2": 5.0, "yOff2": 5.0}
+    result = pgm.prevent(net, assign, controllable=["xOff2", "yOff2"], reward=100, move_cost=costs)
+    out = program.run(
+        "prevent", "--model", path, "--assign", "xOff1=0.1,yOff1=-0.2,xOff2=2.5,yOff2=-2", "--controllable",
+        "xOff2,yOff2", "--reward", "100", "--move-cost", "xOff2=5,yOff2=5", "--format", "json",
+    ).stdout
+    printed = json.loads(out)
+    assert result["expected_utility"] == printed["expected_utility"]
+    assert result["cost"] == printed["cost"]
+    assert result["predicted_after"] == printed["success_probability"]
+    assert sorted(result["responsible"]) == sorted(printed["moves"])
+    assert result["expected_utility"] == pytest.approx(100 * result["predicted_after"] - result["cost"])
+    # Costs above the whole reward: nothing is worth moving.
+    stay = pgm.prevent(net, assign, controllable=["xOff2", "yOff2"], reward=100, move_cost={"xOff2": 1e3, "yOff2": 1e3})
+    assert stay["responsible"] == [] and stay["cost"] == 0
+    assert stay["expected_utility"] == pytest.approx(100 * stay["predicted"])
+    with pytest.raises(pgm.Error, match="not a controllable parent"):
+        pgm.prevent(net, assign, controllable=["xOff2"], reward=100, move_cost={"yOff2": 1})

@@ -10,12 +10,14 @@
 
 #include <cstddef>
 #include <map>
+#include <memory>
 #include <span>
 #include <string>
 
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/cpt.hpp"
 #include "pgm/core/influence_diagram.hpp"
+#include "pgm/decide/explain.hpp"
 
 namespace pgm {
 
@@ -48,6 +50,17 @@ struct utility_move {
 [[nodiscard]] PGM_DECL utility_move best_move(const cpt<double>& table, std::size_t success_state,
                                               std::size_t configuration, std::span<const bool> controllable,
                                               const move_costs& costs);
+
+/// The best move for a plan prevention has settled (its success table and configuration), and
+/// its explanation (ε only says whether each end is predicted to succeed).
+struct utility_prevention {
+  utility_move move;
+  explanation why;
+};
+
+[[nodiscard]] PGM_DECL utility_prevention prevent_by_utility(const prevention_plan& plan,
+                                                             std::span<const std::string> controllable,
+                                                             const move_costs& costs);
 
 }  // namespace pgm
 

@@ -75,18 +75,10 @@ std::map<std::string, double, std::less<>> parse_move_costs(const std::string& t
 /// The move of highest expected utility (--reward): prevention as a decision.
 void print_best_move(const prevent_arguments& args, const prevention_plan& plan, const bayesian_network& network,
                      const assignment& planned, const std::vector<std::string>& controllable) {
-  const auto& table = plan.table;
-  std::vector<char> flags;
-  for (const auto& p : table.parents()) {
-    flags.push_back(std::find(controllable.begin(), controllable.end(), p.name()) != controllable.end());
-  }
-  const std::span<const bool> mask(reinterpret_cast<const bool*>(flags.data()), flags.size());
   const move_costs costs{.reward = *args.reward,
                          .cost = parse_move_costs(args.move_cost),
                          .unit = args.per == "units" ? move_costs::per::units : move_costs::per::steps};
-  const auto success = table.child().state(plan.why.success_state).value();
-  const auto move = best_move(table, success, plan.why.configuration, mask, costs);
-  const auto why = explain_move(table, success, plan.why.configuration, move.target, mask, args.epsilon);
+  const auto [move, why] = prevent_by_utility(plan, controllable, costs);
   if (args.format == "json") {
     std::string out = "{\"success\": " + nlohmann::json(why.success_variable + "=" + why.success_state).dump() +
                       ", \"predicted\": " + json_number(why.predicted) + ", \"plan\": {";

@@ -163,4 +163,18 @@ PGM_DECL utility_move best_move(const cpt<double>& table, std::size_t success_st
   return move;
 }
 
+PGM_DECL utility_prevention prevent_by_utility(const prevention_plan& plan, std::span<const std::string> controllable,
+                                               const move_costs& costs) {
+  const auto& table = plan.table;
+  // std::vector<bool> has no contiguous storage; the span needs real bools.
+  const std::unique_ptr<bool[]> mask(new bool[table.parents().size()]);
+  for (std::size_t p = 0; p < table.parents().size(); ++p) {
+    mask[p] = std::find(controllable.begin(), controllable.end(), table.parents()[p].name()) != controllable.end();
+  }
+  const std::span<const bool> flags(mask.get(), table.parents().size());
+  const auto success = table.child().state(plan.why.success_state).value();
+  const auto move = best_move(table, success, plan.why.configuration, flags, costs);
+  return {move, explain_move(table, success, plan.why.configuration, move.target, flags, plan.why.epsilon)};
+}
+
 }  // namespace pgm
