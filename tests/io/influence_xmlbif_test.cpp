@@ -87,6 +87,18 @@ TEST(influence_xmlbif_test, a_malformed_diagram_is_refused_with_its_place) {
   refused(diagram_text("", R"(<VARIABLE TYPE="deterministic"><NAME>C</NAME></VARIABLE>)"),
           R"(expected "nature", "decision" or "utility")");
   refused(diagram_text("", "", "<GIVEN>D</GIVEN>"), "the utility 'U' has 4 values; its 1 parents need 2");
+  // A raw control character, which XML (and pgmpy's expat) refuses, and which a diagram could
+  // not be written back with (the fuzzer's finding).
+  std::string control = diagram_text("");
+  control.replace(control.find("a0"), 2, "a\x02");
+  refused(control, "a control character (byte 2) that XML does not allow");
+  influence_diagram written;
+  const auto a = written.add_chance(variable("A", {"a\x02", "a1"}));
+  written.set_table(a, {}, {0.5, 0.5});
+  written.set_observed(written.add_decision(variable("D", {"d0", "d1"})), {a});
+  written.add_utility("U", {a}, {1, 2});
+  EXPECT_THAT([&] { (void)to_xmlbif(written); },
+              ThrowsMessage<model_error>(HasSubstr("holds a control character, which XML cannot hold")));
   // A decision without a definition observes nothing.
   EXPECT_DOUBLE_EQ(solve_decisions(parse_xmlbif_influence_diagram(diagram_text(""), "blind.xml")).meu, 1.75);
 }

@@ -118,12 +118,24 @@ class xml_text_decoder {
     }
   }
 
+  /// Refuses a control character in text as the file has it: XML allows none but tab, line
+  /// feed and carriage return, raw or by reference, and expat (pgmpy's parser) refuses them.
+  static void check_characters(std::string_view raw, std::size_t offset) {
+    for (std::size_t i = 0; i < raw.size(); ++i) {
+      const auto c = static_cast<unsigned char>(raw[i]);
+      if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+        refuse(offset + i, "a control character (byte " + std::to_string(c) + ") that XML does not allow");
+      }
+    }
+  }
+
   /// The text of character data `raw` (as the file has it) at byte `offset`.
   std::string decode(std::string_view raw, std::size_t offset) {
     // pugixml lets '<' through in an attribute's value; XML (and ElementTree) refuse it.
     if (const auto angle = raw.find('<'); angle != std::string_view::npos) {
       refuse(offset, "a '<' in an attribute's value (write &lt; for '<')");
     }
+    check_characters(raw, offset);
     std::string out;
     if (raw.find('&') == std::string_view::npos) return std::string(raw);
     std::vector<std::string_view> open;
@@ -459,7 +471,10 @@ class xmlbif_reader {
     for (const auto& child : node.children()) {
       if (child.type() == pugi::node_element) break;
       if (child.type() == pugi::node_pcdata) text += decoder_.decode(child.value(), offset_of(child));
-      if (child.type() == pugi::node_cdata) text += child.value();
+      if (child.type() == pugi::node_cdata) {
+        xml_text_decoder::check_characters(child.value(), offset_of(child));
+        text += child.value();
+      }
     }
     return text;
   }
@@ -566,6 +581,11 @@ class xmlbif_reader {
 };
 
 void add_text(pugi::xml_node parent, const char* name, const std::string& text) {
+  for (const char c : text) {
+    if (static_cast<unsigned char>(c) < 0x20 && c != '\t' && c != '\n' && c != '\r') {
+      throw model_error("'" + text::printable(text) + "' holds a control character, which XML cannot hold");
+    }
+  }
   parent.append_child(name).text().set(text.c_str());
 }
 
