@@ -92,6 +92,9 @@ TEST(influence_xmlbif_test, a_malformed_diagram_is_refused_with_its_place) {
   std::string control = diagram_text("");
   control.replace(control.find("a0"), 2, "a\x02");
   refused(control, "a control character (byte 2) that XML does not allow");
+  std::string latin = diagram_text("");
+  latin.replace(latin.find("a0"), 2, "a\x93");
+  refused(latin, "bytes that are not UTF-8");
   influence_diagram written;
   const auto a = written.add_chance(variable("A", {"a\x02", "a1"}));
   written.set_table(a, {}, {0.5, 0.5});

@@ -39,6 +39,15 @@ TEST(json_model_test, the_streamed_writer_writes_what_the_document_dumps) {
   EXPECT_EQ(streamed.str(), to_json(net).dump(2) + "\n");
 }
 
+TEST(json_model_test, a_name_that_is_not_utf8_is_refused_not_a_crash) {
+  // A BIF or NET file may name states with any bytes; JSON holds only UTF-8.
+  const auto network = bayesian_network::from_tables({cpt<double>(variable("A", {"a\x93", "b"}), {}, {0.5, 0.5})});
+  EXPECT_THAT([&] { (void)to_json(network).dump(); },
+              ThrowsMessage<model_error>(HasSubstr("the state of 'A' 'a\\x93' is not UTF-8 text")));
+  std::ostringstream out;
+  EXPECT_THROW(write_model_json(out, network), model_error);
+}
+
 TEST(json_model_test, structure_only_with_tags_and_edges) {
   const auto x = variable::intervals("xOff1", {-3, 0, 3}, {"x-offset", "cm", "cubeUp1"});
   const network_structure s({x, variable("onTop1", {"0", "1"})}, {{"xOff1", "onTop1"}});

@@ -83,6 +83,9 @@ namespace detail {
 
 PGM_DECL nlohmann::json variable_to_json(const variable& v);
 
+/// Throws model_error naming `what` when `text` is not UTF-8, which JSON cannot hold.
+PGM_DECL void require_utf8(std::string_view text, const std::string& what);
+
 /// A sparse table's entry: "given" (the parents' states of each stored configuration), "values"
 /// (their columns) and "rest" (the column of every other configuration).
 [[nodiscard]] PGM_DECL cpt<double> read_sparse_table(const json_reader& reader, const nlohmann::json& entry,

@@ -118,14 +118,18 @@ class xml_text_decoder {
     }
   }
 
-  /// Refuses a control character in text as the file has it: XML allows none but tab, line
-  /// feed and carriage return, raw or by reference, and expat (pgmpy's parser) refuses them.
+  /// Refuses a control character in text as the file has it (XML allows none but tab, line
+  /// feed and carriage return, raw or by reference) and bytes that are not UTF-8, as expat
+  /// (pgmpy's parser) refuses both.
   static void check_characters(std::string_view raw, std::size_t offset) {
-    for (std::size_t i = 0; i < raw.size(); ++i) {
+    for (std::size_t i = 0; i < raw.size();) {
       const auto c = static_cast<unsigned char>(raw[i]);
       if (c < 0x20 && c != '\t' && c != '\n' && c != '\r') {
         refuse(offset + i, "a control character (byte " + std::to_string(c) + ") that XML does not allow");
       }
+      const auto length = text::utf8_sequence(raw.substr(i));
+      if (length == 0) refuse(offset + i, "bytes that are not UTF-8, the file's encoding");
+      i += length;
     }
   }
 

@@ -40,6 +40,7 @@ PGM_DECL nlohmann::json to_json(const influence_diagram& diagram) {
   }
   auto utilities = nlohmann::json::array();
   for (const auto& u : diagram.utilities()) {
+    detail::require_utf8(u.name, "the utility name");
     utilities.push_back({{"name", u.name}, {"parents", names(u.parents)}, {"values", u.values}});
   }
   return {{"format", "pgm-model"}, {"version", 1},           {"kind", "influence"},   {"variables", variables},

@@ -5,11 +5,28 @@
 #include <algorithm>
 #include <tuple>
 
+#include "pgm/core/text.hpp"
 #include "pgm/io/json_model.hpp"
 
 namespace pgm::detail {
 
+// A name read from a BIF or NET file may be any bytes.
+PGM_DECL void require_utf8(std::string_view text, const std::string& what) {
+  for (std::size_t i = 0; i < text.size();) {
+    const auto length = text::utf8_sequence(text.substr(i));
+    if (length == 0) {
+      throw model_error(what + " '" + text::printable(text) + "' is not UTF-8 text, which JSON cannot hold");
+    }
+    i += length;
+  }
+}
+
 PGM_DECL nlohmann::json variable_to_json(const variable& v) {
+  require_utf8(v.name(), "the variable name");
+  for (const auto& state : v.states()) require_utf8(state, "the state of '" + text::printable(v.name()) + "'");
+  for (const auto* tag : {&v.tags().quantity, &v.tags().unit, &v.tags().role}) {
+    require_utf8(*tag, "the tag of '" + text::printable(v.name()) + "'");
+  }
   nlohmann::json out = {{"name", v.name()}, {"states", v.states()}};
   if (v.has_intervals()) out["edges"] = v.edges();
   if (!v.tags().empty()) {
