@@ -287,13 +287,14 @@ PGM_DECL decision_solution solve_limited_memory(const influence_diagram& diagram
                         std::vector<double>(configurations.size() * actions, 1.0 / static_cast<double>(actions)));
   }
   solution.start_expected_utility = evaluate(diagram, observed, tables).second;
+  const auto base = potentials_of(diagram, observed);  // the tables and utilities, built once
   bool uniform = true;
   for (bool changed = true; changed; uniform = false) {
     changed = false;
     ++solution.rounds;
     for (std::size_t k = order.size(); k-- > 0;) {
       auto& policy = solution.policies[k];
-      auto p = potentials_of(diagram, observed);
+      auto p = base;
       for (std::size_t j = 0; j < tables.size(); ++j) {
         if (j != k) p.probabilities.push_back(tables[j]);
       }
