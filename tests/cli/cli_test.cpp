@@ -588,6 +588,41 @@ TEST_F(cli_test, a_summary_lost_on_standard_output_leaves_the_file_as_it_was) {
     EXPECT_EQ(r.code, 1) << algorithm;
     EXPECT_EQ(slurp(learned), "old") << algorithm;
   }
+
+  // Every command that writes a file and says so on standard output, the same rule.
+  const std::string sachs = std::string(PGM_NETWORKS_DIR) + "/sachs.bif";
+  const auto raw = file("raw.csv", "x,y\n1.5,0\n2.5,1\n3.5,0\n4.5,1\n");
+  const auto summary = file("summary.csv",
+                            "scenario,target,strategy,w,rows,metric,mean,sd,repetitions\n"
+                            "s,t,mle,0,0,failure_prevention,0.5,0.1,20\n");
+  const auto page = file("page.md", "{{pct:1 s/t/mle/0/0/failure_prevention}}\n");
+  const auto oil = std::string(PGM_SOURCE_DIR) + "/tests/data/decisions/oil_wildcatter.xml";
+  const auto grid = std::string(PGM_SOURCE_DIR) + "/tests/data/uai/MAR/Alchemy_11.uai";
+  const auto old = [&](const std::string& name) {
+    std::ofstream(path(name)) << "old";
+    return path(name).string();
+  };
+  for (const auto& [command, outputs] : std::vector<std::pair<std::string, std::vector<std::string>>>{
+           {"fit --data " + data.string() + " --edges xOff1-\\>onTop1 --out " + old("f.bif"), {"f.bif"}},
+           {"convert " + sachs + " " + old("c.json"), {"c.json"}},
+           {"convert " + grid + " " + old("c.uai"), {"c.uai"}},
+           {"discretize --in " + raw.string() + " --columns x --bins 2 --out " + old("o.csv") + " --edges-out " +
+                old("e.json"),
+            {"o.csv", "e.json"}},
+           {"draw --model " + sachs + " --out " + old("d.dot"), {"d.dot"}},
+           {"report --template " + page.string() + " --summary " + summary.string() + " --out " + old("r.md"),
+            {"r.md"}},
+           {"simulate --task 1-stack --rows 10 --out " + old("s.csv"), {"s.csv"}},
+           {"solve --model " + grid + " --task PR --out " + old("p.PR"), {"p.PR"}},
+           {"decide --model " + oil + " --policy-out " + old("policy.csv"), {"policy.csv"}}}) {
+    const auto r = run_to(command, "/dev/full");
+    EXPECT_EQ(r.code, 1) << command << ": " << r.err;
+    EXPECT_THAT(r.err, HasSubstr("cannot write to standard output")) << command;
+    for (const auto& output : outputs) EXPECT_EQ(slurp(path(output)), "old") << command << ": " << output;
+    const auto written = run(command);
+    EXPECT_EQ(written.code, 0) << command << ": " << written.err;
+    for (const auto& output : outputs) EXPECT_NE(slurp(path(output)), "old") << command << ": " << output;
+  }
 }
 
 // A message that quotes a bad file's bytes shows control characters escaped: a terminal never

@@ -5,7 +5,9 @@
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -19,6 +21,8 @@ struct program_result {
   int code;
   std::string out;
   std::string err;
+  /// The largest resident memory the program (or its shell) held, in KiB.
+  long peak_kib = 0;
 };
 
 class program_test : public folder_test {
@@ -37,9 +41,18 @@ class program_test : public folder_test {
   program_result run_to(const std::string& arguments, const std::filesystem::path& output) const {
     const auto err = dir_ / "stderr.txt";
     const auto command = std::string(PGM_PROGRAM) + " " + arguments + " >" + output.string() + " 2>" + err.string();
-    const int status = std::system(command.c_str());
+    // As std::system does, but waited for with wait4, which tells the memory the run took.
+    const pid_t child = ::fork();
+    if (child == 0) {
+      ::execl("/bin/sh", "sh", "-c", command.c_str(), static_cast<char*>(nullptr));
+      ::_exit(127);
+    }
+    int status = -1;
+    rusage usage{};
+    if (child < 0 || ::wait4(child, &status, 0, &usage) != child) status = -1;
     const bool file = std::filesystem::is_regular_file(output);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, file ? slurp(output) : std::string(), slurp(err)};
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, file ? slurp(output) : std::string(), slurp(err),
+            usage.ru_maxrss};
   }
 
   /// Expects a non-zero exit with `message` on stderr and, if given, no file at `output`.

@@ -37,6 +37,15 @@ inline constexpr std::size_t json_max_depth = 256;
 /// regular file, and while reading a device or pipe (/dev/zero never ends).
 inline constexpr std::uint64_t max_file_bytes = std::uint64_t{256} << 20;
 
+/// States of a latent variable fitted by EM: 1,000. Every row's posterior spreads over all of
+/// them, and each of its children's tables grows with them; latent classes number a handful.
+inline constexpr std::size_t max_latent_states = 1000;
+
+/// Values (numbers, strings, arrays, objects) of one JSON file: 2^25. Read into a document they
+/// take some 16 bytes each, 8 times the text of "0," at worst; a model written by pgm holds a
+/// value in 20 bytes or so, so that a file within max_file_bytes stays well below the limit.
+inline constexpr std::size_t json_max_values = std::size_t{1} << 25;
+
 /// Text that entities of an XMLBIF file's DTD may expand to, in all: 1 MiB (a name or a state
 /// needs a few bytes; a "billion laughs" file asks for gigabytes).
 inline constexpr std::size_t xml_max_entity_bytes = std::size_t{1} << 20;

@@ -62,9 +62,11 @@ class json_reader {
   PGM_DECL void check_format(const nlohmann::json& document, const char* expected) const;
 
  private:
-  /// Refuses nesting deeper than json_max_depth before the document is built, naming where
-  /// the limit is passed (strings are skipped; syntax is left to the parser).
-  PGM_DECL void check_depth(std::string_view text) const;
+  /// Refuses, before the document is built, nesting deeper than json_max_depth, an array of more
+  /// than max_table_cells values and a document of more than json_max_values, naming where the
+  /// limit is passed: a document costs some 16 bytes a value, 8 times its text at worst
+  /// (strings are skipped; syntax is left to the parser).
+  PGM_DECL void check_limits(std::string_view text) const;
 
   std::string source_;
 };

@@ -19,6 +19,7 @@
 #include <cstddef>
 #include <limits>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <ostream>
 #include <string>
 #include <string_view>
@@ -49,9 +50,27 @@ struct query_request {
   std::string do_text;
 };
 
-/// The records of a query file. Throws parse_error naming the line and column of a field that
-/// does not parse, a header without `query` or with an unknown or repeated column, a record
-/// with too many fields, or a file with no query.
+/// Reads a query file one record at a time, so that answering a long file holds one query in
+/// memory, not all of them. Throws parse_error naming the line and column of a field that does
+/// not parse, a header without `query` or with an unknown or repeated column, a record with too
+/// many fields, or a file with no query.
+class query_batch_reader {
+ public:
+  /// Reads the header of `text`, which must outlive the reader; `source` names it in messages.
+  PGM_DECL query_batch_reader(std::string_view text, std::string source);
+
+  /// Reads the next record into `request`; false at the end of the file.
+  PGM_DECL bool next(query_request& request);
+
+ private:
+  enum class column { query, evidence, soft, intervened, engine };
+  detail::csv_scanner scanner_;
+  std::vector<column> columns_;
+  std::vector<detail::csv_field> fields_;
+  std::size_t records_ = 0;
+};
+
+/// The records of a query file, all read (see query_batch_reader).
 [[nodiscard]] PGM_DECL std::vector<query_request> parse_query_batch(std::string_view text, const std::string& source);
 
 /// Writes the record of a query whose evidence is impossible: P(evidence) = 0 and `reason`.

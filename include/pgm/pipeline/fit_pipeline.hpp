@@ -20,6 +20,7 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/error.hpp"
+#include "pgm/core/limits.hpp"
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/discretizer.hpp"
 #include "pgm/data/family_counts.hpp"
@@ -112,6 +113,13 @@ namespace detail {
 /// structure, the transferred priors chosen from the available-case counts.
 template <row_source Source>
 [[nodiscard]] fit_result fit_by_em(Source& source, const fit_request& request) {
+  for (const auto& v : request.latent) {
+    if (v.states.size() > max_latent_states) {
+      throw model_error("the latent variable '" + v.name + "' has " + std::to_string(v.states.size()) +
+                        " states, more than pgm's limit of " + std::to_string(max_latent_states) +
+                        " for a latent variable (docs/limits.md)");
+    }
+  }
   for (const auto& column : source.columns()) {
     if (latent_named(request, column)) {
       throw data_error(source.name() + ": '" + column + "' is declared latent but is a column of the data");

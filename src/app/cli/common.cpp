@@ -8,8 +8,11 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
 #include <iostream>
 #include <limits>
+#include <random>
+#include <sstream>
 
 #include "pgm/core/error.hpp"
 #include "pgm/core/text.hpp"
@@ -282,6 +285,33 @@ CLI::Validator number_between(double lo, double hi, bool lo_open, bool hi_open) 
         return {};
       },
       "NUMBER " + range);
+}
+
+void write_output_last(const std::string& out, const std::function<void(std::ostream&)>& write) {
+  if (!out.empty()) {
+    pgm::write_file_atomically(out, write);
+    return;
+  }
+  std::error_code ignored;
+  const auto folder = std::filesystem::temp_directory_path(ignored);
+  const auto path = folder / ("pgm-output-" + std::to_string(std::random_device{}()));
+  std::fstream spool;
+  if (!folder.empty()) spool.open(path, std::ios::in | std::ios::out | std::ios::trunc | std::ios::binary);
+  if (!spool.is_open()) {
+    std::ostringstream buffer;
+    write(buffer);
+    std::cout << buffer.str();
+    return;
+  }
+  // Unlinked at once: the open file stays readable, and nothing is left behind on any exit.
+  std::filesystem::remove(path, ignored);
+  write(spool);
+  spool.flush();
+  if (!spool) throw io_error("cannot hold the output in a temporary file in '" + folder.string() + "' (a full disk?)");
+  if (spool.tellp() > 0) {
+    spool.seekg(0);
+    std::cout << spool.rdbuf();
+  }
 }
 
 std::string json_number(double value) {

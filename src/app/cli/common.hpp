@@ -124,6 +124,11 @@ CLI::Validator number_between(double lo, double hi, bool lo_open, bool hi_open);
 /// pipe) then fails the run before `output` is replaced, so a retry starts from the old file.
 [[nodiscard]] std::function<void()> summary_before_replacing(std::string summary, std::filesystem::path output);
 
+/// Writes a command's output once all of it is made: to `out` atomically (write_file_atomically),
+/// or with `out` empty to standard output, spooled through a temporary file (in memory when none
+/// can be made). A failure half way thus writes nothing, and a long output is not held in memory.
+void write_output_last(const std::string& out, const std::function<void(std::ostream&)>& write);
+
 /// A number for JSON to 17 significant digits, which reads back to the same double.
 [[nodiscard]] std::string json_number(double value);
 

@@ -152,8 +152,9 @@ void run_fit(const calibrate_arguments& args) {
     std::cerr << summary.str();
     std::cout << text;
   } else {
-    pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
-    std::cout << summary.str() << "wrote " << args.out << '\n';
+    pgm::write_file_atomically(
+        args.out, [&](std::ostream& out) { out << text; },
+        summary_before_replacing(summary.str() + "wrote " + args.out + "\n", args.out));
   }
 }
 

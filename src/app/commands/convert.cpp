@@ -27,18 +27,22 @@ void convert_markov_network(const convert_arguments& args, const markov_network&
   if (std::filesystem::path(args.out).extension() == ".gz") {
     throw error("pgm writes models uncompressed; name the output without .gz");
   }
+  const auto summary =
+      summary_before_replacing("converted " + args.in + " (" + std::string(name_of(from)) + ", a Markov network) -> " +
+                                   args.out + " (" + std::string(name_of(to)) + "): " + std::to_string(model.size()) +
+                                   " variables, " + std::to_string(model.factor_count()) + " factors\n",
+                               args.out);
   if (to == network_format("uai")) {
     const auto text = to_uai(model);
-    pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
+    pgm::write_file_atomically(
+        args.out, [&](std::ostream& out) { out << text; }, summary);
   } else if (to == network_format("json")) {
-    pgm::write_file_atomically(args.out, [&](std::ostream& out) { write_markov_json(out, model); });
+    pgm::write_file_atomically(
+        args.out, [&](std::ostream& out) { write_markov_json(out, model); }, summary);
   } else {
     throw error("'" + args.in + "' holds a Markov network, which " + std::string(name_of(to)) +
                 " cannot hold; convert it to .uai or .json");
   }
-  summary_stream(args.out) << "converted " << args.in << " (" << name_of(from) << ", a Markov network) -> " << args.out
-                           << " (" << name_of(to) << "): " << model.size() << " variables, " << model.factor_count()
-                           << " factors\n";
 }
 
 void run_convert(const convert_arguments& args) {
@@ -59,21 +63,26 @@ void run_convert(const convert_arguments& args) {
   // The counts a network is updated from (pgm fit --keep-counts) go along: in JSON under
   // "statistics", elsewhere in a property peers ignore, which --no-properties leaves out.
   const bool keeps_counts = model.statistics && (to == network_format("json") || !args.no_properties);
+  const auto summary = "converted " + args.in + " (" + std::string(name_of(from)) + ") -> " + args.out + " (" +
+                       std::string(name_of(to)) + "): " + std::to_string(network.size()) + " variables, " +
+                       std::to_string(network.free_parameters()) + " free parameters\n";
   std::vector<std::string> notes;
-  write_network(
-      network, args.out, to,
-      {.properties = !args.no_properties, .notes = &notes, .statistics = keeps_counts ? &*model.statistics : nullptr});
-  for (const auto& line : notes) note(line);
-  if (model.statistics && !keeps_counts) {
-    note("the counts kept in '" + args.in + "' (for pgm update) are left out with --no-properties");
-  }
-  if (from == network_format("json") && to != network_format("json") && read_success_metadata(args.in)) {
-    note("the success event in the metadata of '" + args.in + "' is not carried by " + std::string(name_of(to)) +
-         "; give it to predict and prevent with --success");
-  }
-  summary_stream(args.out) << "converted " << args.in << " (" << name_of(from) << ") -> " << args.out << " ("
-                           << name_of(to) << "): " << network.size() << " variables, " << network.free_parameters()
-                           << " free parameters\n";
+  const auto report = [&, print = summary_before_replacing(summary, args.out)] {
+    for (const auto& line : notes) note(line);
+    if (model.statistics && !keeps_counts) {
+      note("the counts kept in '" + args.in + "' (for pgm update) are left out with --no-properties");
+    }
+    if (from == network_format("json") && to != network_format("json") && read_success_metadata(args.in)) {
+      note("the success event in the metadata of '" + args.in + "' is not carried by " + std::string(name_of(to)) +
+           "; give it to predict and prevent with --success");
+    }
+    print();
+  };
+  write_network(network, args.out, to,
+                {.properties = !args.no_properties,
+                 .notes = &notes,
+                 .statistics = keeps_counts ? &*model.statistics : nullptr,
+                 .before_replacing = report});
 }
 
 }  // namespace

@@ -2,9 +2,11 @@
 // it, optionally the value of observing a chance variable before a decision.
 
 #include <cstdio>
+#include <functional>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -62,38 +64,37 @@ std::vector<policy_row> rows_of(const influence_diagram& diagram, const decision
   return rows;
 }
 
-void print_text(const influence_diagram& diagram, const decision_solution& solution, const evidence& observed,
-                const std::optional<double>& information, const decide_arguments& args) {
-  std::cout << (solution.local_optimum ? "expected utility (single policy updating, a local optimum): "
-                                       : "maximum expected utility: ")
-            << text::format_double(solution.meu) << '\n';
+void print_text(std::ostream& out, const influence_diagram& diagram, const decision_solution& solution,
+                const evidence& observed, const std::optional<double>& information, const decide_arguments& args) {
+  out << (solution.local_optimum ? "expected utility (single policy updating, a local optimum): "
+                                 : "maximum expected utility: ")
+      << text::format_double(solution.meu) << '\n';
   if (solution.local_optimum) {
-    std::cout << "  from uniform policies worth " << text::format_double(solution.start_expected_utility) << ", in "
-              << solution.rounds << " rounds\n";
+    out << "  from uniform policies worth " << text::format_double(solution.start_expected_utility) << ", in "
+        << solution.rounds << " rounds\n";
   }
   for (const auto& policy : solution.policies) {
     const auto& name = diagram.at(policy.decision).name();
     const auto rows = rows_of(diagram, policy, observed);
     if (rows.size() == 1 && rows[0].observed.empty()) {
-      std::cout << name << ": " << rows[0].action << '\n';
+      out << name << ": " << rows[0].action << '\n';
       continue;
     }
-    std::cout << name << ":\n";
+    out << name << ":\n";
     for (const auto& row : rows) {
       std::vector<std::string> given;
       for (const auto& [variable, state] : row.observed) given.push_back(variable + "=" + state);
-      std::cout << "  " << (given.empty() ? std::string("always") : text::join(given, ", ")) << " -> " << row.action
-                << '\n';
+      out << "  " << (given.empty() ? std::string("always") : text::join(given, ", ")) << " -> " << row.action << '\n';
     }
   }
   if (information) {
-    std::cout << "value of knowing " << args.information << " before " << args.before << ": "
-              << text::format_double(*information) << '\n';
+    out << "value of knowing " << args.information << " before " << args.before << ": "
+        << text::format_double(*information) << '\n';
   }
 }
 
-void print_json(const influence_diagram& diagram, const decision_solution& solution, const evidence& observed,
-                const std::optional<double>& information) {
+void print_json(std::ostream& stream, const influence_diagram& diagram, const decision_solution& solution,
+                const evidence& observed, const std::optional<double>& information) {
   std::string out = "{\"meu\": " + json_number(solution.meu) + ", \"policies\": {";
   for (std::size_t p = 0; p < solution.policies.size(); ++p) {
     const auto& policy = solution.policies[p];
@@ -113,22 +114,25 @@ void print_json(const influence_diagram& diagram, const decision_solution& solut
            ", \"rounds\": " + std::to_string(solution.rounds);
   }
   if (information) out += ", \"value_of_information\": " + json_number(*information);
-  std::cout << out << "}\n";
+  stream << out << "}\n";
 }
 
 void write_policies(const influence_diagram& diagram, const decision_solution& solution, const evidence& observed,
-                    const std::string& path) {
-  write_file_atomically(path, [&](std::ostream& out) {
-    out << "decision,observed,action\n";
-    for (const auto& policy : solution.policies) {
-      for (const auto& row : rows_of(diagram, policy, observed)) {
-        std::vector<std::string> given;
-        for (const auto& [variable, state] : row.observed) given.push_back(variable + "=" + state);
-        out << text::csv_escape(diagram.at(policy.decision).name(), ',') << ','
-            << text::csv_escape(text::join(given, ","), ',') << ',' << text::csv_escape(row.action, ',') << '\n';
-      }
-    }
-  });
+                    const std::string& path, const std::function<void()>& before_replacing) {
+  write_file_atomically(
+      path,
+      [&](std::ostream& out) {
+        out << "decision,observed,action\n";
+        for (const auto& policy : solution.policies) {
+          for (const auto& row : rows_of(diagram, policy, observed)) {
+            std::vector<std::string> given;
+            for (const auto& [variable, state] : row.observed) given.push_back(variable + "=" + state);
+            out << text::csv_escape(diagram.at(policy.decision).name(), ',') << ','
+                << text::csv_escape(text::join(given, ","), ',') << ',' << text::csv_escape(row.action, ',') << '\n';
+          }
+        }
+      },
+      before_replacing);
 }
 
 void run_decide(const decide_arguments& args) {
@@ -141,9 +145,16 @@ void run_decide(const decide_arguments& args) {
   if (!args.information.empty()) {
     information = value_of_information(diagram, args.information, args.before, observed, options);
   }
-  if (!args.policy_out.empty()) write_policies(diagram, solution, observed, args.policy_out);
-  args.format == "json" ? print_json(diagram, solution, observed, information)
-                        : print_text(diagram, solution, observed, information, args);
+  std::ostringstream answer;
+  args.format == "json" ? print_json(answer, diagram, solution, observed, information)
+                        : print_text(answer, diagram, solution, observed, information, args);
+  // The answer is printed before the policies' file replaces the old, so a failure leaves it.
+  if (args.policy_out.empty()) {
+    std::cout << answer.str();
+  } else {
+    write_policies(diagram, solution, observed, args.policy_out,
+                   summary_before_replacing(answer.str(), args.policy_out));
+  }
 }
 
 }  // namespace

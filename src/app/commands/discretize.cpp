@@ -78,19 +78,28 @@ void run_discretize(const discretize_arguments& args) {
   std::ostringstream csv_text;
   write_csv(binned, csv_text, ',', options.missing.tokens.front());  // missing stays missing
   const auto edges_text = to_json(fitted).dump(2) + "\n";
-  pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << csv_text.str(); });
-  if (!args.edges_out.empty()) {
-    pgm::write_file_atomically(args.edges_out, [&](std::ostream& out) { out << edges_text; });
-  }
+  std::string summary;
   for (const auto& [name, v] : fitted) {
-    summary_stream(args.out) << name << ": " << v.cardinality() << " bins " << describe(v) << '\n';
+    summary += name + ": " + std::to_string(v.cardinality()) + " bins " + describe(v) + "\n";
     if (args.method != "edges" && v.cardinality() < args.bins) {
       note("'" + name + "' has ties, so only " + std::to_string(v.cardinality()) + " of " + std::to_string(args.bins) +
            " bins are distinct");
     }
   }
-  summary_stream(args.out) << binned.rows() << " rows -> " << args.out
-                           << (args.edges_out.empty() ? "" : ", edges -> " + args.edges_out) << '\n';
+  summary += std::to_string(binned.rows()) + " rows -> " + args.out +
+             (args.edges_out.empty() ? "" : ", edges -> " + args.edges_out) + "\n";
+  // The edges' file is complete before the data's replaces the old, and the summary is printed
+  // before either does: a failure anywhere leaves both files as they were.
+  const auto write_data = [&] {
+    pgm::write_file_atomically(
+        args.out, [&](std::ostream& out) { out << csv_text.str(); }, summary_before_replacing(summary, args.out));
+  };
+  if (args.edges_out.empty()) {
+    write_data();
+  } else {
+    pgm::write_file_atomically(
+        args.edges_out, [&](std::ostream& out) { out << edges_text; }, write_data);
+  }
 }
 
 }  // namespace

@@ -91,9 +91,11 @@ void run_draw(const draw_arguments& args) {
   add_learned(args.model, options);
   const auto text = to_dot(model.structure, options);
   const auto bytes = extension == ".dot" ? text : render_with_dot(text, extension.substr(1));
-  pgm::write_file_atomically(out, [&](std::ostream& stream) { stream << bytes; });
-  summary_stream(out) << "drew " << model.structure.size() << " variables and " << model.structure.edges().size()
-                      << " edges -> " << args.out << '\n';
+  pgm::write_file_atomically(
+      out, [&](std::ostream& stream) { stream << bytes; },
+      summary_before_replacing("drew " + std::to_string(model.structure.size()) + " variables and " +
+                                   std::to_string(model.structure.edges().size()) + " edges -> " + args.out + "\n",
+                               out));
 }
 
 }  // namespace

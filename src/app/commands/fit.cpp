@@ -297,9 +297,12 @@ void run_fit(const fit_arguments& args) {
     note_counts(fitted.counts, request.bin);
   }
   if (fitted.transfer) note_transfer(*fitted.transfer, args.transfer.strategy);
-  write_network(fitted.network, args.out, {.statistics = fitted.statistics ? &*fitted.statistics : nullptr});
-  summary_stream(args.out) << "fitted " << fitted.network.size() << " tables (" << fitted.network.free_parameters()
-                           << " free parameters) from " << fitted.counts.rows << " rows -> " << args.out << '\n';
+  const auto summary = "fitted " + std::to_string(fitted.network.size()) + " tables (" +
+                       std::to_string(fitted.network.free_parameters()) + " free parameters) from " +
+                       std::to_string(fitted.counts.rows) + " rows -> " + args.out + "\n";
+  write_network(fitted.network, args.out,
+                {.statistics = fitted.statistics ? &*fitted.statistics : nullptr,
+                 .before_replacing = summary_before_replacing(summary, args.out)});
 }
 
 }  // namespace

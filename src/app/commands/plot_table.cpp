@@ -132,10 +132,15 @@ void run_plot_table(const plot_table_arguments& args) {
     throw error("--counts: '" + args.model + "' carries no counts; fit it with pgm fit --keep-counts --out MODEL.json");
   }
   const auto slice = slice_table(network, request, args.counts ? &*model.statistics : nullptr);
+  const auto summary =
+      summary_before_replacing("drew P(" + args.node + " = " + slice.node->states()[slice.state] + ") over " +
+                                   std::to_string(slice.x->cardinality()) + " x " +
+                                   std::to_string(slice.y->cardinality()) + " cells -> " + args.out + "\n",
+                               out);
   if (extension == ".gp") {
     const auto picture = std::filesystem::path(out).replace_extension(".png");
     pgm::write_file_atomically(
-        out, [&](std::ostream& stream) { stream << heat_map_script(slice, request, "pngcairo", picture); });
+        out, [&](std::ostream& stream) { stream << heat_map_script(slice, request, "pngcairo", picture); }, summary);
   } else {
     if (!gnuplot_available()) {
       throw io_error("drawing " + extension +
@@ -156,10 +161,14 @@ void run_plot_table(const plot_table_arguments& args) {
       std::filesystem::remove(picture, ignored);
       throw io_error("gnuplot could not draw '" + args.out + "' (its messages are above)");
     }
+    try {
+      summary();
+    } catch (...) {
+      std::filesystem::remove(picture, ignored);
+      throw;
+    }
     std::filesystem::rename(picture, out);
   }
-  summary_stream(out) << "drew P(" << args.node << " = " << slice.node->states()[slice.state] << ") over "
-                      << slice.x->cardinality() << " x " << slice.y->cardinality() << " cells -> " << args.out << '\n';
 }
 
 }  // namespace

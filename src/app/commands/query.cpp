@@ -72,25 +72,25 @@ class engines {
   std::map<std::string, any_inference_engine, std::less<>> made_;
 };
 
-/// Answers the --queries file into `out`, all of it or (on the first failure) nothing.
+/// Answers the --queries file into `out`, one query at a time (the caller keeps `out` from its
+/// destination until all are answered: on the first failure, nothing is written).
 template <GraphicalModel M>
 void answer_batch(const query_arguments& args, const std::shared_ptr<const M>& model, std::ostream& out,
                   const posterior_table_options& table) {
   const auto text = pgm::read_file(args.queries);
-  const auto requests = parse_query_batch(text, args.queries);
+  query_batch_reader reader(text, args.queries);
   engines<M> made(model, options_of(args));
-  std::ostringstream buffer;
   bool header = true;
-  std::size_t impossible = 0;
-  for (const auto& request : requests) {
+  std::size_t answered = 0, impossible = 0;
+  for (query_request request; reader.next(request); ++answered) {
     try {
       auto& engine = made.get(request.engine.empty() ? args.engine : request.engine);
       engine.set_evidence(resolve_evidence(*model, request.observed, request.soft, request.intervened));
       const auto ids = resolve_query(*model, request.query, engine.evidence());
       try {
-        write_query_record(buffer, request, engine.joint(ids), table, header);
+        write_query_record(out, request, engine.joint(ids), table, header);
       } catch (const impossible_evidence& e) {
-        write_impossible_record(buffer, request, std::string(engine.name()), e.what(), table, header);
+        write_impossible_record(out, request, std::string(engine.name()), e.what(), table, header);
         ++impossible;
       }
       header = false;
@@ -101,10 +101,9 @@ void answer_batch(const query_arguments& args, const std::shared_ptr<const M>& m
     }
   }
   if (impossible > 0) {
-    note(std::to_string(impossible) + " of " + std::to_string(requests.size()) +
+    note(std::to_string(impossible) + " of " + std::to_string(answered) +
          " queries have evidence of probability 0 (their records say so)");
   }
-  out << buffer.str();
 }
 
 void run_query(const query_arguments& args) {
@@ -143,14 +142,10 @@ void run_query(const query_arguments& args) {
     }
   };
   // Everything is computed before anything is written, so a failure leaves no partial output.
-  std::ostringstream buffer;
-  auto model = read_any_model_file(args.model);
-  std::visit([&]<GraphicalModel M>(M& held) { write(buffer, std::make_shared<const M>(std::move(held))); }, model);
-  if (args.out.empty()) {
-    std::cout << buffer.str();
-  } else {
-    pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << buffer.str(); });
-  }
+  write_output_last(args.out, [&](std::ostream& out) {
+    auto model = read_any_model_file(args.model);
+    std::visit([&]<GraphicalModel M>(M& held) { write(out, std::make_shared<const M>(std::move(held))); }, model);
+  });
 }
 
 }  // namespace

@@ -71,8 +71,9 @@ void run_report(const report_arguments& args) {
     }
     std::cout << args.out << " matches " << args.template_file << " and its summaries\n";
   } else {
-    pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
-    summary_stream(args.out) << args.template_file << " -> " << args.out << '\n';
+    pgm::write_file_atomically(
+        args.out, [&](std::ostream& out) { out << text; },
+        summary_before_replacing(args.template_file + " -> " + args.out + "\n", args.out));
   }
 }
 

@@ -75,12 +75,17 @@ void run_simulate(const simulate_arguments& args) {
     run_blocks(nullptr);
     return;
   }
-  pgm::write_file_atomically(args.out, [&](std::ostream& out) { run_blocks(&out); });
-  bar.finish();
-  summary_stream(args.out) << "simulated " << args.rows << " experiments of " << task.name << " (" << args.backend
-                           << ", seed " << args.seed << "): " << task.success << " = 1 in "
-                           << text::format_short(static_cast<double>(successes) / static_cast<double>(args.rows), 4)
-                           << " -> " << args.out << '\n';
+  pgm::write_file_atomically(
+      args.out, [&](std::ostream& out) { run_blocks(&out); },
+      [&] {
+        bar.finish();
+        summary_before_replacing(
+            "simulated " + std::to_string(args.rows) + " experiments of " + task.name + " (" + args.backend +
+                ", seed " + std::to_string(args.seed) + "): " + task.success + " = 1 in " +
+                text::format_short(static_cast<double>(successes) / static_cast<double>(args.rows), 4) + " -> " +
+                args.out + "\n",
+            args.out)();
+      });
   if (task.variant == "reality") note("'" + task.name + "' is a stand-in for the real robot, not real data");
 }
 

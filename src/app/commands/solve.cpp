@@ -166,7 +166,6 @@ void run_solve(const solve_arguments& args) {
     text = solve(network, ids, args, report, limit);
   }
   limit.finished();
-  pgm::write_file_atomically(args.out, [&](std::ostream& out) { out << text; });
   const std::chrono::duration<double> took = std::chrono::steady_clock::now() - started;
   if (!report.note.empty()) note(report.note);
   std::cerr << "pgm: solve: " << args.task << " by " << report.engine;
@@ -181,7 +180,9 @@ void run_solve(const solve_arguments& args) {
   }
   if (report.timed_out) std::cerr << ", stopped at the time limit";
   std::cerr << "; " << text::format_short(took.count(), 3) << " s\n";
-  summary_stream(args.out) << "wrote " << args.task << " of " << args.model << " to " << args.out << '\n';
+  pgm::write_file_atomically(
+      args.out, [&](std::ostream& out) { out << text; },
+      summary_before_replacing("wrote " + args.task + " of " + args.model + " to " + args.out + "\n", args.out));
 }
 
 }  // namespace

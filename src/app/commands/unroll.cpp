@@ -34,11 +34,14 @@ void run_unroll(const unroll_arguments& args) {
          first + "_1, … (" + first + "@0, " + first + "@1, … in JSON and XMLBIF)");
   }
   std::vector<std::string> notes;
-  write_network(network, args.out, to, {.notes = &notes});
-  for (const auto& line : notes) note(line);
-  summary_stream(args.out) << "unrolled " << args.model << " over " << args.steps << " slices -> " << args.out << " ("
-                           << name_of(to) << "): " << network.size() << " variables, " << network.free_parameters()
-                           << " free parameters\n";
+  const auto summary = "unrolled " + args.model + " over " + std::to_string(args.steps) + " slices -> " + args.out +
+                       " (" + std::string(name_of(to)) + "): " + std::to_string(network.size()) + " variables, " +
+                       std::to_string(network.free_parameters()) + " free parameters\n";
+  write_network(network, args.out, to,
+                {.notes = &notes, .before_replacing = [&, print = summary_before_replacing(summary, args.out)] {
+                   for (const auto& line : notes) note(line);
+                   print();
+                 }});
 }
 
 }  // namespace

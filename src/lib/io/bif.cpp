@@ -328,37 +328,50 @@ class bif_parser {
     }
   }
 
-  std::vector<double> parse_numbers() {
+  /// The numbers up to ';'. Past `most` of them the rest are checked and counted but not kept,
+  /// and `too_many(count)` fails: a list far longer than its table takes no memory.
+  template <class TooMany>
+  std::vector<double> parse_numbers(std::size_t most, TooMany too_many) {
     std::vector<double> values;
+    std::size_t count = 0;
     while (!accept_symbol(';')) {
       const auto token = expect_word("a probability or ';'");
       const auto value = text::parse_double(token.text);
       if (!value || !std::isfinite(*value)) {
         fail(token, "expected a probability, found " + text::quoted_number(token.text));
       }
-      values.push_back(*value);
+      if (++count <= most) values.push_back(*value);
       accept_symbol(',');
     }
+    if (count > most) too_many(count);
     return values;
   }
 
-  /// A table beyond max_table_cells whose variables are declared already (as they usually are)
-  /// is refused before its rows are read; the others are checked when the network is built.
-  void check_declared_cells(const probability_block& block) const {
+  /// The shape of a block's table when its variables are declared already (as they usually
+  /// are), so that its lists are bounded as they are read.
+  struct declared_shape {
+    std::size_t states = 0;
+    std::size_t configurations = 0;
+  };
+
+  /// The declared shape of `block`'s table, refused by name beyond max_table_cells before its
+  /// rows are read; nullopt when a variable is declared later (checked when the network is built).
+  std::optional<declared_shape> declared_shape_of(const probability_block& block) const {
     const auto child = declared_.find(block.header.text);
-    if (child == declared_.end()) return;
+    if (child == declared_.end()) return std::nullopt;
     std::vector<std::size_t> cards;
     for (const auto& parent : block.parents) {
       const auto it = declared_.find(parent);
-      if (it == declared_.end()) return;
+      if (it == declared_.end()) return std::nullopt;
       cards.push_back(it->second.var.cardinality());
     }
+    const declared_shape shape{child->second.var.cardinality(), mixed_radix(cards).size()};
     try {
-      static_cast<void>(
-          checked_table_cells(block.header.text, child->second.var.cardinality(), mixed_radix(cards).size()));
+      static_cast<void>(checked_table_cells(block.header.text, shape.states, shape.configurations));
     } catch (const model_error& e) {
       fail(block.where, e.what());
     }
+    return shape;
   }
 
   void parse_probability() {
@@ -377,17 +390,33 @@ class bif_parser {
     } else {
       expect_symbol(')');
     }
-    check_declared_cells(block);
+    const auto shape = declared_shape_of(block);
+    // A variable declared later bounds nothing yet: a list then stops at a whole table's limit.
+    const auto row_most = shape ? shape->states : max_table_cells;
+    const auto table_most = shape ? shape->states * shape->configurations : max_table_cells;
+    const auto numbers = [&](const bif_token& at, std::size_t most) {
+      return parse_numbers(most, [&](std::size_t count) {
+        if (!shape)
+          fail(at, "more than " + std::to_string(most) + " probabilities for '" + child.text + "', " +
+                       "pgm's limit of cells per table (docs/limits.md)");
+        fail(at, "expected " + std::to_string(most) + " probabilities for '" + child.text + "', found " +
+                     std::to_string(count));
+      });
+    };
     expect_symbol('{');
     while (!accept_symbol('}')) {
       const auto at = current_;
       if (accept_symbol('(')) {
+        if (block.rows.size() == (shape ? shape->configurations : max_table_cells)) {
+          fail(at, "more rows than the " + std::to_string(block.rows.size()) + " configurations of the parents of '" +
+                       child.text + "'");
+        }
         std::vector<std::string> labels;
         while (!accept_symbol(')')) {
           labels.push_back(expect_word("a parent state").text);
           accept_symbol(',');
         }
-        auto values = parse_numbers();
+        auto values = numbers(at, row_most);
         if (!block.rows.emplace(labels, std::make_pair(at, std::move(values))).second) {
           fail(at, "this configuration of the parents of '" + child.text + "' is given twice");
         }
@@ -395,10 +424,10 @@ class bif_parser {
       }
       const auto keyword = expect_word("'(', 'table', 'default' or '}'");
       if (keyword.text == "table") {
-        block.table = parse_numbers();
+        block.table = numbers(keyword, block.parents.empty() ? row_most : table_most);
         block.where = keyword;
       } else if (keyword.text == "default") {
-        block.fallback = parse_numbers();
+        block.fallback = numbers(keyword, row_most);
       } else if (keyword.text == "property") {
         property_value();
       } else {

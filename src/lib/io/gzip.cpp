@@ -15,6 +15,14 @@ std::string inflate_gzip(std::string_view bytes, const std::string& source, std:
   z_stream stream{};
   if (inflateInit2(&stream, 15 + 16) != Z_OK) throw io_error("'" + source + "': cannot start inflating");
   std::string out;
+  // The last member's trailer holds its inflated size mod 2^32: for the usual single member the
+  // exact size, reserved so that growing the text never holds twice its bytes (and never more than
+  // deflate can give: 1,032 bytes a byte).
+  if (bytes.size() >= 18) {
+    std::uint64_t size = 0;
+    for (int k = 3; k >= 0; --k) size = (size << 8) | static_cast<unsigned char>(bytes[bytes.size() - 4 + k]);
+    out.reserve(static_cast<std::size_t>(std::min({size, max_bytes, std::uint64_t{bytes.size()} * 1032})));
+  }
   std::vector<char> buffer(std::size_t{1} << 16);
   const auto* next = reinterpret_cast<const Bytef*>(bytes.data());
   std::size_t left = bytes.size();

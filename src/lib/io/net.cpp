@@ -261,8 +261,9 @@ class net_parser {
     }
     // A table beyond pgm's limit is refused before its values are read when its nodes are
     // declared already (as Hugin writes them).
-    detail::check_table_cells(variables_, table.child, table.parents, child.at,
-                              [this](detail::text_position p, const std::string& what) { fail(p, what); });
+    const auto cells =
+        detail::check_table_cells(variables_, table.child, table.parents, child.at,
+                                  [this](detail::text_position p, const std::string& what) { fail(p, what); });
     bool has_data = false;
     read_attributes([&](const net_token& attribute, const net_token& start) {
       if (attribute.text != "data") return false;  // experience, model_nodes, … carry nothing pgm keeps
@@ -273,11 +274,10 @@ class net_parser {
         if (!value || !std::isfinite(*value)) {
           fail(leaf.at, "expected a probability in the data of '" + table.child + "', found " + describe(leaf));
         }
-        if (table.values.size() == max_table_cells) {
+        if (!table.add_value(*value, cells)) {
           fail(leaf.at, "more than " + std::to_string(max_table_cells) + " probabilities in the table of '" +
                             table.child + "', pgm's limit of cells per table (docs/limits.md)");
         }
-        table.values.push_back(*value);
       });
       return true;
     });

@@ -52,8 +52,23 @@ struct declared_table {
   std::string child;
   std::vector<std::pair<std::string, text_position>> parents;
   std::vector<double> values;
+  /// The values the file gives: more than `values` holds when they overflow the table.
+  std::size_t values_given = 0;
   text_position at;         // the child's name
   text_position values_at;  // the values
+
+  /// Takes a value of the file. Past the table's `cells` (known when its variables are declared
+  /// already, check_table_cells) values are counted for build_network's message, not kept, so a
+  /// list far longer than its table takes no memory; with `cells` unknown, false past
+  /// max_table_cells, where the reader refuses the table.
+  [[nodiscard]] bool add_value(double value, std::optional<std::size_t> cells) {
+    ++values_given;
+    if (values_given <= cells.value_or(max_table_cells)) {
+      values.push_back(value);
+      return true;
+    }
+    return cells.has_value();
+  }
 };
 
 /// The variable `name` among `declared`, or null.
@@ -65,23 +80,24 @@ struct declared_table {
   return nullptr;
 }
 
-/// Refuses through `fail(at, message)` a table beyond max_table_cells whose child and parents
+/// The cells of a table whose child and parents are declared already, refusing through
+/// `fail(at, message)` a table beyond max_table_cells whose child and parents
 /// are declared already, before its values are read; a table with an undeclared member is
 /// left to build_network (and its values to the readers' own bound of max_table_cells).
 template <class Fail>
-void check_table_cells(const std::vector<declared_variable>& declared, const std::string& child,
-                       const std::vector<std::pair<std::string, text_position>>& parents, text_position at,
-                       Fail&& fail) {
+std::optional<std::size_t> check_table_cells(const std::vector<declared_variable>& declared, const std::string& child,
+                                             const std::vector<std::pair<std::string, text_position>>& parents,
+                                             text_position at, Fail&& fail) {
   const auto* v = find_declared(declared, child);
-  if (v == nullptr || v->states.empty()) return;
+  if (v == nullptr || v->states.empty()) return std::nullopt;
   std::vector<std::size_t> cards;
   for (const auto& [parent, where] : parents) {
     const auto* p = find_declared(declared, parent);
-    if (p == nullptr || p->states.empty()) return;
+    if (p == nullptr || p->states.empty()) return std::nullopt;
     cards.push_back(p->states.size());
   }
   try {
-    static_cast<void>(checked_table_cells(child, v->states.size(), mixed_radix(cards).size()));
+    return checked_table_cells(child, v->states.size(), mixed_radix(cards).size());
   } catch (const model_error& e) {
     fail(at, e.what());
   }
@@ -186,10 +202,10 @@ bayesian_network build_network(const std::vector<declared_variable>& declared, s
     } catch (const model_error& e) {
       fail(table.at, e.what());
     }
-    if (table.values.size() != expected) {
+    if (table.values_given != expected) {
       fail(table.values_at, "expected " + std::to_string(expected) + " probabilities for '" + table.child + "' (" +
                                 std::to_string(j) + " states × " + std::to_string(expected / j) +
-                                " parent configurations), found " + std::to_string(table.values.size()));
+                                " parent configurations), found " + std::to_string(table.values_given));
     }
     if (const auto bad = normalizer.normalize(table.values, j)) {
       const auto codes = mixed_radix(cards).decode(bad->first);

@@ -413,9 +413,9 @@ class xmlbif_reader {
           }
           diagram.set_observed(diagram.id(child), parents);
         } else if (*type == "utility") {
-          diagram.add_utility(child, parents, read_table(node, variables).values);
+          diagram.add_utility(child, parents, read_table(node, variables, false).values);
         } else {
-          diagram.set_table(diagram.id(child), parents, read_table(node, variables).values);
+          diagram.set_table(diagram.id(child), parents, read_table(node, variables, false).values);
         }
       } catch (const model_error& e) {
         fail(at(node), e.what());
@@ -538,8 +538,10 @@ class xmlbif_reader {
     return v;
   }
 
-  detail::declared_table read_table(const pugi::xml_node& node,
-                                    const std::vector<detail::declared_variable>& variables) {
+  /// A <DEFINITION>'s table. Its values past the declared size are counted, not kept, unless
+  /// not `bounded` (a diagram's tables, which the diagram checks by their number).
+  detail::declared_table read_table(const pugi::xml_node& node, const std::vector<detail::declared_variable>& variables,
+                                    bool bounded = true) {
     detail::declared_table table;
     table.at = at(node);
     table.child = single_text(node, "FOR");
@@ -547,14 +549,22 @@ class xmlbif_reader {
     const auto values = node.child("TABLE");
     if (!values) fail(at(node), "the definition of '" + table.child + "' has no <TABLE>");
     table.values_at = at(values);
-    detail::check_table_cells(variables, table.child, table.parents, table.at,
-                              [this](detail::text_position p, const std::string& what) { fail(p, what); });
+    auto cells = detail::check_table_cells(variables, table.child, table.parents, table.at,
+                                           [this](detail::text_position p, const std::string& what) { fail(p, what); });
+    if (!bounded) cells.reset();
     const auto text_node = values.first_child();
-    const auto text = text_of(values);
-    const std::string_view numbers = text;
-    // Positions of the numbers are exact when the text is the file's, one piece without references.
+    // The file's text is read in place when it is one piece without references (as tables are
+    // written), and then positions of the numbers are exact; otherwise it is decoded first.
     const bool verbatim = text_node && text_node.type() == pugi::node_pcdata && !text_node.next_sibling() &&
-                          std::string_view(text_node.value()) == numbers && text_node.offset_debug() >= 0;
+                          text_node.offset_debug() >= 0 &&
+                          std::string_view(text_node.value()).find('&') == std::string_view::npos;
+    std::string decoded;
+    if (verbatim) {
+      xml_text_decoder::check_characters(text_node.value(), offset_of(text_node));
+    } else {
+      decoded = text_of(values);
+    }
+    const std::string_view numbers = verbatim ? std::string_view(text_node.value()) : std::string_view(decoded);
     std::size_t i = 0;
     while (i < numbers.size()) {
       while (i < numbers.size() && std::string_view(" \t\r\n").find(numbers[i]) != std::string_view::npos) ++i;
@@ -569,11 +579,10 @@ class xmlbif_reader {
         fail(where(),
              "expected a probability in the table of '" + table.child + "', found '" + std::string(word) + "'");
       }
-      if (table.values.size() == max_table_cells) {
+      if (!table.add_value(*value, cells)) {
         fail(where(), "more than " + std::to_string(max_table_cells) + " probabilities in the table of '" +
                           table.child + "', pgm's limit of cells per table (docs/limits.md)");
       }
-      table.values.push_back(*value);
     }
     return table;
   }

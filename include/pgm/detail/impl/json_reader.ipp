@@ -63,7 +63,7 @@ PGM_DECL variable json_reader::read_variable(const nlohmann::json& value, const 
 }
 
 PGM_DECL nlohmann::json json_reader::parse(std::string_view text) const {
-  check_depth(text);
+  check_limits(text);
   try {
     return nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
@@ -118,9 +118,13 @@ PGM_DECL void json_reader::check_format(const nlohmann::json& document, const ch
   if (version != 1) fail("/version", "this pgm reads version 1, the file is version " + text::format_double(version));
 }
 
-PGM_DECL void json_reader::check_depth(std::string_view text) const {
-  std::size_t depth = 0, line = 1, column = 1;
+PGM_DECL void json_reader::check_limits(std::string_view text) const {
+  // The values counted so far in each open array (an object's are not: none is large).
+  std::vector<std::size_t> open_arrays;
+  std::vector<bool> is_array;
+  std::size_t values = 0, line = 1, column = 1;
   bool in_string = false, escaped = false;
+  const auto refuse = [&](const std::string& what) { throw parse_error(source_, line, column, what); };
   for (const char c : text) {
     if (in_string) {
       if (escaped) {
@@ -133,13 +137,25 @@ PGM_DECL void json_reader::check_depth(std::string_view text) const {
     } else if (c == '"') {
       in_string = true;
     } else if (c == '[' || c == '{') {
-      if (++depth > json_max_depth) {
-        throw parse_error(source_, line, column,
-                          "arrays and objects nested deeper than " + std::to_string(json_max_depth) +
-                              " levels, pgm's limit (docs/limits.md)");
+      if (is_array.size() == json_max_depth) {
+        refuse("arrays and objects nested deeper than " + std::to_string(json_max_depth) +
+               " levels, pgm's limit (docs/limits.md)");
       }
-    } else if ((c == ']' || c == '}') && depth > 0) {
-      --depth;
+      is_array.push_back(c == '[');
+      if (c == '[') open_arrays.push_back(1);
+      ++values;
+    } else if ((c == ']' || c == '}') && !is_array.empty()) {
+      if (is_array.back()) open_arrays.pop_back();
+      is_array.pop_back();
+    } else if (c == ',') {
+      ++values;
+      if (!is_array.empty() && is_array.back() && ++open_arrays.back() > max_table_cells) {
+        refuse("an array of more than " + std::to_string(max_table_cells) +
+               " values, pgm's limit of cells per table (docs/limits.md)");
+      }
+    }
+    if (values > json_max_values) {
+      refuse("more than " + std::to_string(json_max_values) + " values, pgm's limit of a JSON file (docs/limits.md)");
     }
     if (c == '\n') {
       ++line;

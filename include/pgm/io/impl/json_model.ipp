@@ -353,11 +353,54 @@ PGM_DECL std::optional<std::vector<cpt<double>>> read_edges_and_tables(const jso
 
 PGM_DECL bool declares_markov_network(std::string_view text) { return declared_model_kind(text) == "markov"; }
 
+namespace detail {
+
+/// Finds the top-level "kind" of a JSON document as it is read, and stops there: knowing which
+/// reader to call builds no document (the reader builds it once, its limits checked first).
+struct model_kind_finder : nlohmann::json_sax<nlohmann::json> {
+  std::size_t depth = 0;
+  bool at_kind = false;
+  std::string kind = "bayesian";
+
+  /// A value seen; false (stop) once it was the kind's.
+  bool value() {
+    const bool found = at_kind;
+    at_kind = false;
+    return !found;
+  }
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool string(string_t& text) override {
+    if (at_kind) kind = text;
+    return value();
+  }
+  bool start_object(std::size_t) override {
+    ++depth;
+    return value();
+  }
+  bool start_array(std::size_t) override {
+    ++depth;
+    return value() && depth > 1;  // a top-level array is no model: "bayesian", its reader says why
+  }
+  bool key(string_t& name) override {
+    at_kind = depth == 1 && name == "kind";
+    return true;
+  }
+  bool end_object() override { return --depth > 0; }
+  bool end_array() override { return --depth > 0; }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+};
+
+}  // namespace detail
+
 PGM_DECL std::string declared_model_kind(std::string_view text) {
-  const auto document = nlohmann::json::parse(text, nullptr, false);
-  if (!document.is_object()) return "bayesian";
-  const auto kind = document.find("kind");
-  return kind != document.end() && kind->is_string() ? kind->get<std::string>() : "bayesian";
+  detail::model_kind_finder finder;
+  static_cast<void>(nlohmann::json::sax_parse(text, &finder, nlohmann::json::input_format_t::json, false));
+  return finder.kind;
 }
 
 PGM_DECL nlohmann::json to_json(const dynamic_network& model) {

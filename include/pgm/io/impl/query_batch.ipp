@@ -6,79 +6,83 @@
 
 namespace pgm {
 
-PGM_DECL std::vector<query_request> parse_query_batch(std::string_view text, const std::string& source) {
-  detail::csv_scanner scanner(text, source, ',');
-  std::vector<detail::csv_field> fields;
-  if (!scanner.next(fields))
-    throw parse_error(source, 1, 1, "the query file is empty; its header names a 'query' column");
-  enum column { query, observed, soft, intervened, engine, unknown };
-  std::vector<column> columns;
+PGM_DECL query_batch_reader::query_batch_reader(std::string_view text, std::string source)
+    : scanner_(text, std::move(source), ',') {
+  const auto& name = scanner_.source();
+  if (!scanner_.next(fields_))
+    throw parse_error(name, 1, 1, "the query file is empty; its header names a 'query' column");
   bool has_query = false;
-  for (const auto& f : fields) {
-    const auto which = f.text == "query"      ? query
-                       : f.text == "evidence" ? observed
-                       : f.text == "soft"     ? soft
-                       : f.text == "do"       ? intervened
-                       : f.text == "engine"   ? engine
-                                              : unknown;
-    if (which == unknown) {
-      throw parse_error(source, f.line, f.column,
+  for (const auto& f : fields_) {
+    const std::optional<column> which = f.text == "query"      ? column::query
+                                        : f.text == "evidence" ? column::evidence
+                                        : f.text == "soft"     ? column::soft
+                                        : f.text == "do"       ? column::intervened
+                                        : f.text == "engine"   ? std::optional(column::engine)
+                                                               : std::nullopt;
+    if (!which) {
+      throw parse_error(name, f.line, f.column,
                         "unknown column '" + std::string(f.text) + "' (known: query, evidence, soft, do, engine)");
     }
-    if (std::find(columns.begin(), columns.end(), which) != columns.end()) {
-      throw parse_error(source, f.line, f.column, "the column '" + std::string(f.text) + "' is named twice");
+    if (std::find(columns_.begin(), columns_.end(), *which) != columns_.end()) {
+      throw parse_error(name, f.line, f.column, "the column '" + std::string(f.text) + "' is named twice");
     }
-    has_query = has_query || which == query;
-    columns.push_back(which);
+    has_query = has_query || which == column::query;
+    columns_.push_back(*which);
   }
-  if (!has_query) throw parse_error(source, 1, 1, "the header names no 'query' column");
+  if (!has_query) throw parse_error(name, 1, 1, "the header names no 'query' column");
+}
 
-  std::vector<query_request> requests;
-  while (scanner.next(fields)) {
-    if (fields.size() > columns.size()) {
-      const auto& extra = fields[columns.size()];
-      throw parse_error(
-          source, extra.line, extra.column,
-          "this record has " + std::to_string(fields.size()) + " fields, the header " + std::to_string(columns.size()));
-    }
-    query_request request;
-    request.line = scanner.record_line();
-    for (std::size_t k = 0; k < fields.size(); ++k) {
-      const auto& f = fields[k];
-      try {
-        switch (columns[k]) {
-          case query:
-            request.query_text = std::string(f.text);
-            request.query = parse_query_variables(f.text);
-            break;
-          case observed:
-            request.evidence_text = std::string(f.text);
-            request.observed = parse_evidence(f.text);
-            break;
-          case soft:
-            request.soft_text = std::string(f.text);
-            request.soft = parse_soft_evidence(f.text);
-            break;
-          case intervened:
-            request.do_text = std::string(f.text);
-            request.intervened = parse_intervention(f.text);
-            break;
-          case engine:
-            request.engine = std::string(text::trim(f.text));
-            break;
-          case unknown:
-            break;
-        }
-      } catch (const model_error& e) {
-        throw parse_error(source, f.line, f.column, e.what());
-      }
-    }
-    if (request.query.empty()) {
-      throw parse_error(source, request.line, 1, "the record names no query variable");
-    }
-    requests.push_back(std::move(request));
+PGM_DECL bool query_batch_reader::next(query_request& request) {
+  const auto& name = scanner_.source();
+  if (!scanner_.next(fields_)) {
+    if (records_ == 0) throw parse_error(name, scanner_.line(), 1, "the query file holds a header but no query");
+    return false;
   }
-  if (requests.empty()) throw parse_error(source, scanner.line(), 1, "the query file holds a header but no query");
+  if (fields_.size() > columns_.size()) {
+    const auto& extra = fields_[columns_.size()];
+    throw parse_error(
+        name, extra.line, extra.column,
+        "this record has " + std::to_string(fields_.size()) + " fields, the header " + std::to_string(columns_.size()));
+  }
+  request = query_request{};
+  request.line = scanner_.record_line();
+  for (std::size_t k = 0; k < fields_.size(); ++k) {
+    const auto& f = fields_[k];
+    try {
+      switch (columns_[k]) {
+        case column::query:
+          request.query_text = std::string(f.text);
+          request.query = parse_query_variables(f.text);
+          break;
+        case column::evidence:
+          request.evidence_text = std::string(f.text);
+          request.observed = parse_evidence(f.text);
+          break;
+        case column::soft:
+          request.soft_text = std::string(f.text);
+          request.soft = parse_soft_evidence(f.text);
+          break;
+        case column::intervened:
+          request.do_text = std::string(f.text);
+          request.intervened = parse_intervention(f.text);
+          break;
+        case column::engine:
+          request.engine = std::string(text::trim(f.text));
+          break;
+      }
+    } catch (const model_error& e) {
+      throw parse_error(name, f.line, f.column, e.what());
+    }
+  }
+  if (request.query.empty()) throw parse_error(name, request.line, 1, "the record names no query variable");
+  ++records_;
+  return true;
+}
+
+PGM_DECL std::vector<query_request> parse_query_batch(std::string_view text, const std::string& source) {
+  query_batch_reader reader(text, source);
+  std::vector<query_request> requests;
+  for (query_request request; reader.next(request);) requests.push_back(std::move(request));
   return requests;
 }
 
