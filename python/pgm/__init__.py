@@ -333,12 +333,17 @@ def read_network(path):
 
 
 def from_pgmpy(model):
-    """A Network with the variables, states and tables of a pgmpy Bayesian network, or a
-    MarkovNetwork with the factors of a pgmpy MarkovNetwork or FactorGraph."""
+    """A Network with the variables, states and tables of a pgmpy Bayesian network, a
+    MarkovNetwork with the factors of a pgmpy MarkovNetwork or FactorGraph, or a DynamicNetwork
+    with the two slices of a pgmpy DynamicBayesianNetwork."""
     if type(model).__name__ in ("MarkovNetwork", "FactorGraph"):
         from ._markov import markov_from_pgmpy
 
         return markov_from_pgmpy(model)
+    if type(model).__name__ == "DynamicBayesianNetwork":
+        from ._pgmpy import dynamic_from_pgmpy
+
+        return dynamic_from_pgmpy(model)
     from ._pgmpy import from_pgmpy as convert
 
     return convert(model)

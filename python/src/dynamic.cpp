@@ -2,10 +2,12 @@
 
 #include "dynamic.hpp"
 
+#include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <string>
@@ -52,21 +54,38 @@ std::vector<evidence_set> resolve_steps(const dynamic_network& d, const step_evi
   return steps;
 }
 
-/// ([step][variable][probability], ln P(evidence)) of filtering (with `predict` steps more) or
-/// smoothing.
-std::pair<std::vector<std::vector<std::vector<double>>>, double> filter_steps(const dynamic_network& d,
-                                                                              const step_evidence& observed,
-                                                                              const step_interventions& intervened,
-                                                                              std::size_t predict, bool smooth) {
+/// Filtering (with `predict` steps more) or smoothing, as the columns of its table: (t, variable,
+/// state, probability) for every variable neither observed nor set at its step, and
+/// ln P(evidence); a frame is made of them at once.
+py::tuple filter_columns(const dynamic_network& d, const step_evidence& observed, const step_interventions& intervened,
+                         std::size_t predict, bool smooth) {
   const auto steps = resolve_steps(d, observed, intervened);
   dynamic_marginals answer;
+  std::vector<std::int64_t> t_column, variable_column, state_column;
+  std::vector<double> probability_column;
   {
     const py::gil_scoped_release release;
     interface_filter filter(d);
     const auto beyond = predict > steps.size() - observed.size() ? predict - (steps.size() - observed.size()) : 0;
     answer = smooth ? filter.smooth(steps) : filter.filter(steps, beyond);
+    for (std::size_t t = 0; t < answer.steps.size(); ++t) {
+      for (std::size_t v = 0; v < answer.steps[t].size(); ++v) {
+        if (t < steps.size() && steps[t].fixes(variable_id(static_cast<std::uint32_t>(v)))) continue;
+        const auto& distribution = answer.steps[t][v];
+        for (std::size_t s = 0; s < distribution.size(); ++s) {
+          t_column.push_back(static_cast<std::int64_t>(t));
+          variable_column.push_back(static_cast<std::int64_t>(v));
+          state_column.push_back(static_cast<std::int64_t>(s));
+          probability_column.push_back(distribution[s]);
+        }
+      }
+    }
   }
-  return {std::move(answer.steps), answer.log_evidence_probability};
+  const auto array = [](const auto& values) {
+    return py::array(static_cast<py::ssize_t>(values.size()), values.data());
+  };
+  return py::make_tuple(array(t_column), array(variable_column), array(state_column), array(probability_column),
+                        answer.log_evidence_probability);
 }
 
 /// ([step][variable] state index, ln P(x*, e)) of the most probable sequence.
@@ -108,11 +127,12 @@ void add_dynamic(py::module_& m) {
            [](const dynamic_network& d, std::size_t slices) {
              return network_handle{d.unroll(slices), {}, {}, {}};
            })
-      .def("filter", &filter_steps)
+      .def("filter_columns", &filter_columns)
       .def("most_probable", &most_probable_steps_of)
       .def("to_json", [](const dynamic_network& d) { return to_json(d).dump(2); })
       .def("write", [](const dynamic_network& d, const std::filesystem::path& path) { write_dynamic_json(d, path); });
   m.def("read_dynamic_json", &read_dynamic_json);
+  m.def("parse_dynamic_json", &parse_dynamic_json);
 }
 
 }  // namespace pgm::python
