@@ -8,6 +8,7 @@
 #include "pgm/decide/predict.hpp"
 #include "pgm/decide/prevent.hpp"
 #include "pgm/decide/prevent_by_utility.hpp"
+#include "pgm/decide/prevent_over_time.hpp"
 #include "pgm/decide/solve_decisions.hpp"
 #include "pgm/decide/success_table.hpp"
 #include "pgm/decide/table_slice.hpp"

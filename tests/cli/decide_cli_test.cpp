@@ -189,5 +189,40 @@ TEST_F(decide_cli_test, counterfactual_bounds_necessity_and_sufficiency) {
                "no state '9'");
 }
 
+// pgm prevent --dynamic on docs/dynamic.md's model, by hand: the transition's b | a, b@-1 gives
+// P(b@1 = high | a@0 = on, b@0 = high) = 0.2 · 0.5 + 0.8 · 0.9 = 0.82 with a@1 left to its table
+// (0.2, 0.8), and 0.9 with a@1 set on.
+TEST_F(decide_cli_test, prevent_over_time_sets_the_next_step) {
+  const auto page = slurp(std::filesystem::path(PGM_SOURCE_DIR) / "docs" / "dynamic.md");
+  const auto start = page.find("```json\n") + 8;
+  const auto model = file("tower.json", page.substr(start, page.find("```", start) - start)).string();
+  const auto episode = file("e.csv", "episode,t,a,b\ne1,0,on,high\n").string();
+  const auto base = "prevent --dynamic --model " + model + " --controllable a --success b=high --data ";
+  const auto json = run(base + episode + " --format json");
+  ASSERT_EQ(json.code, 0) << json.err;
+  EXPECT_EQ(json.out,
+            "{\"step\": 1, \"horizon\": 2, \"success\": \"b=high\", \"planned\": false, \"before\": "
+            "0.81999999999999995, \"best\": {\"a\": \"on\"}, \"after\": 0.90000000000000002}\n");
+  // A plan of a = off at step 1 is worth 0.5 there; over three steps the text says which.
+  const auto planned = file("p.csv", "episode,t,a,b\ne1,0,on,high\ne1,1,off,\n").string();
+  const auto text = run(base + planned + " --steps 3");
+  ASSERT_EQ(text.code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("success: b=high at steps 1 to 2\npredicted success as planned: "));
+  EXPECT_THAT(text.out, HasSubstr("best setting at step 1: a=on\n"));
+  const auto one = run(base + planned + " --format json");
+  EXPECT_THAT(one.out, HasSubstr("\"planned\": true, \"before\": 0.5, \"best\": {\"a\": \"on\"}, \"after\": 0.9"));
+
+  expect_failure(base + episode + " --steps 1", "the horizon of 1 steps ends before step 1");
+  expect_failure("prevent --dynamic --model " + model + " --controllable b --success b=high --data " + episode,
+                 "the success variable 'b' is controllable");
+  expect_failure("prevent --dynamic --model " + model + " --controllable c --success b=high --data " + episode,
+                 "--controllable: 'c' is not a variable of the model");
+  expect_failure(base + episode + " --assign a=on", "--dynamic: --assign does not apply");
+  expect_failure("prevent --dynamic --model " + model + " --success b=high --data " + episode,
+                 "--dynamic needs --controllable");
+  expect_failure("prevent --model " + model + " --assign a=on --data " + episode,
+                 "--data and --steps apply with --dynamic");
+}
+
 }  // namespace
 }  // namespace pgm::decide_cli_tests

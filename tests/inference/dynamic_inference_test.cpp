@@ -315,7 +315,7 @@ TEST_F(filter_cli_test, writes_the_unrolled_trees_marginals_and_refuses_bad_inpu
   };
   const auto& v0 = model.variables()[0];
   refused("episode,t," + v0.name() + "\ne,0,\ne,2,\n", "", "row 2 has t = 2 where 1 was expected");
-  refused("episode,t," + v0.name() + "\ne,0,\nf,1,\n", "", "pgm filter answers one episode at a time");
+  refused("episode,t," + v0.name() + "\ne,0,\nf,1,\n", "", "one episode is answered at a time");
   refused("episode,t,nope\ne,0,\n", "", "'nope' is not a variable of the model");
   refused("episode," + v0.name() + "\ne,\n", "", "the data have no column t");
   refused("episode,t," + v0.name() + "\ne,0,\n", " --do " + v0.name() + "@5=" + v0.states()[0], "the step must be");

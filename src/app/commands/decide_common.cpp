@@ -43,13 +43,14 @@ assignment read_assignment(const std::string& text, const bayesian_network& netw
   return planned;
 }
 
-void add_decision_options(CLI::App& command, decision_arguments& args) {
+void add_decision_options(CLI::App& command, decision_arguments& args, bool assign_required) {
   command.add_option("--model", args.model, "The fitted network: " + network_file_kinds())->required();
   command
       .add_option("--assign", args.assign,
                   "Planned values, e.g. \"xOff1=0.3,yOff1=-1.2,colour=Red\": numbers are binned with an interval "
-                  "variable's saved edges; '@2' names the state labelled 2")
-      ->required();
+                  "variable's saved edges; '@2' names the state labelled 2" +
+                      std::string(assign_required ? "" : " (required, except with --dynamic)"))
+      ->required(assign_required);
   command.add_option("--success", args.success,
                      "The success event, e.g. onTop2=1 (default: a JSON model's metadata, else the unique outcome)");
   command.add_flag("--marginalize", args.marginalize,

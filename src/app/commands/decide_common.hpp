@@ -21,8 +21,9 @@ struct decision_arguments {
   bool marginalize = false;
 };
 
-/// Adds --model, --assign, --success and --marginalize to `command`.
-void add_decision_options(CLI::App& command, decision_arguments& args);
+/// Adds --model, --assign (required unless the command checks it itself), --success and
+/// --marginalize to `command`.
+void add_decision_options(CLI::App& command, decision_arguments& args, bool assign_required = true);
 
 /// Reads the model (any network format) and settles the success event (pgm::read_decision_model).
 decision_model read_decision_model(const std::string& path, const std::string& success_text);

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/common.hpp"
+#include "cli/episode.hpp"
 #include "pgm/core/dynamic_network.hpp"
 #include "pgm/core/text.hpp"
 #include "pgm/inference/dynamic_inference.hpp"
@@ -29,61 +30,6 @@ struct filter_arguments {
   int digits = 6;
   std::string out;
 };
-
-/// A template variable by name, or an error naming the closest.
-variable_id template_id(const dynamic_network& model, const std::string& name, const std::string& where) {
-  for (std::size_t i = 0; i < model.size(); ++i) {
-    if (model.variables()[i].name() == name) return variable_id(static_cast<variable_id::rep>(i));
-  }
-  std::vector<std::string> names;
-  for (const auto& v : model.variables()) names.push_back(v.name());
-  const auto closest = text::closest_name(name, names);
-  throw error(where + ": '" + name + "' is not a variable of the model" +
-              (closest ? " (did you mean '" + *closest + "'?)" : ""));
-}
-
-/// One episode's evidence per step from the long form: the rows in order of t = 0, 1, …, an
-/// empty cell (or NA, ?) unobserved.
-std::vector<evidence_set> read_episode(const dynamic_network& model, const std::string& path) {
-  csv_options options;
-  options.kinds["t"] = column_kind::continuous;
-  options.kinds["episode"] = column_kind::discrete;
-  for (const auto& v : model.variables()) options.variables.emplace(v.name(), v);
-  options.missing.policy = missing_policy::available;
-  const auto data = read_csv(path, options);
-  if (!data.contains("t")) throw error(path + ": the data have no column t (long form: episode,t,<variables>)");
-  for (const auto& name : data.names()) {
-    if (name != "t" && name != "episode") static_cast<void>(template_id(model, name, path + ", column '" + name + "'"));
-  }
-  if (data.contains("episode")) {
-    const auto& episode = data.discrete("episode");
-    for (std::size_t r = 1; r < data.rows(); ++r) {
-      if (episode.code(r) != episode.code(0)) {
-        throw error(path + ": row " + std::to_string(r + 1) + " is of episode '" + episode.label(r) +
-                    "', the first of '" + episode.label(0) + "': pgm filter answers one episode at a time");
-      }
-    }
-  }
-  const auto t = data.continuous("t").values();
-  std::vector<evidence_set> steps(data.rows());
-  for (std::size_t r = 0; r < data.rows(); ++r) {
-    if (t[r] != static_cast<double>(r)) {
-      throw error(path + ": row " + std::to_string(r + 1) + " has t = " + text::format_double(t[r]) + " where " +
-                  std::to_string(r) + " was expected (the rows run t = 0, 1, 2, … in order)");
-    }
-  }
-  for (const auto& name : data.names()) {
-    if (name == "t" || name == "episode") continue;
-    const auto id = template_id(model, name, path);
-    const auto& column = data.discrete(name);
-    for (std::size_t r = 0; r < data.rows(); ++r) {
-      if (!column.is_missing(r)) {
-        steps[r].hard.push_back({id, state_index(static_cast<state_index::rep>(column.code(r)))});
-      }
-    }
-  }
-  return steps;
-}
 
 /// "x@3=on,y@0=off": do(x = on) at step 3 and do(y = off) at step 0, into `steps` (grown to hold
 /// a step past the data, which prediction then reaches).

@@ -13,11 +13,13 @@
 #include <vector>
 
 #include "cli/common.hpp"
+#include "cli/episode.hpp"
 #include "commands/decide_common.hpp"
 #include "pgm/core/text.hpp"
 #include "pgm/decide/assignment.hpp"
 #include "pgm/decide/explain.hpp"
 #include "pgm/decide/prevent_by_utility.hpp"
+#include "pgm/decide/prevent_over_time.hpp"
 
 namespace pgm::cli {
 namespace {
@@ -31,6 +33,9 @@ struct prevent_arguments {
   std::string move_cost;
   std::string per = "steps";
   std::string format = "text";
+  bool dynamic = false;
+  std::string data;
+  std::size_t steps = 0;
 };
 
 /// Each moving variable, from where to where, then the value suggested for every controllable one.
@@ -110,7 +115,59 @@ void print_best_move(const prevent_arguments& args, const prevention_plan& plan,
   print_moves(why, network, planned);
 }
 
+/// pgm prevent --dynamic: the next step of an episode of a dynamic network.
+void run_prevent_over_time(const prevent_arguments& args) {
+  const auto refuse = [](bool given, const std::string& option) {
+    if (given) throw error("--dynamic: " + option + " does not apply; the episode (--data) gives what is known");
+  };
+  refuse(!args.decision.assign.empty(), "--assign");
+  refuse(args.decision.marginalize, "--marginalize");
+  refuse(args.reward.has_value(), "--reward");
+  if (args.data.empty()) throw error("--dynamic needs --data, the episode so far in long form (episode,t,<variables>)");
+  if (args.decision.success.empty()) throw error("--dynamic needs --success, e.g. --success onTop=1");
+  if (!args.controllable || args.controllable->empty()) {
+    throw error("--dynamic needs --controllable, the variables set at the next step");
+  }
+  const auto model = read_dynamic_model_file(args.decision.model);
+  prevention_over_time_request request;
+  request.success = parse_success_event(args.decision.success, model.initial());
+  for (const auto& name : split_list(*args.controllable, "--controllable")) {
+    request.controllable.push_back(template_id(model, name, "--controllable"));
+  }
+  request.steps = read_episode(model, args.data);
+  request.horizon = args.steps;
+  const auto answer = prevent_over_time(model, request);
+  const auto last = answer.horizon - 1;
+  const auto steps = answer.step == last ? "step " + std::to_string(answer.step)
+                                         : "steps " + std::to_string(answer.step) + " to " + std::to_string(last);
+  if (args.format == "json") {
+    std::string out = "{\"step\": " + std::to_string(answer.step) + ", \"horizon\": " + std::to_string(answer.horizon) +
+                      ", \"success\": " + nlohmann::json(args.decision.success).dump() +
+                      ", \"planned\": " + (answer.planned ? "true" : "false") +
+                      ", \"before\": " + json_number(answer.before) + ", \"best\": {";
+    for (std::size_t i = 0; i < answer.best.size(); ++i) {
+      out += (i ? ", " : "") + nlohmann::json(answer.best[i].first).dump() + ": " +
+             nlohmann::json(answer.best[i].second).dump();
+    }
+    std::cout << out << "}, \"after\": " << json_number(answer.after) << "}\n";
+    return;
+  }
+  std::cout << "success: " << request.success.variable << "=" << request.success.state << " at " << steps << '\n'
+            << "predicted success " << (answer.planned ? "as planned" : "with the next step left to the model") << ": "
+            << text::format_short(answer.before) << '\n'
+            << "best setting at step " << answer.step << ":";
+  for (const auto& [name, state] : answer.best) std::cout << ' ' << name << '=' << state;
+  std::cout << "\npredicted success after it: " << text::format_short(answer.after) << '\n';
+}
+
 void run_prevent(const prevent_arguments& args) {
+  if (args.dynamic) {
+    run_prevent_over_time(args);
+    return;
+  }
+  if (!args.data.empty() || args.steps != 0) throw error("--data and --steps apply with --dynamic");
+  if (!args.reward && args.format != "text") throw error("--format applies with --reward or --dynamic");
+  if (args.decision.assign.empty()) throw CLI::RequiredError("--assign");
   const auto model = read_decision_model(args.decision.model, args.decision.success);
   const auto& network = model.network;
   const auto planned = read_assignment(args.decision.assign, network);
@@ -166,7 +223,7 @@ void add_prevent_command(CLI::App& app) {
       "exceeds epsilon, the best). A suggestion is judged as an intervention, P(success | do(controllable), the "
       "other assigned variables): the robot sets those variables, and where one has a parent in the network "
       "setting it differs from observing it (docs/decide.md).");
-  add_decision_options(*cmd, args->decision);
+  add_decision_options(*cmd, args->decision, false);
   cmd->add_option("--controllable", args->controllable,
                   "Variables the robot may change, e.g. xOff1,yOff1 (default: every parent of the success variable)");
   cmd->add_option("--epsilon", args->epsilon, "Success threshold, 0 ≤ epsilon < 1: a prediction above it succeeds")
@@ -188,10 +245,21 @@ void add_prevent_command(CLI::App& app) {
       ->check(CLI::IsMember({"steps", "units"}))
       ->needs(reward)
       ->capture_default_str();
-  cmd->add_option("--format", args->format, "With --reward: text or json (numbers to 17 significant digits)")
+  cmd->add_option("--format", args->format,
+                  "With --reward or --dynamic: text or json (numbers to 17 significant digits)")
       ->check(CLI::IsMember({"text", "json"}))
-      ->needs(reward)
       ->capture_default_str();
+  cmd->add_flag("--dynamic", args->dynamic,
+                "A dynamic network (pgm's JSON of \"kind\": \"dynamic\"): having seen an episode's first steps "
+                "(--data), the states of --controllable at the next step (the first whose success variable is not "
+                "observed) likeliest to make every step up to --steps succeed, each judged as an intervention");
+  cmd->add_option("--data", args->data,
+                  "With --dynamic: the episode so far in long form (episode,t,<variables>); a row for the step "
+                  "decided may give the plan and what else is known then");
+  cmd->add_option("--steps", args->steps,
+                  "With --dynamic: the steps of the task in all (the success variable must hold at each from the "
+                  "next on); default: the next step alone")
+      ->check(whole_number(1, 1 << 20));
   cmd->callback([args] { run_prevent(*args); });
 }
 
