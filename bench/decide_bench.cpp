@@ -3,20 +3,27 @@
 // configuration; exact inference by variable elimination beside brute-force enumeration; and
 // influence diagrams solved beside enumeration of every policy (the oil wildcatter) and beside
 // single policy updating that evaluates every candidate action by a pass of its own (a robot's
-// 20-decision LIMID).
+// 20-decision LIMID); and prevention during a task of several steps by one junction tree beside
+// variable elimination for each setting.
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "check.hpp"
+#include "pgm/core/mixed_radix.hpp"
 #include "pgm/decide/prevent.hpp"
 #include "pgm/decide/prevent_by_utility.hpp"
+#include "pgm/decide/prevent_over_time.hpp"
 #include "pgm/decide/solve_decisions.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 #include "support/enumeration.hpp"
 #include "support/influence_diagrams.hpp"
+#include "support/random_dynamic_network.hpp"
 #include "support/random_network.hpp"
 
 namespace {
@@ -250,3 +257,65 @@ void prevent_one_plan_by_epsilon(benchmark::State& state) {
 BENCHMARK(prevent_one_plan_by_epsilon)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
+
+namespace {
+
+/// A 6-variable random 2-TBN, two steps seen, the next of `horizon` steps decided over v0 … v3.
+pgm::prevention_over_time_request tower_request(const pgm::dynamic_network& model, std::size_t horizon) {
+  pgm::prevention_over_time_request request;
+  request.success = {model.variables()[5].name(), model.variables()[5].states()[0]};
+  request.controllable = {pgm::variable_id(0), pgm::variable_id(1), pgm::variable_id(2), pgm::variable_id(3)};
+  request.horizon = horizon;
+  request.steps.resize(2);
+  for (auto& step : request.steps) step.hard = {{pgm::variable_id(5), pgm::state_index(0)}};
+  return request;
+}
+
+}  // namespace
+
+/// pgm::prevent_over_time: one junction tree of the unrolled network, two propagations a setting.
+void prevent_over_time_jt(benchmark::State& state) {
+  const auto model = pgm::testing::random_dynamic(7, 6);
+  const auto request = tower_request(model, static_cast<std::size_t>(state.range(0)));
+  pgm::prevention_over_time answer;
+  for (auto _ : state) answer = pgm::prevent_over_time(model, request);
+  state.counters["after"] = answer.after;
+  pgm::bench::check(state, answer.after >= answer.before - 1e-15, "the best setting lost probability");
+}
+BENCHMARK(prevent_over_time_jt)->Arg(4)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond);
+
+/// The same answer done plainly: variable elimination of the unrolled network for each setting's
+/// two probabilities, nothing kept between them.
+void prevent_over_time_elimination(benchmark::State& state) {
+  const auto model = pgm::testing::random_dynamic(7, 6);
+  const auto request = tower_request(model, static_cast<std::size_t>(state.range(0)));
+  const auto horizon = request.horizon;
+  const auto unrolled = model.unroll(horizon);
+  const auto at = [&](std::size_t v, std::size_t t) {
+    return unrolled.id(model.variables()[v].name() + "@" + std::to_string(t));
+  };
+  pgm::variable_elimination<> engine(unrolled);
+  double best = 0.0;
+  for (auto _ : state) {
+    best = 0.0;
+    std::vector<std::size_t> cards;
+    for (std::size_t v = 0; v < 4; ++v) cards.push_back(model.variables()[v].cardinality());
+    const pgm::mixed_radix settings(cards);
+    for (std::size_t c = 0; c < settings.size(); ++c) {
+      const auto states = settings.decode(c);
+      pgm::evidence_set given;
+      for (std::size_t t = 0; t < 2; ++t) given.hard.push_back({at(5, t), pgm::state_index(0)});
+      for (std::size_t v = 0; v < 4; ++v) {
+        given.intervened.push_back({at(v, 2), pgm::state_index(static_cast<pgm::state_index::rep>(states[v]))});
+      }
+      engine.set_evidence(given);
+      const double episode = engine.log_probability_of_evidence();
+      for (std::size_t t = 2; t < horizon; ++t) given.hard.push_back({at(5, t), pgm::state_index(0)});
+      engine.set_evidence(given);
+      best = std::max(best, std::exp(engine.log_probability_of_evidence() - episode));
+    }
+  }
+  const auto answer = pgm::prevent_over_time(model, request);
+  pgm::bench::check(state, std::abs(best - answer.after) < 1e-12, "elimination and the junction tree disagree");
+}
+BENCHMARK(prevent_over_time_elimination)->Arg(4)->Arg(10)->Arg(20)->Unit(benchmark::kMillisecond);

@@ -9,6 +9,7 @@
 #include "pgm/core/mixed_radix.hpp"
 #include "pgm/decide/prevent_over_time.hpp"
 #include "pgm/inference/junction_tree_engine.hpp"
+#include "pgm/inference/variable_elimination.hpp"
 
 namespace pgm {
 
@@ -75,41 +76,72 @@ PGM_DECL prevention_over_time prevent_over_time(const dynamic_network& model,
                       " configurations, more than the " + std::to_string(max_prevention_candidates) + " tried");
   }
 
-  junction_tree_engine<bayesian_network> engine(unrolled);
-  // P(success at steps k … T−1 | episode, do(setting)), as a ratio of evidence probabilities.
-  const auto success_given = [&](const std::vector<observation>& setting) {
-    evidence_set given = episode;
-    given.intervened = setting;
+  // The controllable variables at step k cut from their parents, their tables uniform: there
+  // P(S, e, C = c) = P(S, e | do(C = c)) / |C| for every setting c at once, so two propagations
+  // (with and without the success steps S) judge them all.
+  std::vector<variable_id> decided;
+  for (const auto c : request.controllable) decided.push_back(at(c, answer.step));
+  auto structure = unrolled.structure();
+  auto tables = unrolled.tables();
+  for (const auto id : decided) {
+    for (const auto parent : unrolled.graph().parents(id)) {
+      structure.remove_edge(unrolled.variables()[parent.value()].name(), unrolled.variables()[id.value()].name());
+    }
+    const auto& v = unrolled.variables()[id.value()];
+    tables[id.value()] =
+        cpt<double>(v, {}, std::vector<double>(v.cardinality(), 1.0 / static_cast<double>(v.cardinality())));
+  }
+  junction_tree_engine<bayesian_network> engine(bayesian_network(std::move(structure), std::move(tables)));
+  evidence_set with_success = episode;
+  for (std::size_t t = answer.step; t < answer.horizon; ++t)
+    with_success.hard.push_back({at(success_id, t), success_state});
+  const auto joint_of = [&](const evidence_set& given) {
     engine.set_evidence(given);
-    const auto log_episode = engine.log_probability_of_evidence();
-    if (!std::isfinite(log_episode)) {
-      throw impossible_evidence("the episode has probability 0 in the model" +
-                                std::string(setting.empty() ? "" : " under this setting"));
+    try {
+      return engine.joint(decided);
+    } catch (const impossible_evidence&) {
+      if (&given == &episode) throw impossible_evidence("the episode has probability 0 in the model");
+      return posterior{};  // no setting makes every step succeed
     }
-    for (std::size_t t = answer.step; t < answer.horizon; ++t) given.hard.push_back({at(success_id, t), success_state});
-    engine.set_evidence(std::move(given));
-    return std::exp(engine.log_probability_of_evidence() - log_episode);
   };
-  const auto setting_of = [&](const std::vector<std::size_t>& states) {
-    std::vector<observation> setting;
-    for (std::size_t i = 0; i < states.size(); ++i) {
-      setting.push_back(
-          {at(request.controllable[i], answer.step), state_index(static_cast<state_index::rep>(states[i]))});
+  const auto seen = joint_of(episode);
+  const auto succeeded = joint_of(with_success);
+  // P(S | e, do(c)) = P(S, e, c) / P(e, c) in the cut network; a setting with P(e, c) = 0 is never chosen.
+  const auto success_given = [&](const std::vector<std::size_t>& states) {
+    const double base = seen.table.at(states);
+    if (base <= 0.0 || succeeded.table.size() == 0) return 0.0;
+    return succeeded.table.at(states) / base *
+           std::exp(succeeded.log_evidence_probability - seen.log_evidence_probability);
+  };
+  // The answer's two numbers by variable elimination on the network as it is, the chosen
+  // setting as an intervention: as exact as one propagation gives them.
+  variable_elimination<bayesian_network> plain(unrolled);
+  const auto directly = [&](const std::vector<std::size_t>* setting) {
+    evidence_set given = episode;
+    if (setting != nullptr) {
+      for (std::size_t i = 0; i < decided.size(); ++i) {
+        given.intervened.push_back({decided[i], state_index(static_cast<state_index::rep>((*setting)[i]))});
+      }
     }
-    return setting;
+    plain.set_evidence(given);
+    const double log_episode = plain.log_probability_of_evidence();
+    if (!std::isfinite(log_episode)) return 0.0;  // the setting rules the episode out
+    given.hard = with_success.hard;
+    plain.set_evidence(std::move(given));
+    return std::exp(plain.log_probability_of_evidence() - log_episode);
   };
-  answer.before = success_given(answer.planned ? setting_of(plan) : std::vector<observation>{});
+  answer.before = directly(answer.planned ? &plan : nullptr);
   std::vector<std::size_t> best = plan;
-  double best_value = answer.planned ? answer.before : -1.0;
+  double best_value = answer.planned ? success_given(plan) : -1.0;
   for (std::size_t c = 0; c < radix.size(); ++c) {
     const auto states = radix.decode(c);
-    const auto value = success_given(setting_of(states));
+    const auto value = success_given(states);
     if (value > best_value + 1e-12 * std::abs(best_value)) {
       best_value = value;
       best = states;
     }
   }
-  answer.after = best_value;
+  answer.after = directly(&best);
   for (std::size_t i = 0; i < best.size(); ++i) {
     const auto& v = templates[request.controllable[i].value()];
     answer.best.emplace_back(v.name(), v.states()[best[i]]);
