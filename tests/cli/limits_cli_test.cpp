@@ -333,7 +333,9 @@ TEST_F(limits_cli_test, a_long_query_file_is_answered_in_memory_that_does_not_gr
       run("query --model " + asia + " --queries " + many.string() + " --out " + path("a.csv").string());
   ASSERT_EQ(to_file.code, 0) << to_file.err;
   EXPECT_EQ(slurp(path("a.csv")), all.out);
-  if (measures_memory) EXPECT_LT(all.peak_kib, one.peak_kib + 2 * static_cast<long>(text.size() / 1024));
+  if (measures_memory) {
+    EXPECT_LT(all.peak_kib, one.peak_kib + 2 * static_cast<long>(text.size() / 1024));
+  }
 
   // A bad record at the end: nothing is printed, and no file is written.
   const auto bad = file("bad.csv", text + "nosuch,\n");

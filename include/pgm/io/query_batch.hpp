@@ -63,7 +63,7 @@ class query_batch_reader {
   PGM_DECL bool next(query_request& request);
 
  private:
-  enum class column { query, evidence, soft, intervened, engine };
+  enum class column { query, observed, soft, intervened, engine };
   detail::csv_scanner scanner_;
   std::vector<column> columns_;
   std::vector<detail::csv_field> fields_;

@@ -101,6 +101,7 @@ std::optional<std::size_t> check_table_cells(const std::vector<declared_variable
   } catch (const model_error& e) {
     fail(at, e.what());
   }
+  return std::nullopt;  // not reached: `fail` throws
 }
 
 /// Sets a pgm property (edges, quantity, unit, role) of `v`; other keys are left to the caller.

@@ -14,7 +14,7 @@ PGM_DECL query_batch_reader::query_batch_reader(std::string_view text, std::stri
   bool has_query = false;
   for (const auto& f : fields_) {
     const std::optional<column> which = f.text == "query"      ? column::query
-                                        : f.text == "evidence" ? column::evidence
+                                        : f.text == "evidence" ? column::observed
                                         : f.text == "soft"     ? column::soft
                                         : f.text == "do"       ? column::intervened
                                         : f.text == "engine"   ? std::optional(column::engine)
@@ -54,7 +54,7 @@ PGM_DECL bool query_batch_reader::next(query_request& request) {
           request.query_text = std::string(f.text);
           request.query = parse_query_variables(f.text);
           break;
-        case column::evidence:
+        case column::observed:
           request.evidence_text = std::string(f.text);
           request.observed = parse_evidence(f.text);
           break;
