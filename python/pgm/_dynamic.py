@@ -128,11 +128,11 @@ class DynamicNetwork:
                 if pd.isna(t) or float(t) != row:
                     raise _core.Error(f"data: row {row} has t = {t} where {row} was expected (t = 0, 1, 2, … in order)")
         variables = [c for c in data.columns if c in names]
-        columns = [data[name].tolist() for name in variables]
-        observed = [
-            {name: v if isinstance(v, str) else str(v) for name, v in zip(variables, values) if isinstance(v, str) or not pd.isna(v)}
-            for values in zip(*columns)
-        ] if variables else [{} for _ in range(len(data))]
+        observed = [{} for _ in range(len(data))]
+        for name in variables:
+            for step, value in zip(observed, data[name].tolist()):
+                if isinstance(value, str) or not pd.isna(value):
+                    step[name] = str(value)
         interventions = []
         for key, state in _evidence(do, "do").items():
             name, at, step = key.rpartition("@")[0], "@" in key, key.rpartition("@")[2]
