@@ -7,6 +7,7 @@
 #include "pgm/inference/belief_propagation.hpp"
 #include "pgm/inference/dynamic_inference.hpp"
 #include "pgm/inference/engine_registry.hpp"
+#include "pgm/inference/evidence_reduction.hpp"
 #include "pgm/inference/evidence_scope.hpp"
 #include "pgm/inference/exact.hpp"
 #include "pgm/inference/factor.hpp"

@@ -8,6 +8,7 @@
 #include <numeric>
 #include <random>
 #include <thread>
+#include <tuple>
 #include <vector>
 
 #include "pgm/core/graphical_model.hpp"
@@ -223,6 +224,49 @@ markov_network model_of(const std::vector<std::size_t>& cards, const std::vector
     factors.emplace_back(std::move(ids), std::move(scope_cards), std::move(values));
   }
   return markov_network(std::move(variables), std::move(factors));
+}
+
+// Six binary variables under forty factors of one or two of them, every value e^U[low, high].
+markov_network small_valued_model(std::uint64_t seed, double low, double high) {
+  std::mt19937_64 engine(seed);
+  std::uniform_real_distribution<double> exponent(low, high);
+  std::vector<variable> variables;
+  for (int i = 0; i < 6; ++i) variables.emplace_back("v" + std::to_string(i), std::vector<std::string>{"0", "1"});
+  std::vector<factor_table> factors;
+  for (std::size_t f = 0; f < 40; ++f) {
+    std::vector<variable_id> scope{variable_id(static_cast<variable_id::rep>(f % 6))};
+    if (f % 3 != 0) scope.push_back(variable_id(static_cast<variable_id::rep>((f * 5 + 1) % 6)));
+    if (scope.size() == 2 && scope[0] == scope[1]) scope.pop_back();
+    std::vector<double> values(std::size_t{1} << scope.size());
+    for (auto& v : values) v = std::exp(exponent(engine));
+    std::vector<std::size_t> cards(scope.size(), 2);
+    factors.emplace_back(std::move(scope), std::move(cards), std::move(values));
+  }
+  return markov_network(std::move(variables), std::move(factors));
+}
+
+// Forty factors with values down to e^-20 could together reach e^-800, past a double's range, but
+// the products a model of them makes stay far above it: solved in probabilities. Forty factors
+// of values near e^-28 do leave it (Z about e^-1120): the flags say so, and logarithms answer.
+TEST(markov_inference_test, small_values_stay_in_probabilities_until_a_product_leaves_the_range) {
+  const std::vector<long> fixed(6, -1);
+  for (const auto& [low, high, in_logs] : {std::tuple{-20.0, 0.0, false}, std::tuple{-28.5, -27.5, true}}) {
+    const auto model = small_valued_model(5, low, high);
+    const auto truth = testing::brute_force(model, fixed);
+    solve_report report;
+    solve_options options;
+    options.engine = solve_engine::jt;
+    EXPECT_NEAR(log_partition(model, {}, options, &report), truth.log_z, log_tolerance(truth.log_z));
+    EXPECT_EQ(report.log_space, in_logs) << "values e^[" << low << ", " << high << "]";
+    const auto marginals = all_marginals(model, {}, options, &report);
+    EXPECT_EQ(report.log_space, in_logs);
+    for (std::size_t i = 0; i < model.size(); ++i) {
+      for (std::size_t s = 0; s < 2; ++s) EXPECT_NEAR(marginals[i][s], truth.marginals[i][s], 1e-12);
+    }
+    EXPECT_NEAR(testing::log_value(model, most_probable_assignment(model, {}, options, &report)), truth.log_max,
+                log_tolerance(truth.log_max));
+    EXPECT_EQ(report.log_space, in_logs);
+  }
 }
 
 // A complete bipartite model, whose cliques hold pairwise factors that all end at their last

@@ -634,7 +634,7 @@ class propagation {
   /// messages; where they are zero, so is the fold (0/0 = 0: the group's side gives those states
   /// weight 0, whatever comes back to it). In logarithms it loses nothing; in probabilities it
   /// loses nothing where no product underflows, which solve's choice of semiring ensures
-  /// (fits_in_probabilities). In logarithms the folds are plain sums of the belief's exps when no
+  /// (detail::in_fitting_semiring). In logarithms the folds are plain sums of the belief's exps when no
   /// digit is lost that way (one exp per cell for all of them: Alchemy_11's clique of 2²⁰ cells
   /// has hundreds of groups).
   void divide_out(std::size_t c, const std::vector<std::vector<value_type>>& products) {

@@ -23,13 +23,16 @@
 /// Z may be 10^300 and beyond (the competition's Grids) or a product may underflow on the way to a
 /// Z that does not. The functions bound every partial product from the factors' largest and
 /// smallest positive values before they start: within a double's range they work in
-/// probabilities (fast, exact to rounding), beyond it in logarithms.
+/// probabilities (fast, exact to rounding), past its top in logarithms, and past its bottom in
+/// probabilities while the floating-point flags say no value left the range, else in logarithms.
 
 #include <array>
+#include <cfenv>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -40,6 +43,7 @@
 #include "pgm/core/graphical_model.hpp"
 #include "pgm/core/unknown_name.hpp"
 #include "pgm/inference/belief_propagation.hpp"
+#include "pgm/inference/evidence_reduction.hpp"
 #include "pgm/inference/exact.hpp"
 #include "pgm/inference/factor.hpp"
 #include "pgm/inference/factor_gibbs.hpp"
@@ -120,11 +124,17 @@ namespace detail {
 /// with evidence, and the product a message is folded from, in doubles.
 inline constexpr std::size_t bytes_per_tree_cell = 3 * sizeof(double);
 
-/// Whether every partial product and sum of `model`'s factors stays within a double's normal
-/// range: Π max(1, largest value) times the number of joint states below 10^300, and
-/// Π min(1, smallest positive value) above 10^-300 (zeros are exact in any representation).
+/// Whether the partial products and sums of `model`'s factors might leave a double's normal range,
+/// from bounds on all of them at once: above, Π max(1, largest value) times the number of joint
+/// states, against 10^300; below, Π min(1, smallest positive value), against 10^-300 (zeros are
+/// exact in any representation).
+struct range_bounds {
+  bool may_overflow = false;
+  bool may_underflow = false;
+};
+
 template <GraphicalModel M>
-[[nodiscard]] bool fits_in_probabilities(const M& model) {
+[[nodiscard]] range_bounds range_bounds_of(const M& model) {
   constexpr double bound = 300.0 * 2.302585092994046;  // ln 10^300
   double high = 0.0;
   double low = 0.0;
@@ -139,9 +149,8 @@ template <GraphicalModel M>
     }
     if (largest > 1.0) high += std::log(largest);
     if (smallest < 1.0) low += std::log(smallest);
-    if (high > bound || low < -bound) return false;
   }
-  return true;
+  return {high > bound, low < -bound};
 }
 
 /// The junction tree of `model` within the memory limit; throws memory_limit_exceeded naming the
@@ -252,15 +261,60 @@ template <Semiring S>
   }
 }
 
-/// Runs `work<S>()` in probabilities or in logarithms, as `model` needs (fits_in_probabilities),
-/// for the sum semirings (Max false) or the max ones.
+/// Watches the floating-point status flags of this thread while it lives: whether any result since
+/// it began overflowed, underflowed (a tiny result that lost digits, or a positive one flushed to
+/// zero) or was undefined. The flags it finds are restored when it ends.
+class range_watch {
+ public:
+  static constexpr int flags = FE_OVERFLOW | FE_UNDERFLOW | FE_INVALID;
+  range_watch() {
+    std::fegetexceptflag(&saved_, flags);
+    std::feclearexcept(flags);
+  }
+  range_watch(const range_watch&) = delete;
+  range_watch& operator=(const range_watch&) = delete;
+  ~range_watch() { std::fesetexceptflag(&saved_, flags); }
+  [[nodiscard]] bool left_the_range() const noexcept { return std::fetestexcept(flags) != 0; }
+
+ private:
+  std::fexcept_t saved_{};
+};
+
+/// Runs `work<S>()` in probabilities or in logarithms, for the sum semirings (Max false) or the
+/// max ones. Probabilities when `model` cannot leave a double's range (range_bounds_of); where it
+/// might overflow, logarithms (Z may be 10^300 and beyond). Where it might only underflow, the
+/// bound, a product of worst cases, is far from what most models reach (the competition's CSP
+/// and Segmentation never come near it): probabilities still, with the floating-point flags
+/// watched, and logarithms again only if a value did leave the range. `work` must be safe to run
+/// twice; an impossible_evidence it throws counts only if the range held.
 template <bool Max, GraphicalModel M, class Work>
 decltype(auto) in_fitting_semiring(const M& model, solve_report& report, Work&& work) {
-  report.log_space = !fits_in_probabilities(model);
   using plain = std::conditional_t<Max, max_product<double>, sum_product<double>>;
   using logs = std::conditional_t<Max, log_max_product<double>, log_sum_product<double>>;
+  const auto bounds = range_bounds_of(model);
+  report.log_space = bounds.may_overflow;
   if (report.log_space) return work.template operator()<logs>();
-  return work.template operator()<plain>();
+  if (!bounds.may_underflow) return work.template operator()<plain>();
+  {
+    const range_watch watch;
+    try {
+      auto answer = work.template operator()<plain>();
+      if (!watch.left_the_range()) return answer;
+    } catch (const impossible_evidence&) {
+      if (!watch.left_the_range()) throw;
+    }
+  }
+  report.log_space = true;
+  return work.template operator()<logs>();
+}
+
+/// `model` with `observed` entered into its factors (evidence_reduction.hpp) where the engine is
+/// exact or chosen by auto: bp and gibbs run on the model as given.
+template <GraphicalModel M>
+[[nodiscard]] std::optional<evidence_reduced_model> reduced_for(const M& model, const evidence_set& observed,
+                                                                const solve_options& options) {
+  if (options.engine == solve_engine::bp || options.engine == solve_engine::gibbs) return std::nullopt;
+  return reduce_by_evidence(model, observed);
 }
 
 /// A probability vector from unnormalized values in S, given their ⊕-total; a point mass on
@@ -292,6 +346,10 @@ template <GraphicalModel M>
   if (options.engine == solve_engine::gibbs) {
     throw model_error("gibbs answers MAR; the partition function needs jt, ve or bp");
   }
+  if (const auto reduced = detail::reduced_for(model, observed, options)) {
+    if (reduced->impossible) return -std::numeric_limits<double>::infinity();
+    return log_partition(reduced->model, {}, options, &r) + reduced->log_constant;
+  }
   const auto tree = detail::tree_within(model, options, r);
   if (!tree) {
     try {
@@ -320,6 +378,22 @@ template <GraphicalModel M>
                                                              solve_report* report = nullptr) {
   solve_report local;
   auto& r = report ? *report : local;
+  if (const auto reduced = detail::reduced_for(model, observed, options)) {
+    std::vector<std::vector<double>> free;
+    if (reduced->impossible) detail::throw_impossible(model, observed);
+    try {
+      free = all_marginals(reduced->model, {}, options, &r);
+    } catch (const impossible_evidence&) {
+      detail::throw_impossible(model, observed);
+    }
+    std::vector<std::vector<double>> result(model.size());
+    for (std::size_t k = 0; k < free.size(); ++k) result[reduced->original[k].value()] = std::move(free[k]);
+    for (const auto& o : observed.hard) {
+      result[o.variable.value()].assign(model.variables()[o.variable.value()].cardinality(), 0.0);
+      result[o.variable.value()][o.state.value()] = 1.0;
+    }
+    return result;
+  }
   const auto tree = detail::tree_within(model, options, r);
   std::vector<std::vector<double>> result(model.size());
   std::vector<variable_id> free;
@@ -389,6 +463,19 @@ template <GraphicalModel M>
   if (options.engine == solve_engine::bp || options.engine == solve_engine::gibbs) {
     throw model_error(std::string(to_string(options.engine)) +
                       " answers MAR (bp PR too); the most probable assignment needs jt or ve");
+  }
+  if (const auto reduced = detail::reduced_for(model, observed, options)) {
+    std::vector<std::size_t> free;
+    if (reduced->impossible) detail::throw_impossible(model, observed);
+    try {
+      free = most_probable_assignment(reduced->model, {}, options, &r);
+    } catch (const impossible_evidence&) {
+      detail::throw_impossible(model, observed);
+    }
+    std::vector<std::size_t> states(model.size(), 0);
+    for (std::size_t k = 0; k < free.size(); ++k) states[reduced->original[k].value()] = free[k];
+    for (const auto& o : observed.hard) states[o.variable.value()] = o.state.value();
+    return states;
   }
   const auto tree = detail::tree_within(model, options, r, false);
   return detail::in_fitting_semiring<true>(model, r, [&]<Semiring S>() {

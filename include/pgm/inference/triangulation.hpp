@@ -10,9 +10,10 @@
 /// ("fill-in" edges). Costs, compared as tuples, ties by the lower vertex index:
 ///   min_fill   — (fill-in edges, neighbours)       fewest new edges
 ///   min_degree — (neighbours)                      fewest neighbours
-///   min_weight — (clique weight, fill-in edges)    smallest table, weight = Π cardinalities
-/// Scores are kept per vertex and recomputed only within two steps of the eliminated one, the
-/// only vertices whose fill-in or weight can change.
+///   min_weight — (clique cells, fill-in edges)     smallest table, cells = Π cardinalities
+/// Scores are kept per vertex: the eliminated vertex's neighbours are scored again, and the
+/// vertices next to both ends of a fill-in edge have their fill-in lowered by one, the only
+/// changes an elimination makes.
 
 #include <algorithm>
 #include <array>
@@ -25,7 +26,7 @@
 #include <span>
 #include <string>
 #include <string_view>
-#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "pgm/core/assert.hpp"
@@ -139,69 +140,77 @@ template <class Graph>
       }
     }
   }
-  std::vector<char> gone(n, 0);
   std::vector<char> candidate(n, 1);
   if (!eliminate.empty()) {
     for (std::size_t v = 0; v < n; ++v) candidate[v] = eliminate[v] ? 1 : 0;
   }
-  std::vector<double> log_card(n);
-  for (std::size_t v = 0; v < n; ++v) log_card[v] = std::log(static_cast<double>(cardinalities[v]));
 
   elimination result;
-  using cost = std::tuple<double, double>;
-  auto score = [&](std::size_t v) -> cost {
+  // fill[v]: the pairs of v's remaining neighbours not yet joined (min_fill, min_weight).
+  const bool counts_fill = heuristic != elimination_heuristic::min_degree;
+  std::vector<std::size_t> fill(n, 0);
+  auto count_fill = [&](std::size_t v) {
     const auto& around = neighbours[v];
-    double fill = 0.0;
+    std::size_t missing = 0;
     result.work += around.size() * around.size() / 2 + 1;
-    if (heuristic != elimination_heuristic::min_degree) {
-      for (std::size_t i = 0; i < around.size(); ++i) {
-        for (std::size_t j = i + 1; j < around.size(); ++j) fill += adjacent.test(around[i], around[j]) ? 0.0 : 1.0;
-      }
+    for (std::size_t i = 0; i < around.size(); ++i) {
+      for (std::size_t j = i + 1; j < around.size(); ++j) missing += adjacent.test(around[i], around[j]) ? 0 : 1;
     }
-    const auto degree = static_cast<double>(around.size());
+    fill[v] = missing;
+  };
+  // Scores are integers (edges, neighbours, cells), compared as pairs.
+  using cost = std::pair<std::size_t, std::size_t>;
+  auto cost_of = [&](std::size_t v) -> cost {
+    const auto degree = neighbours[v].size();
     switch (heuristic) {
       case elimination_heuristic::min_fill:
-        return {fill, degree};
+        return {fill[v], degree};
       case elimination_heuristic::min_degree:
-        return {degree, 0.0};
+        return {degree, 0};
       case elimination_heuristic::min_weight: {
-        double weight = log_card[v];
-        for (auto w : around) weight += log_card[w];
-        return {weight, fill};
+        std::size_t cells = cardinalities[v];
+        for (auto w : neighbours[v]) cells = detail::saturating_multiply(cells, cardinalities[w]);
+        return {cells, fill[v]};
       }
     }
-    return {0.0, 0.0};
+    return {0, 0};
   };
   std::vector<cost> costs(n);
-  std::size_t remaining = 0;
+  // The vertices still to eliminate, ascending (ties go to the first).
+  std::vector<std::size_t> pending;
   for (std::size_t v = 0; v < n; ++v) {
     if (candidate[v]) {
-      costs[v] = score(v);
-      ++remaining;
+      if (counts_fill) count_fill(v);
+      costs[v] = cost_of(v);
+      pending.push_back(v);
     }
   }
 
-  result.order.reserve(remaining);
-  result.cliques.reserve(remaining);
-  std::vector<std::size_t> touched;
+  result.order.reserve(pending.size());
+  result.cliques.reserve(pending.size());
+  std::vector<std::pair<std::size_t, std::size_t>> joined;
+  std::vector<std::size_t> lowered;
   std::vector<char> mark(n, 0);
   std::uint64_t draws = 0;
-  while (remaining-- > 0) {
-    std::size_t best = n;
-    std::size_t tied = 0;
-    result.work += n;
-    for (std::size_t v = 0; v < n; ++v) {
-      if (!candidate[v] || gone[v]) continue;
-      if (best == n || costs[v] < costs[best]) {
-        best = v;
+  while (!pending.empty()) {
+    std::size_t at = 0;
+    std::size_t tied = 1;
+    result.work += pending.size();
+    for (std::size_t i = 1; i < pending.size(); ++i) {
+      const auto& c = costs[pending[i]];
+      if (c < costs[pending[at]]) {
+        at = i;
         tied = 1;
-      } else if (tie_seed != 0 && costs[v] == costs[best]) {
+      } else if (tie_seed != 0 && c == costs[pending[at]]) {
         // Reservoir sampling: each of the tied vertices is kept with probability 1/tied.
-        if (detail::mix_seed(tie_seed, draws++) % ++tied == 0) best = v;
+        if (detail::mix_seed(tie_seed, draws++) % ++tied == 0) at = i;
       }
     }
+    const std::size_t best = pending[at];
+    pending.erase(pending.begin() + static_cast<std::ptrdiff_t>(at));
     auto& around = neighbours[best];
     result.work += around.size() * around.size() / 2;
+    joined.clear();
     for (std::size_t i = 0; i < around.size(); ++i) {
       for (std::size_t j = i + 1; j < around.size(); ++j) {
         const auto a = around[i];
@@ -210,36 +219,52 @@ template <class Graph>
           adjacent.set(a, b);
           neighbours[a].push_back(b);
           neighbours[b].push_back(a);
-          ++result.fill_in_edges;
+          joined.emplace_back(a, b);
         }
       }
     }
+    result.fill_in_edges += joined.size();
     std::vector<std::size_t> clique = around;
     clique.push_back(best);
     std::sort(clique.begin(), clique.end());
     result.order.push_back(best);
     result.cliques.push_back(std::move(clique));
-    gone[best] = 1;
-    // The eliminated vertex leaves its neighbours' lists; their scores and those of their
-    // neighbours change.
-    touched.clear();
+    // Only the eliminated vertex's neighbours lose a neighbour or gain one, and are scored
+    // again; any other vertex's fill drops by one for each new edge that joins two of its
+    // neighbours, and nothing else of its score changes.
+    constexpr char neighbour = 1;
+    constexpr char lowered_once = 2;
     for (auto w : around) {
       auto& list = neighbours[w];
       list.erase(std::find(list.begin(), list.end(), best));
-      for (auto x : list) {
-        if (!mark[x]) {
-          mark[x] = 1;
-          touched.push_back(x);
+      mark[w] = neighbour;
+    }
+    lowered.clear();
+    if (counts_fill) {
+      for (auto [a, b] : joined) {
+        const bool a_shorter = neighbours[a].size() <= neighbours[b].size();
+        const auto& shorter = a_shorter ? neighbours[a] : neighbours[b];
+        const auto other = a_shorter ? b : a;
+        result.work += shorter.size();
+        for (auto x : shorter) {
+          if (mark[x] == neighbour || x == other || !adjacent.test(x, other)) continue;
+          --fill[x];
+          if (mark[x] != lowered_once) {
+            mark[x] = lowered_once;
+            lowered.push_back(x);
+          }
         }
       }
-      if (!mark[w]) {
-        mark[w] = 1;
-        touched.push_back(w);
-      }
     }
-    for (auto x : touched) {
+    for (auto w : around) {
+      mark[w] = 0;
+      if (!candidate[w]) continue;
+      if (counts_fill) count_fill(w);
+      costs[w] = cost_of(w);
+    }
+    for (auto x : lowered) {
       mark[x] = 0;
-      if (candidate[x] && !gone[x]) costs[x] = score(x);
+      if (candidate[x]) costs[x] = cost_of(x);
     }
     around.clear();
   }
