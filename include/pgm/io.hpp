@@ -17,6 +17,7 @@
 #include "pgm/io/net.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/io/network_format.hpp"
+#include "pgm/io/policy_csv.hpp"
 #include "pgm/io/query_batch.hpp"
 #include "pgm/io/read_options.hpp"
 #include "pgm/io/statistics_json.hpp"

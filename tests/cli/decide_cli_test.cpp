@@ -172,6 +172,32 @@ TEST_F(decide_cli_test, decide_solves_the_oil_wildcatter) {
   EXPECT_EQ(run("decide --model " + oil + " --before Drill").code, 2);
 }
 
+TEST_F(decide_cli_test, a_policy_written_reads_back_worth_the_meu) {
+  const auto oil = std::string(PGM_SOURCE_DIR) + "/tests/data/decisions/oil_wildcatter.xml";
+  const auto policy = (dir_ / "policy.csv").string();
+  for (const std::string evidence : {"", " --evidence Oil=soaking"}) {
+    const auto solved = run("decide --model " + oil + evidence + " --format json --policy-out " + policy);
+    ASSERT_EQ(solved.code, 0) << solved.err;
+    const auto given = run("decide --model " + oil + evidence + " --format json --policy-in " + policy);
+    ASSERT_EQ(given.code, 0) << given.err;
+    EXPECT_EQ(nlohmann::json::parse(given.out)["expected_utility"], nlohmann::json::parse(solved.out)["meu"])
+        << evidence;
+  }
+  const auto text = run("decide --model " + oil + " --policy-in " + policy + " --evidence Oil=soaking");
+  EXPECT_THAT(text.out, HasSubstr("expected utility of the policies in " + policy + ": "));
+  std::ofstream(dir_ / "blind.csv") << "decision,observed,action\nTest,,no\nDrill,,yes\n";
+  // Never testing, drilling blind: 0.5·-70 + 0.3·50 + 0.2·200 = 20.
+  const auto blind = run("decide --model " + oil + " --policy-in " + (dir_ / "blind.csv").string() + " --format json");
+  ASSERT_EQ(blind.code, 0) << blind.err;
+  EXPECT_NEAR(nlohmann::json::parse(blind.out)["expected_utility"].get<double>(), 20.0, 1e-12);
+  std::ofstream(dir_ / "bad.csv") << "decision,observed,action\nTest,,no\nDrill,Oil=dry,yes\n";
+  expect_error("decide --model " + oil + " --policy-in " + (dir_ / "bad.csv").string(),
+               "bad.csv:3:7: 'Oil' is not known when 'Drill' is taken");
+  EXPECT_EQ(run("decide --model " + oil + " --policy-in " + policy + " --policy-out " + policy).code, 2);
+  EXPECT_EQ(run("decide --model " + oil + " --policy-in " + policy + " --value-of-information Oil --before Drill").code,
+            2);
+}
+
 TEST_F(decide_cli_test, counterfactual_bounds_necessity_and_sufficiency) {
   // P(onTop1 = 0 | xOff1) is 2.5/3 at bin 0 and 0.95/3 at bin 1, each bin a third: PN ≥
   // (2.5/9 + 0.95/9 − 0.95/3) / (2.5/9) = 0.24, the third bin keeping it from 0.62.

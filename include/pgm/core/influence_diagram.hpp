@@ -104,6 +104,14 @@ class influence_diagram {
   dag graph_;
 };
 
+/// A deterministic policy: the action (a state of `decision`) for every configuration of
+/// `observed`, numbered mixed-radix over it, the last fastest.
+struct decision_policy {
+  variable_id decision;
+  std::vector<variable_id> observed;
+  std::vector<std::size_t> actions;
+};
+
 }  // namespace pgm
 
 #if !defined(PGM_SEPARATE_COMPILATION)

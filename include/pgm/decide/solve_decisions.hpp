@@ -27,14 +27,6 @@
 
 namespace pgm {
 
-/// A deterministic policy: the action (a state of `decision`) for every configuration of
-/// `observed`, numbered mixed-radix over it, the last fastest.
-struct decision_policy {
-  variable_id decision;
-  std::vector<variable_id> observed;
-  std::vector<std::size_t> actions;
-};
-
 struct decision_options {
   /// Each decision knows its parents only; solved by single policy updating.
   bool limited_memory = false;

@@ -1,5 +1,6 @@
 // pgm decide: the maximum expected utility of an influence diagram and the policy that reaches
-// it, optionally the value of observing a chance variable before a decision.
+// it, optionally the value of observing a chance variable before a decision; or what acting by a
+// policy read from a file is worth.
 
 #include <cstdio>
 #include <functional>
@@ -17,6 +18,7 @@
 #include "pgm/decide/solve_decisions.hpp"
 #include "pgm/inference/posterior_table.hpp"
 #include "pgm/io/influence_file.hpp"
+#include "pgm/io/policy_csv.hpp"
 
 namespace pgm::cli {
 namespace {
@@ -26,6 +28,7 @@ struct decide_arguments {
   std::string evidence;
   bool limited_memory = false;
   std::string policy_out;
+  std::string policy_in;
   std::string format = "text";
   std::string information;
   std::string before;
@@ -135,10 +138,25 @@ void write_policies(const influence_diagram& diagram, const decision_solution& s
       before_replacing);
 }
 
+/// --policy-in: what acting by the policies of a file is worth.
+void run_given_policy(const decide_arguments& args, const influence_diagram& diagram, const evidence& observed) {
+  const auto policies = read_policy_csv(args.policy_in, diagram, observed, args.limited_memory);
+  const double worth = expected_utility(diagram, policies, observed);
+  if (args.format == "json") {
+    std::cout << "{\"expected_utility\": " << json_number(worth) << "}\n";
+  } else {
+    std::cout << "expected utility of the policies in " << args.policy_in << ": " << text::format_double(worth) << '\n';
+  }
+}
+
 void run_decide(const decide_arguments& args) {
   require_extension(args.model, {".xml", ".xmlbif", ".bifxml", ".json"});
   const auto diagram = read_influence_diagram(args.model);
   const auto observed = parse_evidence(args.evidence);
+  if (!args.policy_in.empty()) {
+    run_given_policy(args, diagram, observed);
+    return;
+  }
   const decision_options options{.limited_memory = args.limited_memory};
   const auto solution = solve_decisions(diagram, observed, options);
   std::optional<double> information;
@@ -167,7 +185,8 @@ void add_decide_command(CLI::App& app) {
       "given what it observes. With perfect recall (the default) every decision also knows what earlier ones knew "
       "and chose, and the answer is exact; --limited-memory keeps each decision to its parents and climbs by "
       "single policy updating to a local optimum.\nExamples:\n  pgm decide --model oil.xml\n  pgm decide --model "
-      "oil.xml --value-of-information Oil --before Drill --format json");
+      "oil.xml --value-of-information Oil --before Drill --format json\n  pgm decide --model oil.xml "
+      "--policy-in policy.csv");
   cmd->add_option("--model", args->model,
                   "The influence diagram: XMLBIF with TYPE=\"decision\" and TYPE=\"utility\" variables (aGrUM's "
                   "BIFXML), or pgm's JSON model of \"kind\": \"influence\"")
@@ -176,8 +195,12 @@ void add_decide_command(CLI::App& app) {
                   "What is observed before the first decision, e.g. \"a=s,b=t\" (default: nothing)");
   cmd->add_flag("--limited-memory", args->limited_memory,
                 "Each decision knows its parents only (a LIMID), solved by single policy updating");
-  cmd->add_option("--policy-out", args->policy_out,
-                  "Also write the policies as CSV: decision, observed (\"A=a,B=b\"), action");
+  auto* policy_out = cmd->add_option("--policy-out", args->policy_out,
+                                     "Also write the policies as CSV: decision, observed (\"A=a,B=b\"), action");
+  auto* policy_in = cmd->add_option("--policy-in", args->policy_in,
+                                    "Instead of solving, print the expected utility of acting by the policies of this "
+                                    "CSV file (as --policy-out writes them)");
+  policy_in->excludes(policy_out);
   cmd->add_option("--format", args->format, "Output: text or json (numbers to 17 significant digits)")
       ->check(CLI::IsMember({"text", "json"}));
   auto* information =
@@ -188,6 +211,7 @@ void add_decide_command(CLI::App& app) {
       cmd->add_option("--before", args->before, "The decision at which --value-of-information's variable is known");
   information->needs(before);
   before->needs(information);
+  policy_in->excludes(information);
   cmd->callback([args] { run_decide(*args); });
 }
 
