@@ -317,6 +317,15 @@ template <GraphicalModel M>
   return reduce_by_evidence(model, observed);
 }
 
+/// Each fixed variable's marginal in `marginals` as a point mass on its state.
+template <GraphicalModel M>
+void set_point_masses(const M& model, std::span<const observation> fixed, std::vector<std::vector<double>>& marginals) {
+  for (const auto& o : fixed) {
+    marginals[o.variable.value()].assign(model.variables()[o.variable.value()].cardinality(), 0.0);
+    marginals[o.variable.value()][o.state.value()] = 1.0;
+  }
+}
+
 /// A probability vector from unnormalized values in S, given their ⊕-total; a point mass on
 /// `observed` when it is set.
 template <Semiring S>
@@ -388,10 +397,7 @@ template <GraphicalModel M>
     }
     std::vector<std::vector<double>> result(model.size());
     for (std::size_t k = 0; k < free.size(); ++k) result[reduced->original[k].value()] = std::move(free[k]);
-    for (const auto& o : observed.hard) {
-      result[o.variable.value()].assign(model.variables()[o.variable.value()].cardinality(), 0.0);
-      result[o.variable.value()][o.state.value()] = 1.0;
-    }
+    detail::set_point_masses(model, observed.hard, result);
     return result;
   }
   const auto tree = detail::tree_within(model, options, r);
@@ -441,14 +447,8 @@ template <GraphicalModel M>
     if (free.empty() && engine.total() == S::zero()) detail::throw_impossible(model, observed);
     return 0;
   });
-  for (const auto& o : observed.hard) {
-    result[o.variable.value()].assign(model.variables()[o.variable.value()].cardinality(), 0.0);
-    result[o.variable.value()][o.state.value()] = 1.0;
-  }
-  for (const auto& o : observed.intervened) {
-    result[o.variable.value()].assign(model.variables()[o.variable.value()].cardinality(), 0.0);
-    result[o.variable.value()][o.state.value()] = 1.0;
-  }
+  detail::set_point_masses(model, observed.hard, result);
+  detail::set_point_masses(model, observed.intervened, result);
   return result;
 }
 
