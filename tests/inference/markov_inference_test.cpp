@@ -464,6 +464,72 @@ TEST(markov_inference_test, a_users_semiring_runs_through_elimination_and_the_ju
   }
 }
 
+// A model of a user's own: not a markov_network, only what the GraphicalModel concept asks.
+class forwarding_model {
+ public:
+  explicit forwarding_model(markov_network model) : model_(std::move(model)) {}
+  [[nodiscard]] const std::vector<variable>& variables() const { return model_.variables(); }
+  [[nodiscard]] std::size_t size() const { return model_.size(); }
+  [[nodiscard]] variable_id id(std::string_view name) const { return model_.id(name); }
+  [[nodiscard]] std::size_t factor_count() const { return model_.factor_count(); }
+  [[nodiscard]] std::vector<variable_id> factor_scope(std::size_t f) const { return model_.factor_scope(f); }
+  [[nodiscard]] const factor_table& factor(std::size_t f) const { return model_.factor(f); }
+
+ private:
+  markov_network model_;
+};
+static_assert(GraphicalModel<forwarding_model> && !DirectedModel<forwarding_model>);
+
+TEST(markov_inference_test, a_users_own_model_type_runs_through_every_exact_engine) {
+  std::size_t impossible = 0;
+  for (std::uint64_t seed = 1; seed <= 30; ++seed) {
+    testing::random_markov_options shape;
+    shape.variables = 3 + seed % 4;
+    shape.factors = 2 + seed % 5;
+    shape.zero_chance = seed % 3 == 0 ? 0.3 : 0.05;
+    const auto markov = testing::random_markov_network(seed, shape);
+    const forwarding_model model(markov);
+    std::vector<long> fixed;
+    const auto observed = testing::random_hard_evidence(markov, seed * 7919, fixed);
+    const auto truth = testing::brute_force(markov, fixed);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    auto by_ve = std::make_shared<variable_elimination<forwarding_model>>(model);
+    junction_tree_engine<forwarding_model> by_jt(model);
+    by_ve->set_evidence(observed);
+    by_jt.set_evidence(observed);
+    if (truth.log_z == -INFINITY) {
+      ++impossible;
+      EXPECT_THROW(static_cast<void>(all_marginals(model, observed)), impossible_evidence);
+      const variable_id first[] = {variable_id(0)};
+      if (fixed[0] < 0) {
+        EXPECT_THROW(static_cast<void>(by_ve->joint(first)), impossible_evidence);
+        EXPECT_THROW(static_cast<void>(by_jt.joint(first)), impossible_evidence);
+      }
+      continue;
+    }
+    EXPECT_NEAR(log_partition(model, observed), truth.log_z, log_tolerance(truth.log_z));
+    // An engine's P(evidence) is Z with the evidence over Z without it.
+    const double log_p = truth.log_z - testing::brute_force(markov, std::vector<long>(model.size(), -1)).log_z;
+    EXPECT_NEAR(by_jt.log_probability_of_evidence(), log_p, log_tolerance(truth.log_z));
+    EXPECT_NEAR(by_ve->log_probability_of_evidence(), log_p, log_tolerance(truth.log_z));
+    const auto marginals = all_marginals(model, observed);
+    for (std::size_t i = 0; i < model.size(); ++i) {
+      if (fixed[i] >= 0) continue;
+      const variable_id x[] = {variable_id(static_cast<variable_id::rep>(i))};
+      const auto from_ve = by_ve->joint(x);
+      const auto from_jt = by_jt.joint(x);
+      for (std::size_t s = 0; s < truth.marginals[i].size(); ++s) {
+        EXPECT_NEAR(marginals[i][s], truth.marginals[i][s], 1e-12);
+        EXPECT_NEAR(from_ve.table.values()[s], truth.marginals[i][s], 1e-12);
+        EXPECT_NEAR(from_jt.table.values()[s], truth.marginals[i][s], 1e-12);
+      }
+    }
+    const auto map = most_probable_assignment(model, observed);
+    EXPECT_NEAR(testing::log_value(markov, map), truth.log_max, log_tolerance(truth.log_max));
+  }
+  EXPECT_GT(impossible, 0U);
+}
+
 TEST(markov_inference_test, variable_elimination_answers_two_threads_at_once) {
   const auto network = read_bif(std::string(PGM_NETWORKS_DIR) + "/child.bif");
   variable_elimination engine(network);

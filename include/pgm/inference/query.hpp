@@ -153,7 +153,9 @@ namespace detail {
 /// non-finite weight, or every weight 0.
 [[nodiscard]] PGM_DECL std::vector<double> checked_likelihood(const variable& v, const std::vector<double>& weights);
 
-[[noreturn]] inline void throw_impossible(const markov_network& model, const evidence_set& observed) {
+/// Any model but a Bayesian network (a Markov network, a user's) is "the model" in the message.
+template <HasNamedVariables M>
+[[noreturn]] void throw_impossible(const M& model, const evidence_set& observed) {
   throw impossible_evidence("the evidence " + describe(model.variables(), observed) +
                             " has probability 0 under the model");
 }
