@@ -21,10 +21,10 @@
 #include "pgm/decide/prevent_over_time.hpp"
 #include "pgm/decide/solve_decisions.hpp"
 #include "pgm/inference/variable_elimination.hpp"
+#include "pgm/testing/random_network.hpp"
 #include "support/enumeration.hpp"
 #include "support/influence_diagrams.hpp"
 #include "support/random_dynamic_network.hpp"
-#include "support/random_network.hpp"
 
 namespace {
 

@@ -10,7 +10,7 @@
 #include "pgm/inference/sampling.hpp"
 #include "pgm/learn/pc.hpp"
 #include "pgm/learn/structural_hamming_distance.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace {
 

@@ -18,8 +18,8 @@
 #include "pgm/decide/explain.hpp"
 #include "pgm/inference/engine_registry.hpp"
 #include "pgm/inference/sampling.hpp"
+#include "pgm/testing/random_network.hpp"
 #include "support/enumeration.hpp"
-#include "support/random_network.hpp"
 
 namespace pgm::causal_tests {
 namespace {

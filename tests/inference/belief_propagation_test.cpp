@@ -13,7 +13,7 @@
 
 #include "pgm/inference/factor_gibbs.hpp"
 #include "pgm/inference/solve.hpp"
-#include "support/random_markov_network.hpp"
+#include "pgm/testing/random_markov_network.hpp"
 
 namespace pgm {
 namespace belief_propagation_test {

@@ -19,9 +19,9 @@
 #include "pgm/inference/junction_tree_engine.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/io/json_model.hpp"
+#include "pgm/testing/random_network.hpp"
 #include "support/program_test.hpp"
 #include "support/random_dynamic_network.hpp"
-#include "support/random_network.hpp"
 
 namespace pgm {
 namespace dynamic_inference_test {

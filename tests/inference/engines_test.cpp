@@ -16,8 +16,8 @@
 #include "pgm/inference/junction_tree_engine.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 #include "pgm/io/bif.hpp"
+#include "pgm/testing/random_network.hpp"
 #include "support/enumeration.hpp"
-#include "support/random_network.hpp"
 
 namespace pgm::engines_tests {
 namespace {

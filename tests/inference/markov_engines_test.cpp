@@ -14,8 +14,8 @@
 #include "pgm/core/graphical_model.hpp"
 #include "pgm/inference/approximate_engines.hpp"
 #include "pgm/inference/engine_registry.hpp"
-#include "support/random_markov_network.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_markov_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm {
 namespace markov_engines_test {

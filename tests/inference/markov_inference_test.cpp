@@ -17,8 +17,8 @@
 #include "pgm/inference/solve.hpp"
 #include "pgm/inference/variable_elimination.hpp"
 #include "pgm/io/bif.hpp"
-#include "support/random_markov_network.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_markov_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm {
 namespace markov_inference_test {

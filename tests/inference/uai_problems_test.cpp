@@ -14,7 +14,7 @@
 #include "pgm/inference/solve.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/io/uai.hpp"
-#include "support/random_markov_network.hpp"
+#include "pgm/testing/random_markov_network.hpp"
 
 namespace pgm {
 namespace uai_problems_test {

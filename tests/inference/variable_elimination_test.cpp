@@ -11,8 +11,8 @@
 
 #include "pgm/inference/factor.hpp"
 #include "pgm/io/bif.hpp"
+#include "pgm/testing/random_network.hpp"
 #include "support/enumeration.hpp"
-#include "support/random_network.hpp"
 
 namespace pgm::variable_elimination_tests {
 namespace {

@@ -7,7 +7,7 @@
 #include <fstream>
 
 #include "pgm/io/network_file.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm::bif_tests {
 namespace {

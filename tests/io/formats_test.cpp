@@ -12,7 +12,7 @@
 #include "pgm/io/net.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/io/xmlbif.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm::formats_tests {
 namespace {

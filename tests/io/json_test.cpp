@@ -5,7 +5,7 @@
 
 #include "pgm/io/cpt_csv.hpp"
 #include "pgm/io/json_model.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm::json_tests {
 namespace {

@@ -9,7 +9,7 @@
 
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/uai.hpp"
-#include "support/random_markov_network.hpp"
+#include "pgm/testing/random_markov_network.hpp"
 
 namespace pgm {
 namespace markov_json_test {

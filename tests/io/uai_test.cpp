@@ -10,7 +10,7 @@
 
 #include "pgm/io/bif.hpp"
 #include "pgm/io/network_file.hpp"
-#include "support/random_markov_network.hpp"
+#include "pgm/testing/random_markov_network.hpp"
 
 namespace pgm {
 namespace uai_test {

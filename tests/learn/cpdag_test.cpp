@@ -11,7 +11,7 @@
 
 #include "pgm/learn/orientation.hpp"
 #include "pgm/learn/structural_hamming_distance.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm::cpdag_tests {
 namespace {

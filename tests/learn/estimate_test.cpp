@@ -6,7 +6,7 @@
 #include <random>
 
 #include "pgm/learn/fit.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm::estimate_tests {
 namespace {

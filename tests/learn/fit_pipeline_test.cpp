@@ -11,7 +11,7 @@
 #include "pgm/inference/sampling.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/io/csv_source.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm::fit_pipeline_tests {
 namespace {

@@ -19,7 +19,7 @@
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/pipeline/fit_pipeline.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm::fit_statistics_tests {
 namespace {

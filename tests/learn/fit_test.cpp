@@ -5,7 +5,7 @@
 
 #include <map>
 
-#include "support/random_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm::fit_tests {
 namespace {

@@ -16,7 +16,7 @@
 #include "pgm/learn/network_score.hpp"
 #include "pgm/learn/structural_hamming_distance.hpp"
 #include "pgm/learn/structure_prior.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm::hill_climbing_tests {
 namespace {

@@ -18,7 +18,7 @@
 #include "pgm/inference/sampling.hpp"
 #include "pgm/io/bif.hpp"
 #include "pgm/learn/structural_hamming_distance.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm::pc_tests {
 namespace {

@@ -18,7 +18,8 @@ set(layers
     "decide"
     "sim"
     "eval"
-    "adapters")
+    "adapters"
+    "testing")
 
 # The layer of a path below pgm/: its module's position in `layers`, -1 for none.
 function(layer_of path result)

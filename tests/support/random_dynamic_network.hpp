@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "pgm/core/dynamic_network.hpp"
-#include "support/random_network.hpp"
+#include "pgm/testing/random_network.hpp"
 
 namespace pgm::testing {
 

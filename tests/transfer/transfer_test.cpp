@@ -9,9 +9,9 @@
 
 #include "pgm/inference/sampling.hpp"
 #include "pgm/learn/fit.hpp"
+#include "pgm/testing/random_network.hpp"
 #include "pgm/transfer/network_transfer.hpp"
 #include "pgm/transfer/replacement.hpp"
-#include "support/random_network.hpp"
 
 namespace transfer_tests {
 namespace {

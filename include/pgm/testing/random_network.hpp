@@ -1,6 +1,7 @@
 #pragma once
-// Random networks for property tests: a random DAG over `nodes` variables with up to
-// `max_parents` parents each and random tables drawn from a flat Dirichlet.
+/// \file
+/// Random networks for property tests: a random DAG over `nodes` variables with up to
+/// `max_parents` parents each and random tables drawn from a flat Dirichlet.
 
 #include <algorithm>
 #include <cstdint>

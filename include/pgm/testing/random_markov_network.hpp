@@ -1,6 +1,7 @@
 #pragma once
-// Random Markov networks for property tests, and their answers by brute force: every joint state
-// enumerated, in long double, with the log of Z kept apart so that huge factors do not overflow.
+/// \file
+/// Random Markov networks for property tests, and their answers by brute force: every joint state
+/// enumerated, in long double, with the log of Z kept apart so that huge factors do not overflow.
 
 #include <algorithm>
 #include <cmath>
