@@ -35,7 +35,7 @@ expect(parameter_prior "none: P\\(inside=1 \\| centre\\) = ${number}, P\\(inside
 expect(inference_engine "engines: auto bp enumerate gibbs jt lw ve\n"
        "enumerate: P\\(rain=yes \\| grass=wet\\) = 0.413086, P\\(grass=wet\\) = 0.43618\n"
        "jt: P\\(rain=yes \\| grass=wet\\) = 0.413086, P\\(grass=wet\\) = 0.43618\n")
-expect(engine_conformance "\\[  PASSED  \\] 3 tests\\.")
+expect(conformance "\\[  PASSED  \\] 6 tests\\.")
 expect(family_score "scores: aic\\[k=1\\] bdeu\\[iss=1\\] bic heavy-bic\\[weight=2\\] k2 loglik \n"
        "bic: a->c b->c\n" "heavy-bic\\[weight=3\\]: a->c\n")
 expect(structure_learner "learners: chow-liu empty hc mmhc pc tabu\n" "hc: a->b b->c\n" "chow-liu: a->b b->c b->d\n"
