@@ -9,6 +9,7 @@
 
 #include "pgm/inference/sampling.hpp"
 #include "pgm/io/bif.hpp"
+#include "pgm/learn/background_knowledge.hpp"
 #include "pgm/learn/learn_structure.hpp"
 #include "pgm/learn/orientation.hpp"
 #include "pgm/learn/structural_hamming_distance.hpp"
@@ -29,16 +30,20 @@ std::vector<const discrete_column*> columns_of(const dataset& data) {
   return columns;
 }
 
-/// A user's learner: each column a parent of the next, up to `length` edges.
+/// A user's learner: each column a parent of the next, up to `length` edges, where the
+/// background knowledge allows, and the required edges.
 class chain_learner {
  public:
   static std::vector<option_declaration> options() { return {count_option("length", 2, "the most edges").at_least(1)}; }
   explicit chain_learner(const option_values& options) : length_(options.count("length")) {}
 
   structure_result learn(const structure_problem& problem) const {
-    std::vector<named_edge> edges;
-    for (std::size_t i = 1; i < problem.names.size() && edges.size() < length_; ++i) {
+    const edge_constraints constraints(problem.knowledge, problem.names);
+    std::vector<named_edge> edges = problem.knowledge.required;
+    for (std::size_t i = 1, added = 0; i < problem.names.size() && added < length_; ++i) {
+      if (!constraints.allowed(i - 1, i) || constraints.required(i - 1, i)) continue;
       edges.push_back({problem.names[i - 1], problem.names[i]});
+      ++added;
     }
     return dag_result(problem.names, edges);
   }
