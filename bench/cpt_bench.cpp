@@ -74,8 +74,8 @@ const pgm::cpt<double>& fitted_table() {
 template <std::size_t C, std::size_t P>
 pgm::factor table_factor() {
   std::vector<pgm::variable_id> parents;
-  for (std::size_t p = 0; p < P; ++p) parents.push_back(pgm::variable_id(static_cast<pgm::variable_id::rep>(p)));
-  return pgm::factor::from_cpt(fitted_table<C, P>(), pgm::variable_id(static_cast<pgm::variable_id::rep>(P)), parents);
+  for (std::size_t p = 0; p < P; ++p) parents.push_back(pgm::index_at<pgm::variable_id>(p));
+  return pgm::factor::from_cpt(fitted_table<C, P>(), pgm::index_at<pgm::variable_id>(P), parents);
 }
 
 void set_cells(benchmark::State& state, std::size_t cells) {
@@ -260,7 +260,7 @@ std::vector<double> child_weights() {
 template <std::size_t C, std::size_t P>
 void combine(benchmark::State& state) {
   const auto f = table_factor<C, P>();
-  const pgm::factor weights({pgm::variable_id(static_cast<pgm::variable_id::rep>(P))}, {C}, child_weights<C>());
+  const pgm::factor weights({pgm::index_at<pgm::variable_id>(P)}, {C}, child_weights<C>());
   double sum = 0.0;
   for (auto _ : state) {
     const auto product = f * weights;
@@ -345,7 +345,7 @@ void transfer_by_hand(benchmark::State& state) {
   for (auto _ : state) {
     values.clear();
     for (std::size_t u = 0; u < layout.configurations(); ++u) {
-      const auto codes = layout.parent_codes(pgm::config_index(static_cast<pgm::config_index::rep>(u)));
+      const auto codes = layout.parent_codes(pgm::index_at<pgm::config_index>(u));
       std::vector<std::string> labels;
       for (std::size_t p = 0; p < P; ++p) labels.push_back(target[p].states()[codes[p]]);
       for (std::size_t x = 0; x < C; ++x) values.push_back(shape.prior.probability(std::to_string(x), labels));

@@ -306,7 +306,7 @@ void prevent_over_time_elimination(benchmark::State& state) {
       pgm::evidence_set given;
       for (std::size_t t = 0; t < 2; ++t) given.hard.push_back({at(5, t), pgm::state_index(0)});
       for (std::size_t v = 0; v < 4; ++v) {
-        given.intervened.push_back({at(v, 2), pgm::state_index(static_cast<pgm::state_index::rep>(states[v]))});
+        given.intervened.push_back({at(v, 2), pgm::index_at<pgm::state_index>(states[v])});
       }
       engine.set_evidence(given);
       const double episode = engine.log_probability_of_evidence();

@@ -54,13 +54,13 @@ const std::vector<single_query>& query_mix(std::size_t index) {
   std::vector<single_query> mix;
   while (mix.size() < 256) {
     single_query q;
-    q.query = pgm::variable_id(static_cast<pgm::variable_id::rep>(random() % net.size()));
+    q.query = pgm::index_at<pgm::variable_id>(random() % net.size());
     const auto observed = mix.size() % 4;
     while (q.observed.hard.size() < observed) {
-      const pgm::variable_id v(static_cast<pgm::variable_id::rep>(random() % net.size()));
+      const auto v = pgm::index_at<pgm::variable_id>(random() % net.size());
       if (v == q.query || q.observed.fixes(v)) continue;
       const auto states = net.variables()[v.value()].cardinality();
-      q.observed.hard.push_back({v, pgm::state_index(static_cast<pgm::state_index::rep>(random() % states))});
+      q.observed.hard.push_back({v, pgm::index_at<pgm::state_index>(random() % states)});
     }
     ve.set_evidence(q.observed);
     try {
@@ -124,7 +124,7 @@ const do_mix& intervention_mix(std::size_t index) {
   do_mix mix;
   std::size_t most = 0;
   for (std::size_t v = 0; v < net.size(); ++v) {
-    const pgm::variable_id id(static_cast<pgm::variable_id::rep>(v));
+    const auto id = pgm::index_at<pgm::variable_id>(v);
     if (net.graph().parents(id).size() > most) {
       most = net.graph().parents(id).size();
       mix.set = {id, pgm::state_index(0)};
@@ -193,7 +193,7 @@ pgm::evidence_set ten_observations(std::size_t index) {
   const auto wanted = std::min<std::size_t>(10, net.size() / 4);
   for (std::size_t v = 0; v < net.size() && observed.hard.size() < wanted; v += 1 + net.size() / 10) {
     auto trial = observed;
-    trial.hard.push_back({pgm::variable_id(static_cast<pgm::variable_id::rep>(v)), pgm::state_index(0)});
+    trial.hard.push_back({pgm::index_at<pgm::variable_id>(v), pgm::state_index(0)});
     ve.set_evidence(trial);
     if (std::isfinite(ve.log_probability_of_evidence())) observed = std::move(trial);
   }
@@ -203,7 +203,7 @@ pgm::evidence_set ten_observations(std::size_t index) {
 std::vector<pgm::variable_id> unobserved(std::size_t index, const pgm::evidence_set& observed) {
   std::vector<pgm::variable_id> ids;
   for (std::size_t v = 0; v < network(index).size(); ++v) {
-    const pgm::variable_id id(static_cast<pgm::variable_id::rep>(v));
+    const auto id = pgm::index_at<pgm::variable_id>(v);
     if (!observed.fixes(id)) ids.push_back(id);
   }
   return ids;
@@ -359,7 +359,7 @@ void filter_steps(benchmark::State& state) {
   std::mt19937_64 engine(5);
   for (auto& e : episode) {
     for (pgm::variable_id::rep k : {0U, 4U}) {
-      e.hard.push_back({pgm::variable_id(k), pgm::state_index(static_cast<pgm::state_index::rep>(engine() % 3))});
+      e.hard.push_back({pgm::variable_id(k), pgm::index_at<pgm::state_index>(engine() % 3)});
     }
   }
   pgm::interface_filter filter(model);
@@ -414,13 +414,13 @@ void filter_by_unrolling(benchmark::State& state) {
   for (std::size_t t = 0; t < steps; ++t) {
     for (pgm::variable_id::rep k : {0U, 4U}) {
       all.hard.push_back({unrolled.id(pgm::slice_name(model.variables()[k].name(), static_cast<long>(t))),
-                          pgm::state_index(static_cast<pgm::state_index::rep>(engine() % 3))});
+                          pgm::index_at<pgm::state_index>(engine() % 3)});
     }
   }
   const auto free = [&] {
     std::vector<pgm::variable_id> ids;
     for (std::size_t v = 0; v < unrolled.size(); ++v) {
-      const pgm::variable_id id(static_cast<pgm::variable_id::rep>(v));
+      const auto id = pgm::index_at<pgm::variable_id>(v);
       if (!all.fixes(id)) ids.push_back(id);
     }
     return ids;

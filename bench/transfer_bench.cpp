@@ -63,7 +63,7 @@ void transfer_25_to_625_by_labels(benchmark::State& state) {
   for (auto _ : state) {
     values.clear();
     for (std::size_t u = 0; u < 625; ++u) {
-      const auto codes = cpt<double>(on2, target).parent_codes(config_index(static_cast<config_index::rep>(u)));
+      const auto codes = cpt<double>(on2, target).parent_codes(index_at<config_index>(u));
       const std::vector<std::string> labels{target[0].states()[codes[0]], target[1].states()[codes[1]]};
       values.push_back(s.prior.probability("0", labels));
       values.push_back(s.prior.probability("1", labels));

@@ -38,7 +38,7 @@ const problem& load(std::size_t index) {
   evid += ".evid";
   const auto samples = pgm::parse_uai_evidence(pgm::read_file(evid), evid.string(), p.model);
   for (auto [v, s] : samples.front()) {
-    p.observed.hard.push_back({v, pgm::state_index(static_cast<pgm::state_index::rep>(s))});
+    p.observed.hard.push_back({v, pgm::index_at<pgm::state_index>(s)});
   }
   p.graph = pgm::interaction_graph_of(p.model.size(), pgm::scopes_of(p.model));
   p.cards = pgm::cardinalities_of(p.model);

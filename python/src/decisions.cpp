@@ -80,7 +80,7 @@ void add_decisions(py::module_& m) {
                              [](const diagram_handle& h) {
                                std::vector<std::string> names;
                                for (std::size_t i = 0; i < h.model.size(); ++i) {
-                                 const auto id = variable_id(static_cast<variable_id::rep>(i));
+                                 const auto id = index_at<variable_id>(i);
                                  if (!h.model.is_decision(id)) names.push_back(h.model.at(id).name());
                                }
                                return names;

@@ -118,9 +118,9 @@ py::tuple table_of(const network_handle& handle, const std::string& name) {
   auto code_view = codes.mutable_unchecked<2>();
   auto value_view = values.mutable_unchecked<2>();
   for (std::size_t u = 0; u < configurations; ++u) {
-    const auto parent_codes = table.parent_codes(config_index(static_cast<config_index::rep>(u)));
+    const auto parent_codes = table.parent_codes(index_at<config_index>(u));
     for (std::size_t p = 0; p < parents; ++p) code_view(u, p) = static_cast<std::uint32_t>(parent_codes[p]);
-    const auto column = table.column(config_index(static_cast<config_index::rep>(u)));
+    const auto column = table.column(index_at<config_index>(u));
     for (std::size_t x = 0; x < states; ++x) value_view(u, x) = column[x];
   }
   return py::make_tuple(names_of(table.parents()), std::move(codes), table.child().states(), std::move(values));

@@ -38,18 +38,17 @@ TEST(intervention_test, every_engine_gives_the_truncated_factorisation) {
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     const auto net = testing::random_network(seed, {.nodes = 8, .max_parents = 3, .min_states = 2, .max_states = 3});
     std::vector<variable_id> nodes;
-    for (std::size_t i = 0; i < net.size(); ++i) nodes.emplace_back(static_cast<variable_id::rep>(i));
+    for (std::size_t i = 0; i < net.size(); ++i) nodes.push_back(index_at<variable_id>(i));
     std::shuffle(nodes.begin(), nodes.end(), random);
     evidence_set observed;
     const auto set = 1 + random() % 2;
     for (std::size_t k = 0; k < set; ++k) {
-      observed.intervened.push_back({nodes[k], state_index(static_cast<state_index::rep>(
-                                                   random() % net.variables()[nodes[k].value()].cardinality()))});
+      observed.intervened.push_back(
+          {nodes[k], index_at<state_index>(random() % net.variables()[nodes[k].value()].cardinality())});
     }
     if (random() % 2) {
       const auto v = nodes[set];
-      observed.hard.push_back(
-          {v, state_index(static_cast<state_index::rep>(random() % net.variables()[v.value()].cardinality()))});
+      observed.hard.push_back({v, index_at<state_index>(random() % net.variables()[v.value()].cardinality())});
     }
     const variable_id query[] = {nodes[set + 1]};
     const auto raw = testing::enumerate_joint(net, query, observed);
@@ -105,7 +104,7 @@ TEST(intervention_test, sampling_engines_sample_the_mutilated_network) {
     auto engine = make_engine(name, net, options);
     engine.set_evidence(observed);
     for (std::size_t v : {0U, 4U, 5U}) {
-      const variable_id q[] = {variable_id(static_cast<variable_id::rep>(v))};
+      const variable_id q[] = {index_at<variable_id>(v)};
       const auto expected = normalized(testing::enumerate_joint(net, q, observed));
       const auto p = engine.joint(q);
       for (std::size_t s = 0; s < expected.size(); ++s) {
@@ -181,7 +180,7 @@ TEST(d_separation_test, agrees_with_the_independences_of_the_exact_joint) {
   for (std::uint64_t seed = 1; seed <= 40; ++seed) {
     const auto net = testing::random_network(seed, {.nodes = 7, .max_parents = 2, .min_states = 2, .max_states = 2});
     std::vector<variable_id> nodes;
-    for (std::size_t i = 0; i < net.size(); ++i) nodes.emplace_back(static_cast<variable_id::rep>(i));
+    for (std::size_t i = 0; i < net.size(); ++i) nodes.push_back(index_at<variable_id>(i));
     for (int round = 0; round < 4; ++round) {
       std::shuffle(nodes.begin(), nodes.end(), random);
       const variable_id x[] = {nodes[0]};
@@ -232,7 +231,7 @@ TEST(adjustment_test, minimal_backdoor_sets_meet_the_definition_and_identify_the
   int sets_checked = 0;
   for (std::uint64_t seed = 1; seed <= 30; ++seed) {
     const auto net = testing::random_network(seed, {.nodes = 7, .max_parents = 3, .min_states = 2, .max_states = 2});
-    const variable_id x[] = {variable_id(static_cast<variable_id::rep>(1 + random() % 3))};
+    const variable_id x[] = {index_at<variable_id>(1 + random() % 3)};
     const variable_id y[] = {variable_id(6)};
     const auto found = minimal_backdoor_sets(net.graph(), x, y);
     ASSERT_TRUE(found.complete);

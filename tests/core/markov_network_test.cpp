@@ -86,7 +86,7 @@ TEST(markov_network_test, a_bayesian_network_reads_as_its_tables) {
   const auto network = read_bif(std::string(PGM_NETWORKS_DIR) + "/asia.bif");
   ASSERT_EQ(network.factor_count(), network.size());
   for (std::size_t f = 0; f < network.factor_count(); ++f) {
-    const variable_id node(static_cast<variable_id::rep>(f));
+    const variable_id node = index_at<variable_id>(f);
     const auto table = network.factor(f);
     auto scope = network.graph().parents(node);
     scope.push_back(node);

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "pgm/core/mixed_radix.hpp"
+#include "pgm/core/strong_index.hpp"
 
 namespace pgm::variable_tests {
 namespace {
@@ -98,6 +99,16 @@ TEST(mixed_radix_test, empty_radix_has_one_configuration) {
 
 TEST(mixed_radix_test, overflow_is_an_error) {
   EXPECT_THAT([] { mixed_radix(std::vector<std::size_t>(70, 2)); }, ThrowsMessage<model_error>(HasSubstr("overflows")));
+}
+
+TEST(strong_index_test, positions_become_indices_in_one_conversion) {
+  static_assert(index_at<variable_id>(7) == variable_id(7) && index_at<config_index>(9).value() == 9);
+  std::vector<std::uint32_t> seen;
+  for (auto v : ids(4)) seen.push_back(v.value());
+  EXPECT_EQ(seen, (std::vector<std::uint32_t>{0, 1, 2, 3}));
+  std::vector<state_index> states(indices<state_index>(3).begin(), indices<state_index>(3).end());
+  EXPECT_EQ(states, (std::vector<state_index>{state_index(0), state_index(1), state_index(2)}));
+  EXPECT_TRUE(std::ranges::empty(ids(0)));
 }
 
 }  // namespace

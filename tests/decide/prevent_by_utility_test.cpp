@@ -54,10 +54,10 @@ double best_by_enumeration(const cpt<double>& table, std::size_t u, const std::v
       reachable = reachable && controllable[p];
       const auto& v = table.parents()[p];
       const auto rate = costs.cost.contains(v.name()) ? costs.cost.at(v.name()) : 0.0;
-      const double distance = costs.unit == move_costs::per::steps
-                                  ? std::abs(static_cast<double>(to[p]) - static_cast<double>(from[p]))
-                                  : std::abs(*v.midpoint(state_index(static_cast<state_index::rep>(to[p]))) -
-                                             *v.midpoint(state_index(static_cast<state_index::rep>(from[p]))));
+      const double distance =
+          costs.unit == move_costs::per::steps
+              ? std::abs(static_cast<double>(to[p]) - static_cast<double>(from[p]))
+              : std::abs(*v.midpoint(index_at<state_index>(to[p])) - *v.midpoint(index_at<state_index>(from[p])));
       cost += rate * distance;
     }
     if (reachable) best = std::max(best, costs.reward * table(state_index(1), config_index(c)) - cost);

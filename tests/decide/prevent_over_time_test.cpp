@@ -21,7 +21,7 @@ using ::testing::HasSubstr;
 using ::testing::ThrowsMessage;
 
 observation seen(std::size_t variable, std::size_t state) {
-  return {variable_id(static_cast<variable_id::rep>(variable)), state_index(static_cast<state_index::rep>(state))};
+  return {index_at<variable_id>(variable), index_at<state_index>(state)};
 }
 
 // P(v2 = 0 at steps k … T−1 | episode, do(v0@k = c)) for every state c of v0, by enumeration.
@@ -38,7 +38,7 @@ std::vector<double> enumerated(const dynamic_network& model, const std::vector<e
   std::vector<double> answer;
   for (std::size_t c = 0; c < model.variables()[0].cardinality(); ++c) {
     auto given = episode;
-    given.intervened.push_back({at(0, k), state_index(static_cast<state_index::rep>(c))});
+    given.intervened.push_back({at(0, k), index_at<state_index>(c)});
     double total = 0.0, success = 0.0;
     auto with_success = given;
     for (std::size_t t = k; t < horizon; ++t) with_success.hard.push_back({at(2, t), state_index(0)});

@@ -167,8 +167,8 @@ TEST(prevent_test, units_match_an_exhaustive_scan) {
         double d = 0;
         for (std::size_t k = 0; k < 3; ++k) {
           const auto& var = parents[k];
-          const double gap = *var.midpoint(state_index(static_cast<state_index::rep>(to[k]))) -
-                             *var.midpoint(state_index(static_cast<state_index::rep>(from[k])));
+          const double gap =
+              *var.midpoint(index_at<state_index>(to[k])) - *var.midpoint(index_at<state_index>(from[k]));
           d += gap * gap;
         }
         if (d < best_distance - 1e-9 ||

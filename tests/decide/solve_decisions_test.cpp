@@ -180,9 +180,9 @@ double meu_by_definition(const influence_diagram& d, const evidence& e) {
       return t.probability * t.utility;
     }
     const auto v = sequence[k];
-    const bool decision = d.is_decision(variable_id(static_cast<variable_id::rep>(v)));
+    const bool decision = d.is_decision(index_at<variable_id>(v));
     double result = decision ? -std::numeric_limits<double>::infinity() : 0;
-    for (std::size_t s = 0; s < d.at(variable_id(static_cast<variable_id::rep>(v))).cardinality(); ++s) {
+    for (std::size_t s = 0; s < d.at(index_at<variable_id>(v)).cardinality(); ++s) {
       x[v] = s;
       const double w = value(k + 1);
       result = decision ? std::max(result, w) : result + w;
@@ -195,10 +195,10 @@ double meu_by_definition(const influence_diagram& d, const evidence& e) {
       evidence_probability += term_at(d, x).probability;
       return;
     }
-    const bool set = d.is_decision(variable_id(static_cast<variable_id::rep>(v))) ||
+    const bool set = d.is_decision(index_at<variable_id>(v)) ||
                      std::any_of(fixed.begin(), fixed.end(), [&](const auto& f) { return f.first == v; });
     if (set) return chance(v + 1);
-    for (std::size_t s = 0; s < d.at(variable_id(static_cast<variable_id::rep>(v))).cardinality(); ++s) {
+    for (std::size_t s = 0; s < d.at(index_at<variable_id>(v)).cardinality(); ++s) {
       x[v] = s;
       chance(v + 1);
     }
@@ -268,7 +268,7 @@ TEST(solve_decisions_test, information_is_never_worth_less_than_nothing_with_per
     const auto r = make_random(seed, true);
     const auto first = r.diagram.decision_order().front();
     for (std::size_t i = 0; i < r.diagram.size(); ++i) {
-      const auto x = variable_id(static_cast<variable_id::rep>(i));
+      const auto x = index_at<variable_id>(i);
       if (r.diagram.is_decision(x) || r.observed.contains(r.diagram.at(x).name()) ||
           !r.diagram.graph().path_between(first, x).empty()) {
         continue;

@@ -47,15 +47,14 @@ markov_network random_factor_tree(std::uint64_t seed, std::size_t variables) {
   };
   std::size_t placed = 1;
   while (placed < variables) {
-    const auto anchor = variable_id(static_cast<variable_id::rep>(engine() % placed));
+    const auto anchor = index_at<variable_id>(engine() % placed);
     std::vector<variable_id> scope{anchor};
     const auto fresh = std::min<std::size_t>(1 + engine() % 2, variables - placed);
-    for (std::size_t k = 0; k < fresh; ++k) scope.push_back(variable_id(static_cast<variable_id::rep>(placed++)));
+    for (std::size_t k = 0; k < fresh; ++k) scope.push_back(index_at<variable_id>(placed++));
     std::shuffle(scope.begin(), scope.end(), engine);
     add(std::move(scope));
   }
-  for (std::size_t k = 0; k < variables / 2; ++k)
-    add({variable_id(static_cast<variable_id::rep>(engine() % variables))});
+  for (std::size_t k = 0; k < variables / 2; ++k) add({index_at<variable_id>(engine() % variables)});
   return markov_network(std::move(vars), std::move(factors));
 }
 

@@ -37,17 +37,17 @@ std::vector<evidence_set> random_steps(const dynamic_network& model, std::size_t
   std::vector<evidence_set> steps(horizon);
   for (auto& e : steps) {
     for (std::size_t i = 0; i < model.size(); ++i) {
-      const variable_id id(static_cast<variable_id::rep>(i));
+      const variable_id id = index_at<variable_id>(i);
       const auto states = model.variables()[i].cardinality();
       const auto roll = engine() % 12;
       if (roll < 4) {
-        e.hard.push_back({id, state_index(static_cast<state_index::rep>(engine() % states))});
+        e.hard.push_back({id, index_at<state_index>(engine() % states)});
       } else if (roll == 4) {
         std::vector<double> weights;
         for (std::size_t s = 0; s < states; ++s) weights.push_back(weight(engine));
         e.soft.push_back({id, weights});
       } else if (roll == 5 && interventions) {
-        e.intervened.push_back({id, state_index(static_cast<state_index::rep>(engine() % states))});
+        e.intervened.push_back({id, index_at<state_index>(engine() % states)});
       }
     }
   }
@@ -87,7 +87,7 @@ void expect_near(const std::vector<std::vector<double>>& a, const std::vector<st
                  const evidence_set& step = {}) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
-    const variable_id id(static_cast<variable_id::rep>(i));
+    const variable_id id = index_at<variable_id>(i);
     if (step.fixes(id)) {
       for (const auto* fixed : {&step.hard, &step.intervened}) {
         for (const auto& o : *fixed) {
@@ -201,7 +201,7 @@ TEST(dynamic_inference_test, the_interface_is_what_the_next_slice_depends_on) {
     for (const auto& table : model.transition_tables()) {
       const auto& parents = table.parents();
       if (std::any_of(parents.begin(), parents.end(), [&](const variable& p) { return p.name() == name; })) {
-        expected.push_back(variable_id(static_cast<variable_id::rep>(i)));
+        expected.push_back(index_at<variable_id>(i));
         break;
       }
     }
@@ -247,8 +247,7 @@ TEST_F(filter_cli_test, writes_the_unrolled_trees_marginals_and_refuses_bad_inpu
       if (engine() % 2 == 0) continue;  // unobserved: an empty cell
       const auto s = engine() % model.variables()[i].cardinality();
       data += model.variables()[i].states()[s];
-      steps[t].hard.push_back(
-          {variable_id(static_cast<variable_id::rep>(i)), state_index(static_cast<state_index::rep>(s))});
+      steps[t].hard.push_back({index_at<variable_id>(i), index_at<state_index>(s)});
     }
     data += "\n";
   }
@@ -271,7 +270,7 @@ TEST_F(filter_cli_test, writes_the_unrolled_trees_marginals_and_refuses_bad_inpu
       exact.set_evidence(unrolled_evidence(model, unrolled, steps, upto));
       const auto marginals = unrolled_marginals(model, exact, step);
       for (std::size_t i = 0; i < model.size(); ++i) {
-        if (step < steps.size() && steps[step].fixes(variable_id(static_cast<variable_id::rep>(i)))) continue;
+        if (step < steps.size() && steps[step].fixes(index_at<variable_id>(i))) continue;
         for (std::size_t s = 0; s < marginals[i].size(); ++s, ++expected_rows) {
           ASSERT_LT(expected_rows, rows.rows());
           EXPECT_EQ(t[expected_rows], static_cast<double>(step));

@@ -33,7 +33,7 @@ struct random_case {
 
 random_case draw_case(const bayesian_network& net, std::mt19937_64& random) {
   std::vector<variable_id> nodes;
-  for (std::size_t i = 0; i < net.size(); ++i) nodes.emplace_back(static_cast<variable_id::rep>(i));
+  for (std::size_t i = 0; i < net.size(); ++i) nodes.push_back(index_at<variable_id>(i));
   std::shuffle(nodes.begin(), nodes.end(), random);
   random_case item;
   const auto queried = 1 + random() % 3;
@@ -43,8 +43,7 @@ random_case draw_case(const bayesian_network& net, std::mt19937_64& random) {
   for (std::size_t k = 0; k < queried; ++k) item.query.push_back(nodes[next++]);
   for (std::size_t k = 0; k < hard; ++k) {
     const auto id = nodes[next++];
-    item.observed.hard.push_back(
-        {id, state_index(static_cast<state_index::rep>(random() % net.variables()[id.value()].cardinality()))});
+    item.observed.hard.push_back({id, index_at<state_index>(random() % net.variables()[id.value()].cardinality())});
   }
   for (std::size_t k = 0; k < soft; ++k) {
     // Soft evidence may fall on a query variable too: its posterior is then reweighted.
@@ -114,7 +113,7 @@ TEST(engines_test, junction_tree_propagation_matches_enumeration_when_it_keeps_m
     if (!(evidence > 0.0)) continue;
     jt.set_evidence(item.observed);
     for (std::size_t i = 0; i < net.size(); ++i) {
-      const variable_id one[] = {variable_id(static_cast<variable_id::rep>(i))};
+      const variable_id one[] = {index_at<variable_id>(i)};
       if (item.observed.fixes(one[0])) continue;
       const auto expected = expected_posterior(net, {{one[0]}, item.observed}).first;
       for (int twice = 0; twice < 2; ++twice) {
@@ -124,7 +123,7 @@ TEST(engines_test, junction_tree_propagation_matches_enumeration_when_it_keeps_m
     }
     std::vector<variable_id> free;
     for (std::size_t i = 0; i < net.size(); ++i) {
-      if (!item.observed.fixes(variable_id(static_cast<variable_id::rep>(i)))) free.emplace_back(i);
+      if (!item.observed.fixes(index_at<variable_id>(i))) free.emplace_back(i);
     }
     const auto all = jt.marginals(free);
     ASSERT_EQ(all.size(), free.size());
@@ -165,7 +164,7 @@ TEST(engines_test, most_probable_explanation_matches_enumeration) {
     if (!(evidence > 0.0)) continue;
     std::vector<variable_id> unobserved;
     for (std::size_t i = 0; i < net.size(); ++i) {
-      if (!item.observed.fixes(variable_id(static_cast<variable_id::rep>(i)))) unobserved.emplace_back(i);
+      if (!item.observed.fixes(index_at<variable_id>(i))) unobserved.emplace_back(i);
     }
     const double best = testing::enumerate_maximum(net, unobserved, item.observed);
     SCOPED_TRACE("seed " + std::to_string(seed));
@@ -303,7 +302,7 @@ TEST(engines_test, junction_trees_have_the_running_intersection_property) {
     const auto& cliques = tree.cliques();
     ASSERT_EQ(tree.edges().size() + 1, cliques.size()) << what << ": a tree";
     for (std::size_t v = 0; v < net.size(); ++v) {
-      const variable_id id(static_cast<variable_id::rep>(v));
+      const variable_id id = index_at<variable_id>(v);
       std::size_t holding = 0;
       for (std::size_t item = 0; item < cliques.size(); ++item)
         holding += tree.position(item, id) < cliques[item].variables.size();
@@ -357,13 +356,13 @@ TEST(engines_test, published_networks_agree_engine_with_engine) {
     // Every marginal at once under ten observations equals variable elimination's.
     evidence_set observed;
     for (std::size_t v = 0; v < net.size() && observed.hard.size() < 10; v += 1 + net.size() / 10) {
-      observed.hard.push_back({variable_id(static_cast<variable_id::rep>(v)), state_index(0)});
+      observed.hard.push_back({index_at<variable_id>(v), state_index(0)});
     }
     jt.set_evidence(observed);
     ve.set_evidence(observed);
     std::vector<variable_id> free;
     for (std::size_t v = 0; v < net.size(); ++v) {
-      if (!observed.fixes(variable_id(static_cast<variable_id::rep>(v)))) free.emplace_back(v);
+      if (!observed.fixes(index_at<variable_id>(v))) free.emplace_back(v);
     }
     try {
       const auto all = jt.marginals(free);

@@ -12,8 +12,8 @@
 namespace pgm {
 namespace evidence_reduction_test {
 
-variable_id id(int i) { return variable_id(static_cast<variable_id::rep>(i)); }
-state_index state(int s) { return state_index(static_cast<state_index::rep>(s)); }
+variable_id id(int i) { return index_at<variable_id>(i); }
+state_index state(int s) { return index_at<state_index>(s); }
 
 // a (2 states), b (3), c (2); factors {a, b}, {b, c}, {a}, the last variable fastest.
 markov_network three_variables(double a0b2 = 0.6) {

@@ -22,7 +22,7 @@ namespace markov_engines_test {
 
 using ::testing::HasSubstr;
 
-variable_id id_of(std::size_t i) { return variable_id(static_cast<variable_id::rep>(i)); }
+variable_id id_of(std::size_t i) { return index_at<variable_id>(i); }
 
 std::vector<double> values_of(const posterior& p) { return {p.table.values().begin(), p.table.values().end()}; }
 

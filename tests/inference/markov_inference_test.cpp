@@ -74,7 +74,7 @@ TEST(markov_inference_test, every_task_equals_brute_force_on_random_models) {
         }
       }
       std::vector<variable_id> query;
-      for (std::size_t i = 0; i < model.size(); i += 2) query.push_back(variable_id(static_cast<variable_id::rep>(i)));
+      for (std::size_t i = 0; i < model.size(); i += 2) query.push_back(index_at<variable_id>(i));
       const auto mmap = marginal_map(model, query, observed, options);
       const auto best = testing::brute_force_marginal_map(model, query, fixed);
       EXPECT_NEAR(testing::brute_force_query_value(model, query, mmap, fixed), best, log_tolerance(best));
@@ -128,7 +128,7 @@ TEST(markov_inference_test, a_bayesian_network_answers_as_its_engines_do) {
   EXPECT_NEAR(log_partition(network, observed), reference.log_probability_of_evidence(), 1e-14);
   const auto marginals = all_marginals(network, observed);
   for (std::size_t i = 0; i < network.size(); ++i) {
-    const variable_id id(static_cast<variable_id::rep>(i));
+    const variable_id id = index_at<variable_id>(i);
     if (observed.fixes(id)) continue;
     const variable_id one[] = {id};
     const auto expected = reference.joint(one);
@@ -139,7 +139,7 @@ TEST(markov_inference_test, a_bayesian_network_answers_as_its_engines_do) {
   const auto mpe = reference.mpe({});
   std::size_t k = 0;
   for (std::size_t i = 0; i < network.size(); ++i) {
-    const variable_id id(static_cast<variable_id::rep>(i));
+    const variable_id id = index_at<variable_id>(i);
     if (!observed.fixes(id)) {
       EXPECT_EQ(map[i], mpe.states[k++].value());
     }
@@ -215,7 +215,7 @@ markov_network model_of(const std::vector<std::size_t>& cards, const std::vector
     std::vector<std::size_t> scope_cards;
     std::size_t cells = 1;
     for (auto v : scope) {
-      ids.push_back(variable_id(static_cast<variable_id::rep>(v)));
+      ids.push_back(index_at<variable_id>(v));
       scope_cards.push_back(cards[v]);
       cells *= cards[v];
     }
@@ -234,8 +234,8 @@ markov_network small_valued_model(std::uint64_t seed, double low, double high) {
   for (int i = 0; i < 6; ++i) variables.emplace_back("v" + std::to_string(i), std::vector<std::string>{"0", "1"});
   std::vector<factor_table> factors;
   for (std::size_t f = 0; f < 40; ++f) {
-    std::vector<variable_id> scope{variable_id(static_cast<variable_id::rep>(f % 6))};
-    if (f % 3 != 0) scope.push_back(variable_id(static_cast<variable_id::rep>((f * 5 + 1) % 6)));
+    std::vector<variable_id> scope{index_at<variable_id>(f % 6)};
+    if (f % 3 != 0) scope.push_back(index_at<variable_id>((f * 5 + 1) % 6));
     if (scope.size() == 2 && scope[0] == scope[1]) scope.pop_back();
     std::vector<double> values(std::size_t{1} << scope.size());
     for (auto& v : values) v = std::exp(exponent(engine));
@@ -326,7 +326,7 @@ TEST(markov_inference_test, marginals_from_one_walk_down_equal_each_on_its_own) 
     std::vector<variable_id> every;
     std::vector<variable_id> some;
     for (std::size_t i = 0; i < model.size(); ++i) {
-      every.push_back(variable_id(static_cast<variable_id::rep>(i)));
+      every.push_back(index_at<variable_id>(i));
       if (i % 3 == 1) some.push_back(every.back());
     }
     for (std::uint64_t round = 0; round < 3; ++round) {
@@ -380,8 +380,7 @@ TEST(markov_inference_test, messages_divided_by_zero_are_dropped_when_the_eviden
     evidence_set observed;
     for (std::size_t i = 0; i < fixed.size(); ++i) {
       if (fixed[i] >= 0) {
-        observed.hard.push_back(
-            {variable_id(static_cast<variable_id::rep>(i)), state_index(static_cast<state_index::rep>(fixed[i]))});
+        observed.hard.push_back({index_at<variable_id>(i), index_at<state_index>(fixed[i])});
       }
     }
     kept.set_evidence(observed);
@@ -389,7 +388,7 @@ TEST(markov_inference_test, messages_divided_by_zero_are_dropped_when_the_eviden
     // The x's first: by the time x1 asks for the hub's message, every message into the hub is
     // known, and that message comes from the one belief.
     for (std::size_t i = model.size(); i-- > 0;) {
-      const auto sums = kept.marginal(variable_id(static_cast<variable_id::rep>(i)));
+      const auto sums = kept.marginal(index_at<variable_id>(i));
       const double total = sums[0] + sums[1];
       for (std::size_t s = 0; s < 2; ++s) EXPECT_NEAR(sums[s] / total, truth.marginals[i][s], 1e-12);
     }
@@ -445,7 +444,7 @@ TEST(markov_inference_test, a_users_semiring_runs_through_elimination_and_the_ju
     auto tree = std::make_shared<const junction_tree>(model);
     propagation<min_sum> by_tree(tree, model);
     for (std::size_t i = 0; i < model.size(); ++i) {
-      const variable_id x[] = {variable_id(static_cast<variable_id::rep>(i))};
+      const variable_id x[] = {index_at<variable_id>(i)};
       const auto by_elimination = joint_in<min_sum>(model, x, {});
       const auto from_tree = by_tree.marginal(x[0]);
       for (std::size_t s = 0; s < model.variables()[i].cardinality(); ++s) {
@@ -515,7 +514,7 @@ TEST(markov_inference_test, a_users_own_model_type_runs_through_every_exact_engi
     const auto marginals = all_marginals(model, observed);
     for (std::size_t i = 0; i < model.size(); ++i) {
       if (fixed[i] >= 0) continue;
-      const variable_id x[] = {variable_id(static_cast<variable_id::rep>(i))};
+      const variable_id x[] = {index_at<variable_id>(i)};
       const auto from_ve = by_ve->joint(x);
       const auto from_jt = by_jt.joint(x);
       for (std::size_t s = 0; s < truth.marginals[i].size(); ++s) {
@@ -535,7 +534,7 @@ TEST(markov_inference_test, variable_elimination_answers_two_threads_at_once) {
   variable_elimination engine(network);
   std::vector<std::vector<double>> alone(network.size());
   for (std::size_t i = 0; i < network.size(); ++i) {
-    const variable_id one[] = {variable_id(static_cast<variable_id::rep>(i))};
+    const variable_id one[] = {index_at<variable_id>(i)};
     const auto answer = variable_elimination(network).joint(one);
     alone[i].assign(answer.table.values().begin(), answer.table.values().end());
   }
@@ -543,7 +542,7 @@ TEST(markov_inference_test, variable_elimination_answers_two_threads_at_once) {
   std::vector<std::vector<double>> first(network.size()), second(network.size());
   auto ask = [&](std::vector<std::vector<double>>& into) {
     for (std::size_t i = 0; i < network.size(); ++i) {
-      const variable_id one[] = {variable_id(static_cast<variable_id::rep>(i))};
+      const variable_id one[] = {index_at<variable_id>(i)};
       const auto answer = engine.joint(one);
       into[i].assign(answer.table.values().begin(), answer.table.values().end());
     }

@@ -32,8 +32,7 @@ struct problem {
 problem load(const std::string& task, const std::string& name) {
   problem p{read_uai(folder + task + "/" + name), {}, folder + task + "/" + name};
   const auto samples = parse_uai_evidence(read_model_text(p.path + ".evid"), p.path + ".evid", p.file.model);
-  for (const auto& [v, s] : samples.front())
-    p.observed.hard.push_back({v, state_index(static_cast<state_index::rep>(s))});
+  for (const auto& [v, s] : samples.front()) p.observed.hard.push_back({v, index_at<state_index>(s)});
   return p;
 }
 

@@ -66,7 +66,7 @@ TEST(variable_elimination_test, matches_enumeration_on_random_networks) {
   for (std::uint64_t seed = 1; seed <= 30; ++seed) {
     const auto net = testing::random_network(seed, {.nodes = 9, .max_parents = 3, .min_states = 2, .max_states = 3});
     std::vector<variable_id> nodes;
-    for (std::size_t i = 0; i < net.size(); ++i) nodes.emplace_back(static_cast<variable_id::rep>(i));
+    for (std::size_t i = 0; i < net.size(); ++i) nodes.push_back(index_at<variable_id>(i));
     std::shuffle(nodes.begin(), nodes.end(), random);
     const auto queried = 1 + random() % 3;
     const auto observed = random() % 3;
@@ -74,8 +74,7 @@ TEST(variable_elimination_test, matches_enumeration_on_random_networks) {
     std::vector<observation> e;
     for (std::size_t k = 0; k < observed; ++k) {
       const auto id = nodes[queried + k];
-      e.push_back(
-          {id, state_index(static_cast<state_index::rep>(random() % net.variables()[id.value()].cardinality()))});
+      e.push_back({id, index_at<state_index>(random() % net.variables()[id.value()].cardinality())});
     }
     SCOPED_TRACE("seed " + std::to_string(seed));
     expect_matches_enumeration(net, q, e, elimination_heuristic::min_fill);

@@ -41,7 +41,7 @@ TEST_F(gzip_models, every_format_reads_the_same_network_compressed) {
     const auto read = read_network(compressed);
     ASSERT_EQ(read.size(), network.size()) << extension;
     for (std::size_t i = 0; i < network.size(); ++i) {
-      const variable_id node(static_cast<variable_id::rep>(i));
+      const variable_id node = index_at<variable_id>(i);
       const auto a = read.table(node).values();
       const auto b = network.table(node).values();
       EXPECT_TRUE(std::equal(a.begin(), a.end(), b.begin(), b.end())) << extension;

@@ -72,7 +72,7 @@ TEST(uai_test, a_bayesian_network_round_trips_through_bayes) {
   const auto back = to_bayesian_network(file, "child.uai");
   ASSERT_EQ(back.size(), network.size());
   for (std::size_t i = 0; i < network.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     EXPECT_EQ(back.factor(i).values(), network.factor(i).values());
     EXPECT_EQ(back.factor_scope(i), network.factor_scope(i));
     EXPECT_EQ(back.variables()[i].name(), "v" + std::to_string(i));

@@ -19,7 +19,7 @@ namespace {
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
-variable_id id(std::size_t i) { return variable_id(static_cast<variable_id::rep>(i)); }
+variable_id id(std::size_t i) { return index_at<variable_id>(i); }
 
 dag make_dag(std::vector<std::string> names, const std::vector<named_edge>& edges) {
   dag g(names);

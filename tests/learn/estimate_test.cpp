@@ -136,7 +136,7 @@ TEST(estimate_test, weighted_prior_identities_on_random_networks) {
     const auto data = sample(network, 400, seed);
     const auto empty = data.slice(0, 0);
     for (std::size_t i = 0; i < network.size(); ++i) {
-      const variable_id node(static_cast<variable_id::rep>(i));
+      const variable_id node = index_at<variable_id>(i);
       const auto counts = count_node(network.structure(), node, data);
       const auto f = random_prior(counts, engine);
       // w = 0 is MLE.

@@ -69,7 +69,7 @@ bayesian_network brute_force_iteration(const bayesian_network& network, const da
   std::vector<std::vector<double>> counts(n);
   for (std::size_t i = 0; i < n; ++i) counts[i].assign(network.tables()[i].size(), alpha);
   std::vector<variable_id> all;
-  for (std::size_t i = 0; i < n; ++i) all.emplace_back(static_cast<variable_id::rep>(i));
+  for (std::size_t i = 0; i < n; ++i) all.push_back(index_at<variable_id>(i));
   std::vector<std::size_t> cards;
   for (const auto& v : network.variables()) cards.push_back(v.cardinality());
   for (std::size_t row = 0; row < data.rows(); ++row) {

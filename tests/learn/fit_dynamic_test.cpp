@@ -89,7 +89,7 @@ TEST(fit_dynamic_test, tied_tables_count_every_step_of_every_episode) {
       for (std::size_t i = 0; i < model.size(); ++i) {
         SCOPED_TRACE("seed " + std::to_string(seed) + " alpha " + std::to_string(alpha) + " variable " +
                      model.variables()[i].name());
-        const auto& first = fitted.initial().table(variable_id(static_cast<variable_id::rep>(i)));
+        const auto& first = fitted.initial().table(index_at<variable_id>(i));
         expect_dirichlet_estimate(first, hand_counts(first, model, data, true), alpha);
         const auto& transition = fitted.transition_tables()[i];
         expect_dirichlet_estimate(transition, hand_counts(transition, model, data, false), alpha);
@@ -107,7 +107,7 @@ TEST(fit_dynamic_test, missing_values_leave_out_only_the_families_they_are_in) {
     const auto fitted = fit_dynamic(structure_of_model(model), data.data);
     for (std::size_t i = 0; i < model.size(); ++i) {
       SCOPED_TRACE("seed " + std::to_string(seed) + " variable " + model.variables()[i].name());
-      const auto& first = fitted.initial().table(variable_id(static_cast<variable_id::rep>(i)));
+      const auto& first = fitted.initial().table(index_at<variable_id>(i));
       expect_dirichlet_estimate(first, hand_counts(first, model, data, true), 0.0);
       const auto& transition = fitted.transition_tables()[i];
       expect_dirichlet_estimate(transition, hand_counts(transition, model, data, false), 0.0);

@@ -36,7 +36,7 @@ dataset parse_discrete(const std::string& text, missing_values missing = {}) {
 std::vector<named_edge> edges_of(const network_structure& structure) {
   std::vector<named_edge> edges;
   for (std::size_t i = 0; i < structure.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     for (const auto& parent : structure.parent_variables(node))
       edges.push_back({parent.name(), structure.at(node).name()});
   }
@@ -46,7 +46,7 @@ std::vector<named_edge> edges_of(const network_structure& structure) {
 void expect_same_tables(const bayesian_network& a, const bayesian_network& b) {
   ASSERT_EQ(a.size(), b.size());
   for (std::size_t i = 0; i < a.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     EXPECT_EQ(a.structure().at(node), b.structure().at(node));
     const auto values_a = a.table(node).values();
     const auto values_b = b.table(node).values();

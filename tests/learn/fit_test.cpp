@@ -46,7 +46,7 @@ TEST(fit_test, mle_equals_an_independent_naive_fit_on_random_networks) {
     const auto data = sample(truth, 3000, seed + 100);
     const auto fitted = fit(truth.structure(), data);
     for (std::size_t i = 0; i < truth.size(); ++i) {
-      const variable_id node(static_cast<variable_id::rep>(i));
+      const variable_id node = index_at<variable_id>(i);
       const auto expected = naive_mle(data, truth.structure(), node);
       const auto got = fitted.table(node).values();
       ASSERT_EQ(got.size(), expected.size());
@@ -59,7 +59,7 @@ TEST(fit_test, converges_to_the_generating_network) {
   const auto truth = testing::random_network(42, {.nodes = 6, .max_parents = 2, .max_states = 3});
   const auto fitted = fit(truth.structure(), sample(truth, 400000, 7));
   for (std::size_t i = 0; i < truth.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     const auto a = truth.table(node).values();
     const auto b = fitted.table(node).values();
     for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k], b[k], 0.02);

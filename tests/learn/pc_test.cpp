@@ -50,7 +50,7 @@ bayesian_network network(const std::vector<std::string>& names, const std::vecto
   network_structure s(variables, edges);
   std::vector<cpt<double>> tables;
   for (std::size_t i = 0; i < variables.size(); ++i) {
-    tables.push_back(copy_table(variables[i], s.parent_variables(variable_id(static_cast<variable_id::rep>(i)))));
+    tables.push_back(copy_table(variables[i], s.parent_variables(index_at<variable_id>(i))));
   }
   return {s, tables};
 }
@@ -244,7 +244,7 @@ bayesian_network stacking_like() {
   network_structure s(variables, edges);
   std::vector<cpt<double>> tables;
   for (std::size_t i = 0; i < variables.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     const auto parents = s.parent_variables(node);
     cpt<double> shape(variables[i], parents);
     std::vector<double> values(shape.size());

@@ -322,7 +322,7 @@ void expect_same_tables(const nlohmann::json& theirs, const bayesian_network& ne
     ASSERT_EQ(rows.size(), table.configurations()) << what;
     std::size_t differ = 0;
     for (std::size_t u = 0; u < table.configurations(); ++u) {
-      const auto column = table.column(config_index(static_cast<config_index::rep>(u)));
+      const auto column = table.column(index_at<config_index>(u));
       for (std::size_t x = 0; x < column.size(); ++x) differ += rows[u][x].get<double>() != column[x];
     }
     EXPECT_EQ(differ, 0u) << what << ": " << table.child().name();

@@ -27,8 +27,7 @@ inline std::vector<double> enumerate_joint(const bayesian_network& network, std:
   std::vector<double> out(out_size, 0.0);
   std::vector<std::size_t> state(n, 0);
   std::vector<std::vector<variable_id>> parents(n);
-  for (std::size_t i = 0; i < n; ++i)
-    parents[i] = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
+  for (std::size_t i = 0; i < n; ++i) parents[i] = network.graph().parents(index_at<variable_id>(i));
   while (true) {
     bool consistent = true;
     for (const auto& o : observed) consistent = consistent && state[o.variable.value()] == o.state.value();
@@ -64,8 +63,7 @@ void enumerate_states(const bayesian_network& network, const evidence_set& obser
   std::vector<std::size_t> cards(n);
   for (std::size_t i = 0; i < n; ++i) cards[i] = network.variables()[i].cardinality();
   std::vector<std::vector<variable_id>> parents(n);
-  for (std::size_t i = 0; i < n; ++i)
-    parents[i] = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
+  for (std::size_t i = 0; i < n; ++i) parents[i] = network.graph().parents(index_at<variable_id>(i));
   std::vector<std::size_t> state(n, 0);
   while (true) {
     bool consistent = true;
@@ -75,7 +73,7 @@ void enumerate_states(const bayesian_network& network, const evidence_set& obser
     if (consistent) {
       p = 1.0;
       for (std::size_t i = 0; i < n; ++i) {
-        if (observed.intervenes(variable_id(static_cast<variable_id::rep>(i)))) continue;
+        if (observed.intervenes(index_at<variable_id>(i))) continue;
         const auto& table = network.tables()[i];
         std::size_t u = 0;
         for (auto parent : parents[i]) u = u * cards[parent.value()] + state[parent.value()];

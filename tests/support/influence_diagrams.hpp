@@ -92,7 +92,7 @@ struct joint_term {
 inline joint_term term_at(const influence_diagram& d, const std::vector<std::size_t>& x) {
   joint_term t{1, 0};
   for (std::size_t i = 0; i < d.size(); ++i) {
-    const auto id = variable_id(static_cast<variable_id::rep>(i));
+    const auto id = index_at<variable_id>(i);
     if (d.is_decision(id)) continue;
     std::size_t column = 0;
     for (const auto p : d.parents(id)) column = column * d.at(p).cardinality() + x[p.value()];

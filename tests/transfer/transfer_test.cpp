@@ -62,9 +62,8 @@ TEST_F(two_stack, direct_reads_the_first_cube_for_all_625_parameters) {
   const auto result = direct_replacement{}(problem);
   ASSERT_EQ(result.table().configurations(), 625U);
   for (std::size_t u = 0; u < 625; ++u) {
-    const auto codes = result.table().parent_codes(config_index(static_cast<config_index::rep>(u)));
-    EXPECT_EQ(result.table().column(config_index(static_cast<config_index::rep>(u)))[1],
-              success(prior, {codes[0], codes[1]}));
+    const auto codes = result.table().parent_codes(index_at<config_index>(u));
+    EXPECT_EQ(result.table().column(index_at<config_index>(u))[1], success(prior, {codes[0], codes[1]}));
   }
   EXPECT_EQ(result.describe_sources(result.table().configuration(std::vector<std::size_t>{2, 3, 4, 0})),
             "xOff1=2, yOff1=3");
@@ -73,7 +72,7 @@ TEST_F(two_stack, direct_reads_the_first_cube_for_all_625_parameters) {
 TEST_F(two_stack, cross_reads_the_second_cube_as_the_first) {
   const auto result = cross_replacement{}(problem);
   for (std::size_t u = 0; u < 625; ++u) {
-    const config_index c(static_cast<config_index::rep>(u));
+    const config_index c = index_at<config_index>(u);
     const auto codes = result.table().parent_codes(c);
     EXPECT_EQ(result.table().column(c)[1], success(prior, {codes[2], codes[3]}));
     EXPECT_EQ(result.via(c), replacement::cross);
@@ -84,7 +83,7 @@ TEST_F(two_stack, minimal_takes_the_smaller_success_and_says_which) {
   const auto result = minimal_replacement{}(problem);
   std::size_t direct_wins = 0;
   for (std::size_t u = 0; u < 625; ++u) {
-    const config_index c(static_cast<config_index::rep>(u));
+    const config_index c = index_at<config_index>(u);
     const auto codes = result.table().parent_codes(c);
     const double d = success(prior, {codes[0], codes[1]});
     const double x = success(prior, {codes[2], codes[3]});
@@ -265,11 +264,11 @@ TEST(transfer_test, weighted_transfer_identities_on_random_networks) {
     use_transferred_priors(weighted, priors, five);
     const auto fitted = fit(structure, data, weighted);
     for (std::size_t i = 0; i < structure.size(); ++i) {
-      const variable_id id(static_cast<variable_id::rep>(i));
+      const variable_id id = index_at<variable_id>(i);
       const auto counts = count_node(structure, id, data);
       const auto& table = fitted.table(id);
       for (std::size_t u = 0; u < table.configurations(); ++u) {
-        const config_index c(static_cast<config_index::rep>(u));
+        const config_index c = index_at<config_index>(u);
         double sum = 0;
         for (double p : table.column(c)) sum += p;
         EXPECT_NEAR(sum, 1.0, 1e-12);

@@ -20,7 +20,7 @@ struct blend_replacement {
     std::vector<pgm::prior_term> terms;
     std::vector<std::uint32_t> counts;
     for (std::size_t u = 0; u < shape.configurations(); ++u) {
-      const pgm::config_index c(static_cast<pgm::config_index::rep>(u));
+      const auto c = pgm::index_at<pgm::config_index>(u);
       const auto d = direct.table().column(c), x = cross.table().column(c);
       for (std::size_t s = 0; s < d.size(); ++s) values[u * d.size() + s] = 0.5 * d[s] + 0.5 * x[s];
       // Both candidates' u′ at half their weight, so explanations show where each half came from.

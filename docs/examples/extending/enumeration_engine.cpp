@@ -35,7 +35,7 @@ pgm::posterior enumeration_engine::joint(std::span<const pgm::variable_id> query
       for (std::size_t i = 0; i < n; ++i) {
         const auto& table = net.tables()[i];
         std::size_t u = 0;
-        for (auto parent : net.graph().parents(pgm::variable_id(static_cast<pgm::variable_id::rep>(i)))) {
+        for (auto parent : net.graph().parents(pgm::index_at<pgm::variable_id>(i))) {
           u = u * net.variables()[parent.value()].cardinality() + state[parent.value()];
         }
         p *= table.values()[u * table.child_cardinality() + state[i]];

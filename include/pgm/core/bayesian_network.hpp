@@ -50,7 +50,7 @@ class bayesian_network {
   /// node) in graph order, the node fastest.
   [[nodiscard]] std::size_t factor_count() const noexcept { return size(); }
   [[nodiscard]] std::vector<variable_id> factor_scope(std::size_t f) const {
-    const variable_id node(static_cast<variable_id::rep>(f));
+    const variable_id node = index_at<variable_id>(f);
     auto scope = graph().parents(node);
     scope.push_back(node);
     return scope;

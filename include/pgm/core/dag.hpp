@@ -88,7 +88,7 @@ class dag {
  private:
   // The one place where pgm ids and Boost vertex descriptors meet.
   static vertex_type to_vertex(variable_id node) noexcept { return node.value(); }
-  static variable_id to_id(vertex_type vertex) noexcept { return variable_id(static_cast<variable_id::rep>(vertex)); }
+  static variable_id to_id(vertex_type vertex) noexcept { return index_at<variable_id>(vertex); }
   PGM_DECL void check(variable_id node) const;
 
   graph_type graph_;

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <ranges>
 
 namespace pgm {
 
@@ -31,6 +32,22 @@ using variable_id = strong_index<struct variable_id_tag, std::uint32_t>;
 using state_index = strong_index<struct state_index_tag, std::uint32_t>;
 /// The mixed-radix index of one configuration of a node's parents.
 using config_index = strong_index<struct config_index_tag, std::size_t>;
+
+/// The index at position `i` of a container or a loop: the one conversion from a position to a
+/// strong index (a network's variables, a variable's states, a table's configurations).
+template <class Index>
+[[nodiscard]] constexpr Index index_at(std::size_t i) noexcept {
+  return Index(static_cast<typename Index::rep>(i));
+}
+
+/// The indices 0, 1, …, n − 1, for range-for: `for (auto v : indices<state_index>(states))`.
+template <class Index>
+[[nodiscard]] constexpr auto indices(std::size_t n) {
+  return std::views::iota(std::size_t{0}, n) | std::views::transform(index_at<Index>);
+}
+
+/// The ids of a model's n variables: `for (auto v : ids(model.size()))`.
+[[nodiscard]] constexpr auto ids(std::size_t n) { return indices<variable_id>(n); }
 
 }  // namespace pgm
 

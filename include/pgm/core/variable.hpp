@@ -74,7 +74,7 @@ class variable {
   [[nodiscard]] state_index bin(double value) const {
     const auto inner_begin = edges_.begin() + 1;
     const auto inner_end = edges_.end() - 1;
-    return state_index(static_cast<state_index::rep>(std::upper_bound(inner_begin, inner_end, value) - inner_begin));
+    return index_at<state_index>(std::upper_bound(inner_begin, inner_end, value) - inner_begin);
   }
 
   [[nodiscard]] PGM_DECL variable with_tags(semantic_tags tags) const;

@@ -69,8 +69,7 @@ template <InferenceEngine Engine>
     // digits); the answer is the normalized entry, as the engines read the column.
     const auto column = table.configuration(codes);
     double sum = 0.0;
-    for (std::size_t s = 0; s < table.child().cardinality(); ++s)
-      sum += table(state_index(static_cast<state_index::rep>(s)), column);
+    for (std::size_t s = 0; s < table.child().cardinality(); ++s) sum += table(index_at<state_index>(s), column);
     return table(state, column) / sum;
   }
   const evidence_scope scope(engine, {observed, {}});

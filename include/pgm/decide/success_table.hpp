@@ -129,7 +129,7 @@ template <InferenceEngine Engine>
       const auto k = set_positions[i];
       codes[k] = rem % set_cards[i];
       rem /= set_cards[i];
-      scenario.intervened.push_back({network.id(given[k]), state_index(static_cast<state_index::rep>(codes[k]))});
+      scenario.intervened.push_back({network.id(given[k]), index_at<state_index>(codes[k])});
     }
     scope.replace(std::move(scenario));
     posterior joint;

@@ -46,8 +46,8 @@ template <GraphicalModel M>
   std::vector<variable> variables;
   for (std::size_t i = 0; i < model.size(); ++i) {
     if (state[i] != kept_out) continue;
-    renumbered[i] = variable_id(static_cast<variable_id::rep>(variables.size()));
-    reduced.original.push_back(variable_id(static_cast<variable_id::rep>(i)));
+    renumbered[i] = index_at<variable_id>(variables.size());
+    reduced.original.push_back(index_at<variable_id>(i));
     variables.push_back(model.variables()[i]);
   }
   if (variables.empty()) return std::nullopt;

@@ -127,7 +127,7 @@ template <Semiring S>
 template <Semiring S, GraphicalModel M>
 [[nodiscard]] factor_of<S> model_factor(const M& model, std::size_t f) {
   if constexpr (std::same_as<M, bayesian_network>) {
-    return table_factor<S>(model, variable_id(static_cast<variable_id::rep>(f)));
+    return table_factor<S>(model, index_at<variable_id>(f));
   } else {
     const auto& table = model.factor(f);
     std::vector<typename S::value_type> values;
@@ -151,7 +151,7 @@ template <GraphicalModel M>
 [[nodiscard]] std::vector<variable_id> unobserved(const M& model, const evidence_set& observed) {
   std::vector<variable_id> ids;
   for (std::size_t i = 0; i < model.size(); ++i) {
-    const variable_id id(static_cast<variable_id::rep>(i));
+    const variable_id id = index_at<variable_id>(i);
     if (!observed.fixes(id)) ids.push_back(id);
   }
   return ids;
@@ -241,7 +241,7 @@ template <GraphicalModel M, class MaximumIn>
     states = std::move(logs.first);
     log_joint = logs.second;
   }
-  for (auto s : states) result.states.push_back(state_index(static_cast<state_index::rep>(s)));
+  for (auto s : states) result.states.push_back(index_at<state_index>(s));
   result.log_joint_probability = log_joint;
   result.joint_probability = std::exp(log_joint);
   result.log_probability = log_joint - log_evidence;

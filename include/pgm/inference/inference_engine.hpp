@@ -132,7 +132,7 @@ template <InferenceEngine E>
 [[nodiscard]] std::vector<posterior> marginals(E& engine) {
   std::vector<variable_id> nodes;
   for (std::size_t i = 0; i < detail::model_of(engine).size(); ++i) {
-    const variable_id id(static_cast<variable_id::rep>(i));
+    const variable_id id = index_at<variable_id>(i);
     if (!engine.evidence().fixes(id)) nodes.push_back(id);
   }
   return detail::marginals_of(engine, nodes);

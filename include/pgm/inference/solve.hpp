@@ -193,7 +193,7 @@ void check_marginal_map_size(const M& model, std::span<const variable_id> query,
   std::vector<char> role(model.size(), 0);  // 0 summed, 1 maximized, 2 fixed
   for (auto id : query) role[id.value()] = 1;
   for (std::size_t i = 0; i < model.size(); ++i) {
-    if (observed.fixes(variable_id(static_cast<variable_id::rep>(i)))) role[i] = 2;
+    if (observed.fixes(index_at<variable_id>(i))) role[i] = 2;
   }
   std::vector<std::vector<variable_id>> scopes;
   for (auto scope : scopes_of(model)) {
@@ -404,7 +404,7 @@ template <GraphicalModel M>
   std::vector<std::vector<double>> result(model.size());
   std::vector<variable_id> free;
   for (std::size_t i = 0; i < model.size(); ++i) {
-    const variable_id id(static_cast<variable_id::rep>(i));
+    const variable_id id = index_at<variable_id>(i);
     if (!observed.fixes(id)) free.push_back(id);
   }
   if (options.engine == solve_engine::gibbs) {
@@ -484,7 +484,7 @@ template <GraphicalModel M>
       r.engine = "ve";
       std::vector<variable_id> free;
       for (std::size_t i = 0; i < model.size(); ++i) {
-        const variable_id id(static_cast<variable_id::rep>(i));
+        const variable_id id = index_at<variable_id>(i);
         if (!observed.fixes(id)) free.push_back(id);
       }
       const auto [chosen, value] = maximum_in<S>(model, free, observed, options.heuristic);

@@ -80,13 +80,13 @@ template <Semiring S, GraphicalModel M, class TableOf>
   std::vector<bool> covered(model.size(), DirectedModel<M>);
   for (std::size_t f = 0; f < model.factor_count(); ++f) {
     if constexpr (DirectedModel<M>) {
-      const variable_id node(static_cast<variable_id::rep>(f));
+      const variable_id node = index_at<variable_id>(f);
       if (!relevant[f] || observed.intervenes(node)) continue;
     }
     if constexpr (DirectedModel<M>) {
       if (model.tables()[f].is_sparse()) {
         // Reduced as it is read: a sparse family past the dense limit is never made whole.
-        const variable_id node(static_cast<variable_id::rep>(f));
+        const variable_id node = index_at<variable_id>(f);
         auto reduced = reduced_table_factor<S>(model, node, fixed);
         for (auto id : model.factor_scope(f)) covered[id.value()] = true;
         factors.push_back(std::make_shared<const factor_of<S>>(std::move(reduced)));
@@ -106,7 +106,7 @@ template <Semiring S, GraphicalModel M, class TableOf>
   eliminate.clear();
   for (std::size_t i = 0; i < model.size(); ++i) {
     if (!relevant[i] || fixed[i] >= 0) continue;
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     if (!covered[i]) {
       const auto card = model.variables()[i].cardinality();
       factors.push_back(std::make_shared<const factor_of<S>>(std::vector<variable_id>{node},

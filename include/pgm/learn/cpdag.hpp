@@ -94,7 +94,7 @@ class cpdag {
   [[nodiscard]] std::vector<variable_id> select(variable_id a, Predicate keep) const {
     std::vector<variable_id> result;
     for (std::size_t b = 0; b < size(); ++b) {
-      const variable_id node(static_cast<variable_id::rep>(b));
+      const variable_id node = index_at<variable_id>(b);
       if (node != a && keep(node)) result.push_back(node);
     }
     return result;
@@ -103,7 +103,7 @@ class cpdag {
   void for_pairs(Visit visit) const {
     for (std::size_t a = 0; a < size(); ++a) {
       for (std::size_t b = 0; b < size(); ++b) {
-        if (a != b) visit(variable_id(static_cast<variable_id::rep>(a)), variable_id(static_cast<variable_id::rep>(b)));
+        if (a != b) visit(index_at<variable_id>(a), index_at<variable_id>(b));
       }
     }
   }

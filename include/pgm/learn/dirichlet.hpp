@@ -71,7 +71,7 @@ struct weighted_pseudo_counts {
 
   [[nodiscard]] double column(std::size_t) const noexcept { return weight; }
   [[nodiscard]] scaled cells(std::size_t u) const {
-    return {prior->column(config_index(static_cast<config_index::rep>(u))), weight, floor,
+    return {prior->column(index_at<config_index>(u)), weight, floor,
             floor / static_cast<double>(prior->child_cardinality())};
   }
 };

@@ -167,7 +167,7 @@ class em_runner {
         families_(family_members(structure)),
         rows_(data.rows()) {
     for (std::size_t i = 0; i < structure.size(); ++i) {
-      const variable_id node(static_cast<variable_id::rep>(i));
+      const variable_id node = index_at<variable_id>(i);
       require_dense(structure, node);
       alpha_.push_back(pseudo_counts_of(prior_of(node), structure.at(node), structure.parent_variables(node)));
       latent_family_.push_back(std::any_of(families_[i].begin(), families_[i].end(), [&](variable_id member) {
@@ -248,8 +248,7 @@ class em_runner {
   [[nodiscard]] bayesian_network maximize(const std::vector<expected_count_table>& counts) const {
     std::vector<cpt<double>> tables;
     for (std::size_t i = 0; i < counts.size(); ++i) {
-      tables.push_back(
-          estimate(counts[i], prior_of(variable_id(static_cast<variable_id::rep>(i))), dense_estimation()));
+      tables.push_back(estimate(counts[i], prior_of(index_at<variable_id>(i)), dense_estimation()));
     }
     return bayesian_network(*structure_, std::move(tables));
   }
@@ -372,7 +371,7 @@ class em_runner {
     evidence_set observed;
     for (std::size_t i = 0; i < values.size(); ++i) {
       if (values[i] != observed_patterns::absent) {
-        observed.hard.push_back({variable_id(static_cast<variable_id::rep>(i)), state_index(values[i])});
+        observed.hard.push_back({index_at<variable_id>(i), state_index(values[i])});
       }
     }
     engine.set_evidence(std::move(observed));

@@ -62,7 +62,7 @@ template <class CountsOf>
   std::vector<cpt<double>> tables;
   tables.reserve(structure.size());
   for (std::size_t i = 0; i < structure.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     const auto& counts = counts_of(node);
     const auto own = options.node_priors.find(structure.at(node).name());
     tables.push_back(

@@ -63,7 +63,7 @@ template <class Count>
   result.rows = rows;
   result.estimation = options.estimation;
   for (std::size_t i = 0; i < structure.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     const auto& child = structure.at(node);
     const auto own = options.node_priors.find(child.name());
     const auto& prior = own != options.node_priors.end() ? own->second : options.prior;

@@ -48,7 +48,7 @@ class separation_sets {
 
 namespace detail {
 
-inline variable_id node(std::size_t i) { return variable_id(static_cast<variable_id::rep>(i)); }
+inline variable_id node(std::size_t i) { return index_at<variable_id>(i); }
 
 /// Orients a - b into a -> b unless that closes a directed cycle; records a conflict then.
 PGM_DECL bool orient_if_acyclic(cpdag& graph, variable_id a, variable_id b, const char* why,

@@ -183,7 +183,7 @@ template <row_source Source>
   }
   auto options = request.options;
   for (std::size_t i = 0; i < structure.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     const auto parents = structure.parent_variables(node);
     const bool latent_family = latent_named(request, structure.at(node).name()) ||
                                std::any_of(parents.begin(), parents.end(), [&](const variable& p) {
@@ -274,7 +274,7 @@ template <family_source Source>
   // The counts under the structure's variables, which may carry intervals and tags.
   std::vector<count_table> counts;
   for (std::size_t i = 0; i < structure.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     auto parents = structure.parent_variables(node);
     const auto& family = counted.families.at(i);
     bool same_family = family.child().name() == structure.at(node).name() && family.parents().size() == parents.size();

@@ -142,14 +142,14 @@ class engine_conformance : public ::testing::TestWithParam<engine_case> {
   template <GraphicalModel M>
   [[nodiscard]] static evidence_set draw_evidence(const M& model, std::mt19937_64& random) {
     std::vector<variable_id> order;
-    for (std::size_t i = 0; i < model.size(); ++i) order.emplace_back(static_cast<variable_id::rep>(i));
+    for (std::size_t i = 0; i < model.size(); ++i) order.push_back(index_at<variable_id>(i));
     std::shuffle(order.begin(), order.end(), random);
     evidence_set observed;
     std::size_t next = 0;
     const auto cardinality = [&](variable_id v) { return model.variables()[v.value()].cardinality(); };
     for (auto k = random() % 3; k > 0; --k, ++next) {
       const auto v = order[next];
-      observed.hard.push_back({v, state_index(static_cast<state_index::rep>(random() % cardinality(v)))});
+      observed.hard.push_back({v, index_at<state_index>(random() % cardinality(v))});
     }
     if (random() % 2 == 0) {
       const auto v = order[next];

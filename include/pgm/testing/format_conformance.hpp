@@ -76,7 +76,7 @@ class format_conformance : public ::testing::TestWithParam<format_case> {
     }
     ASSERT_EQ(again.size(), net.size());
     for (std::size_t i = 0; i < net.size(); ++i) {
-      const variable_id v(static_cast<variable_id::rep>(i));
+      const variable_id v = index_at<variable_id>(i);
       EXPECT_EQ(again.variables()[i].cardinality(), net.variables()[i].cardinality()) << i;
       EXPECT_EQ(again.graph().parents(v), net.graph().parents(v)) << i;
       EXPECT_TRUE(std::ranges::equal(again.tables()[i].values(), net.tables()[i].values())) << i;

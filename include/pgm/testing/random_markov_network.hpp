@@ -51,7 +51,7 @@ inline markov_network random_markov_network(std::uint64_t seed, const random_mar
     std::vector<std::size_t> scope_cards;
     std::size_t cells = 1;
     for (std::size_t k = 0; k < arity; ++k) {
-      scope.push_back(variable_id(static_cast<variable_id::rep>(order[k])));
+      scope.push_back(index_at<variable_id>(order[k]));
       scope_cards.push_back(cards[order[k]]);
       cells *= cards[order[k]];
     }
@@ -171,8 +171,7 @@ inline evidence_set random_hard_evidence(const markov_network& model, std::uint6
     if (engine() % 4 != 0) continue;
     const auto state = engine() % model.variables()[i].cardinality();
     fixed[i] = static_cast<long>(state);
-    observed.hard.push_back(
-        {variable_id(static_cast<variable_id::rep>(i)), state_index(static_cast<state_index::rep>(state))});
+    observed.hard.push_back({index_at<variable_id>(i), index_at<state_index>(state)});
   }
   return observed;
 }

@@ -44,7 +44,7 @@ inline bayesian_network random_network(std::uint64_t seed, const random_network_
   }
   std::vector<cpt<double>> tables;
   for (std::size_t i = 0; i < options.nodes; ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     const auto parent_variables = structure.parent_variables(node);
     cpt<double> shape(variables[i], parent_variables);
     std::vector<double> values(shape.size());

@@ -166,7 +166,7 @@ TEST_P(strategy_conformance, priors_are_distributions_in_the_target_shape) {
     EXPECT_EQ(table.parents(), c.parents);
     for (std::size_t u = 0; u < table.configurations(); ++u) {
       double sum = 0.0;
-      for (double p : table.column(config_index(static_cast<config_index::rep>(u)))) {
+      for (double p : table.column(index_at<config_index>(u))) {
         EXPECT_TRUE(p >= 0.0 && p <= 1.0) << "configuration " << u << ": " << p;
         sum += p;
       }
@@ -181,7 +181,7 @@ TEST_P(strategy_conformance, each_column_is_the_mixture_its_sources_name) {
     EXPECT_EQ(prior.prior_parents(), source_table.parents());
     const auto& table = prior.table();
     for (std::size_t u = 0; u < table.configurations(); ++u) {
-      const config_index target(static_cast<config_index::rep>(u));
+      const config_index target = index_at<config_index>(u);
       const auto sources = prior.sources(target);
       ASSERT_FALSE(sources.empty()) << "configuration " << u;
       std::vector<double> mixture(table.child_cardinality(), 0.0);
@@ -190,7 +190,7 @@ TEST_P(strategy_conformance, each_column_is_the_mixture_its_sources_name) {
         ASSERT_LT(term.configuration, source_table.configurations()) << "configuration " << u;
         EXPECT_GT(term.weight, 0.0) << "configuration " << u;
         weights += term.weight;
-        const auto column = source_table.column(config_index(static_cast<config_index::rep>(term.configuration)));
+        const auto column = source_table.column(index_at<config_index>(term.configuration));
         for (std::size_t x = 0; x < mixture.size(); ++x) mixture[x] += term.weight * column[x];
       }
       EXPECT_NEAR(weights, 1.0, 1e-12) << "configuration " << u;
@@ -207,7 +207,7 @@ TEST_P(strategy_conformance, the_same_problem_gives_the_same_prior) {
     const auto again = strategy(problem);
     EXPECT_EQ(again.table(), prior.table());
     for (std::size_t u = 0; u < prior.table().configurations(); ++u) {
-      const config_index c(static_cast<config_index::rep>(u));
+      const config_index c = index_at<config_index>(u);
       EXPECT_TRUE(std::ranges::equal(again.sources(c), prior.sources(c))) << "configuration " << u;
     }
   });

@@ -8,7 +8,7 @@ namespace pgm::cli {
 
 variable_id template_id(const dynamic_network& model, const std::string& name, const std::string& where) {
   for (std::size_t i = 0; i < model.size(); ++i) {
-    if (model.variables()[i].name() == name) return variable_id(static_cast<variable_id::rep>(i));
+    if (model.variables()[i].name() == name) return index_at<variable_id>(i);
   }
   std::vector<std::string> names;
   for (const auto& v : model.variables()) names.push_back(v.name());
@@ -51,7 +51,7 @@ std::vector<evidence_set> read_episode(const dynamic_network& model, const std::
     const auto& column = data.discrete(name);
     for (std::size_t r = 0; r < data.rows(); ++r) {
       if (!column.is_missing(r)) {
-        steps[r].hard.push_back({id, state_index(static_cast<state_index::rep>(column.code(r)))});
+        steps[r].hard.push_back({id, index_at<state_index>(column.code(r))});
       }
     }
   }

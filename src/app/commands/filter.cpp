@@ -72,7 +72,7 @@ void write_most_probable(const dynamic_network& model, const most_probable_steps
   table << "t,variable,state\n";
   for (std::size_t t = 0; t < best.states.size(); ++t) {
     for (std::size_t i = 0; i < model.size(); ++i) {
-      if (!asked[i] || steps[t].fixes(variable_id(static_cast<variable_id::rep>(i)))) continue;
+      if (!asked[i] || steps[t].fixes(index_at<variable_id>(i))) continue;
       const auto& v = model.variables()[i];
       table << t << ',' << text::csv_escape(v.name(), ',') << ','
             << text::csv_escape(v.states()[best.states[t][i]], ',') << '\n';
@@ -115,7 +115,7 @@ void run_filter(const filter_arguments& args) {
     const evidence_set none;
     const auto& here = t < steps.size() ? steps[t] : none;
     for (std::size_t i = 0; i < model.size(); ++i) {
-      const variable_id id(static_cast<variable_id::rep>(i));
+      const variable_id id = index_at<variable_id>(i);
       if (!asked[i] || here.fixes(id)) continue;
       const auto& v = model.variables()[i];
       for (std::size_t s = 0; s < v.cardinality(); ++s) {

@@ -62,7 +62,7 @@ evidence_set evidence_of(const solve_arguments& args, const markov_network& mode
          std::to_string(args.evidence_sample) + " (--evidence-sample)");
   }
   for (const auto& [variable, state] : samples[args.evidence_sample]) {
-    observed.hard.push_back({variable, state_index(static_cast<state_index::rep>(state))});
+    observed.hard.push_back({variable, index_at<state_index>(state)});
   }
   return observed;
 }

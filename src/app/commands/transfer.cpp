@@ -86,7 +86,7 @@ void run_transfer(const transfer_command_arguments& args) {
   if (args.explain) {
     const auto& table = transferred.table();
     for (std::size_t u = 0; u < table.configurations(); ++u) {
-      const config_index c(static_cast<config_index::rep>(u));
+      const config_index c = index_at<config_index>(u);
       const auto codes = table.parent_codes(c);
       std::string assignment;
       for (std::size_t k = 0; k < codes.size(); ++k) {

@@ -158,10 +158,10 @@ uai_model parse_uai(std::string_view text, const std::string& source) {
     for (auto& v : scope) {
       const auto id = in.count("a variable of factor " + std::to_string(f) + "'s scope", 0, n == 0 ? 0 : n - 1);
       if (n == 0) in.fail("factor " + std::to_string(f) + " names a variable, but the model has none");
-      if (std::find(scope.data(), &v, variable_id(static_cast<variable_id::rep>(id))) != &v) {
+      if (std::find(scope.data(), &v, index_at<variable_id>(id)) != &v) {
         in.fail("factor " + std::to_string(f) + " names variable " + std::to_string(id) + " twice");
       }
-      v = variable_id(static_cast<variable_id::rep>(id));
+      v = index_at<variable_id>(id);
       cells = detail::saturating_multiply(cells, cards[id]);
     }
     if (cells > max_table_cells) {
@@ -293,7 +293,7 @@ std::vector<std::vector<std::pair<variable_id, std::size_t>>> parse_uai_evidence
       seen[v] = true;
       const auto card = model.variables()[v].cardinality();
       const auto s = in.count("the state of variable " + std::to_string(v), 0, card - 1);
-      observed.emplace_back(variable_id(static_cast<variable_id::rep>(v)), s);
+      observed.emplace_back(index_at<variable_id>(v), s);
     }
     return observed;
   };
@@ -325,7 +325,7 @@ std::vector<variable_id> parse_uai_query(std::string_view text, const std::strin
     const auto v = in.count("a query variable", 0, n - 1);
     if (seen[v]) in.fail("variable " + std::to_string(v) + " is queried twice");
     seen[v] = true;
-    query.push_back(variable_id(static_cast<variable_id::rep>(v)));
+    query.push_back(index_at<variable_id>(v));
   }
   if (!in.at_end()) {
     static_cast<void>(in.next());

@@ -689,7 +689,7 @@ void write_xmlbif(const influence_diagram& diagram, std::ostream& out, const xml
   pugi::xml_document document;
   auto net = start_document(document, options);
   for (std::size_t i = 0; i < diagram.size(); ++i) {
-    const auto id = variable_id(static_cast<variable_id::rep>(i));
+    const auto id = index_at<variable_id>(i);
     add_variable(net, diagram.at(id), diagram.is_decision(id) ? "decision" : "nature", options);
   }
   for (const auto& u : diagram.utilities()) {
@@ -703,7 +703,7 @@ void write_xmlbif(const influence_diagram& diagram, std::ostream& out, const xml
     return result;
   };
   for (std::size_t i = 0; i < diagram.size(); ++i) {
-    const auto id = variable_id(static_cast<variable_id::rep>(i));
+    const auto id = index_at<variable_id>(i);
     add_definition(net, diagram.at(id).name(), names(diagram.parents(id)),
                    diagram.is_decision(id) ? nullptr : &diagram.table(id));
   }

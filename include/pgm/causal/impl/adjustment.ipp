@@ -55,7 +55,7 @@ PGM_DECL backdoor_sets minimal_backdoor_sets(const dag& graph, std::span<const v
   const auto below = detail::descendants(graph, x);
   std::vector<variable_id> candidates;
   for (std::size_t i = 0; i < graph.size(); ++i) {
-    const variable_id v(static_cast<variable_id::rep>(i));
+    const variable_id v = index_at<variable_id>(i);
     const bool in_xy = std::find(both.begin(), both.end(), v) != both.end();
     if (above[i] && !below[i] && !in_xy) candidates.push_back(v);
   }
@@ -124,8 +124,7 @@ PGM_DECL adjusted_estimate adjust(const dataset& data, const std::string& x, con
       }
       supported[xi] += weight;
       for (std::size_t yi = 0; yi < ny; ++yi) {
-        result.values[xi * ny + yi] +=
-            weight * static_cast<double>(counts(state_index(static_cast<state_index::rep>(yi)), u)) / here;
+        result.values[xi * ny + yi] += weight * static_cast<double>(counts(index_at<state_index>(yi), u)) / here;
       }
     }
   }

@@ -20,14 +20,14 @@ PGM_DECL dag_check check_dag(const network_structure& structure, const dataset& 
   std::vector<pair_test> pairs;
   std::vector<std::vector<bool>> below(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const variable_id v(static_cast<variable_id::rep>(i));
+    const variable_id v = index_at<variable_id>(i);
     const variable_id one[] = {v};
     below[i] = detail::descendants(graph, one);
   }
   for (std::size_t a = 0; a < n; ++a) {
     for (std::size_t b = a + 1; b < n; ++b) {
-      const variable_id va(static_cast<variable_id::rep>(a));
-      const variable_id vb(static_cast<variable_id::rep>(b));
+      const variable_id va = index_at<variable_id>(a);
+      const variable_id vb = index_at<variable_id>(b);
       if (graph.has_edge(va, vb) || graph.has_edge(vb, va)) continue;
       pairs.push_back(below[a][b] ? pair_test{vb, va} : pair_test{va, vb});
     }

@@ -24,7 +24,7 @@ PGM_DECL bayesian_network::bayesian_network(network_structure structure, std::ve
   }
   tables_.reserve(structure_.size());
   for (std::size_t i = 0; i < by_node.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     if (!by_node[i]) throw model_error("no table is given for '" + structure_.at(node).name() + "'");
     check_table(node, *by_node[i]);
     tables_.push_back(*by_node[i]);

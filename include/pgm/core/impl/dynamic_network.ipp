@@ -33,7 +33,7 @@ PGM_DECL cpt<double> renamed(const cpt<double>& table, variable child, std::vect
   const auto stored = table.stored_configurations();
   columns.configurations.assign(stored.begin(), stored.end());
   for (const auto u : stored) {
-    const auto column = table.column(config_index(static_cast<config_index::rep>(u)));
+    const auto column = table.column(index_at<config_index>(u));
     columns.values.insert(columns.values.end(), column.begin(), column.end());
   }
   columns.rest.assign(table.rest().begin(), table.rest().end());

@@ -142,7 +142,7 @@ PGM_DECL std::vector<variable_id> influence_diagram::decision_order() const {
   // graph's order where it has one, the declarations' order where it has none.
   std::vector<variable_id> left;
   for (std::size_t i = 0; i < size(); ++i) {
-    if (kinds_[i] == node_kind::decision) left.push_back(variable_id(static_cast<variable_id::rep>(i)));
+    if (kinds_[i] == node_kind::decision) left.push_back(index_at<variable_id>(i));
   }
   std::vector<variable_id> order;
   while (!left.empty()) {

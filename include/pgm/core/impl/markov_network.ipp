@@ -12,7 +12,7 @@ namespace pgm {
 PGM_DECL markov_network::markov_network(std::vector<variable> variables, std::vector<factor_table> factors)
     : variables_(std::move(variables)), factors_(std::move(factors)) {
   for (std::size_t i = 0; i < variables_.size(); ++i) {
-    const auto [at, added] = index_.emplace(variables_[i].name(), variable_id(static_cast<variable_id::rep>(i)));
+    const auto [at, added] = index_.emplace(variables_[i].name(), index_at<variable_id>(i));
     if (!added) throw model_error("the variable '" + variables_[i].name() + "' is declared twice");
   }
   for (std::size_t f = 0; f < factors_.size(); ++f) {

@@ -13,7 +13,7 @@ namespace pgm {
 PGM_DECL success_event default_success_event(const bayesian_network& network) {
   std::vector<std::string> sinks;
   for (std::size_t i = 0; i < network.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     const auto& v = network.variables()[i];
     if (network.graph().children(node).empty() && !network.graph().parents(node).empty() && v.find_state("1")) {
       sinks.push_back(v.name());

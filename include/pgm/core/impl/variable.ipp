@@ -26,7 +26,7 @@ PGM_DECL variable variable::with_edges(std::string name, std::vector<std::string
 PGM_DECL std::optional<state_index> variable::find_state(std::string_view label) const {
   const auto it = std::find(states_.begin(), states_.end(), label);
   if (it == states_.end()) return std::nullopt;
-  return state_index(static_cast<state_index::rep>(it - states_.begin()));
+  return index_at<state_index>(it - states_.begin());
 }
 
 PGM_DECL state_index variable::state(std::string_view label) const {

@@ -28,8 +28,8 @@ PGM_DECL explanation explain_move(const cpt<double>& table, std::size_t success_
   result.epsilon = epsilon;
   result.configuration = configuration;
   result.target = target;
-  result.predicted = table(state_index(static_cast<state_index::rep>(success_state)), config_index(configuration));
-  result.target_predicted = table(state_index(static_cast<state_index::rep>(success_state)), config_index(target));
+  result.predicted = table(index_at<state_index>(success_state), config_index(configuration));
+  result.target_predicted = table(index_at<state_index>(success_state), config_index(target));
   const auto from = table.parent_codes(config_index(configuration));
   const auto to = table.parent_codes(config_index(target));
   double squared = 0.0;
@@ -46,8 +46,8 @@ PGM_DECL explanation explain_move(const cpt<double>& table, std::size_t success_
                            detail::interval_of(v, from[p]),
                            detail::interval_of(v, to[p]),
                            std::nullopt};
-    const auto a = v.midpoint(state_index(static_cast<state_index::rep>(from[p])));
-    const auto b = v.midpoint(state_index(static_cast<state_index::rep>(to[p])));
+    const auto a = v.midpoint(index_at<state_index>(from[p]));
+    const auto b = v.midpoint(index_at<state_index>(to[p]));
     if (a && b) {
       change.move = *b - *a;
       squared += (*b - *a) * (*b - *a);

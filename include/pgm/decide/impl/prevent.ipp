@@ -36,7 +36,7 @@ PGM_DECL std::vector<std::vector<double>> squared_midpoint_gaps(const cpt<double
     const auto k = v.cardinality();
     std::vector<double> mid(k);
     for (std::size_t s = 0; s < k; ++s) {
-      const auto m = v.midpoint(state_index(static_cast<state_index::rep>(s)));
+      const auto m = v.midpoint(index_at<state_index>(s));
       if (!m) {
         throw model_error("'" + v.name() + "' has no interval edges or numeric states, so distances in units " +
                           "are undefined; use bin steps");

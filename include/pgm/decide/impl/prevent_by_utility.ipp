@@ -18,8 +18,8 @@ namespace detail {
 PGM_DECL double move_cost(const variable& v, std::size_t from, std::size_t to, double rate, move_costs::per unit) {
   if (rate == 0 || from == to) return 0;
   if (unit == move_costs::per::steps) return rate * static_cast<double>(from > to ? from - to : to - from);
-  const auto a = v.midpoint(state_index(static_cast<state_index::rep>(from)));
-  const auto b = v.midpoint(state_index(static_cast<state_index::rep>(to)));
+  const auto a = v.midpoint(index_at<state_index>(from));
+  const auto b = v.midpoint(index_at<state_index>(to));
   return rate * std::abs(*b - *a);  // both exist: prevention_diagram checked
 }
 
@@ -41,7 +41,7 @@ PGM_DECL std::vector<double> cost_rates(const cpt<double>& table, std::span<cons
     const auto& v = table.parents()[p];
     if (costs.unit == move_costs::per::units && rate > 0) {
       for (std::size_t s = 0; s < v.cardinality(); ++s) {
-        if (!v.midpoint(state_index(static_cast<state_index::rep>(s)))) {
+        if (!v.midpoint(index_at<state_index>(s))) {
           throw model_error("'" + name + "' has no units (state '" + v.states()[s] +
                             "' is no interval nor number), so it has no cost per unit: cost it per step");
         }
@@ -60,7 +60,7 @@ PGM_DECL double utility_of(const cpt<double>& table, std::size_t success_state, 
     total += move_cost(table.parents()[p], from[p], to[p], rates[p], costs.unit);
   }
   if (cost != nullptr) *cost = total;
-  const double success = table(state_index(static_cast<state_index::rep>(success_state)), table.configuration(to));
+  const double success = table(index_at<state_index>(success_state), table.configuration(to));
   return costs.reward * success - total;
 }
 
@@ -121,8 +121,7 @@ PGM_DECL utility_move best_move(const cpt<double>& table, std::size_t success_st
   if (std::none_of(controllable.begin(), controllable.end(), [](bool c) { return c; })) {  // nothing moves
     move.target = configuration;
     move.expected_utility = detail::utility_of(table, success_state, from, from, rates, costs, &move.cost);
-    move.success_probability =
-        table(state_index(static_cast<state_index::rep>(success_state)), config_index(configuration));
+    move.success_probability = table(index_at<state_index>(success_state), config_index(configuration));
     return move;
   }
   const auto diagram = prevention_diagram(table, success_state, configuration, controllable, costs);
@@ -158,8 +157,7 @@ PGM_DECL utility_move best_move(const cpt<double>& table, std::size_t success_st
   }
   move.target = table.configuration(to).value();
   move.expected_utility = detail::utility_of(table, success_state, from, to, rates, costs, &move.cost);
-  move.success_probability =
-      table(state_index(static_cast<state_index::rep>(success_state)), config_index(move.target));
+  move.success_probability = table(index_at<state_index>(success_state), config_index(move.target));
   return move;
 }
 

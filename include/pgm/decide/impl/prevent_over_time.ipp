@@ -120,7 +120,7 @@ PGM_DECL prevention_over_time prevent_over_time(const dynamic_network& model,
     evidence_set given = episode;
     if (setting != nullptr) {
       for (std::size_t i = 0; i < decided.size(); ++i) {
-        given.intervened.push_back({decided[i], state_index(static_cast<state_index::rep>((*setting)[i]))});
+        given.intervened.push_back({decided[i], index_at<state_index>((*setting)[i])});
       }
     }
     plain.set_evidence(given);

@@ -136,7 +136,7 @@ PGM_DECL factor reduced(factor f, const observed_states& observed) {
 PGM_DECL decision_potentials potentials_of(const influence_diagram& diagram, const observed_states& observed) {
   decision_potentials p;
   for (std::size_t i = 0; i < diagram.size(); ++i) {
-    const auto id = variable_id(static_cast<variable_id::rep>(i));
+    const auto id = index_at<variable_id>(i);
     if (diagram.is_decision(id)) continue;
     auto scope = diagram.parents(id);
     scope.push_back(id);
@@ -176,7 +176,7 @@ PGM_DECL std::vector<variable_id> unobserved_except(const influence_diagram& dia
                                                     const std::vector<variable_id>& keep) {
   std::vector<variable_id> ids;
   for (std::size_t i = 0; i < diagram.size(); ++i) {
-    const auto id = variable_id(static_cast<variable_id::rep>(i));
+    const auto id = index_at<variable_id>(i);
     if (!is_observed(observed, id) && std::find(keep.begin(), keep.end(), id) == keep.end()) ids.push_back(id);
   }
   return ids;
@@ -369,11 +369,11 @@ PGM_DECL influence_diagram observing(const influence_diagram& diagram, variable_
   }
   influence_diagram result;
   for (std::size_t i = 0; i < diagram.size(); ++i) {
-    const auto id = variable_id(static_cast<variable_id::rep>(i));
+    const auto id = index_at<variable_id>(i);
     diagram.is_decision(id) ? result.add_decision(diagram.at(id)) : result.add_chance(diagram.at(id));
   }
   for (std::size_t i = 0; i < diagram.size(); ++i) {
-    const auto id = variable_id(static_cast<variable_id::rep>(i));
+    const auto id = index_at<variable_id>(i);
     if (!diagram.is_decision(id)) {
       result.set_table(id, diagram.parents(id), diagram.table(id));
       continue;

@@ -95,8 +95,7 @@ PGM_DECL table_slice slice_table(const bayesian_network& network, const table_sl
       for (std::size_t k = 0; k < ny; ++k) {
         digits[px] = i;
         digits[py] = k;
-        result.probability[k * nx + i] =
-            table(state_index(static_cast<state_index::rep>(result.state)), table.configuration(digits));
+        result.probability[k * nx + i] = table(index_at<state_index>(result.state), table.configuration(digits));
       }
     }
   } else {

@@ -122,7 +122,7 @@ PGM_DECL std::vector<experiment_point> run_repetition(const scenario& s, const p
   const auto truth = estimate_mle(truth_counts);
   std::vector<double> produced(truth.configurations());
   for (std::size_t u = 0; u < produced.size(); ++u) {
-    produced[u] = static_cast<double>(truth_counts.total(config_index(static_cast<config_index::rep>(u))));
+    produced[u] = static_cast<double>(truth_counts.total(index_at<config_index>(u)));
   }
   const auto controllable = std::make_unique<bool[]>(target.controllable.size());
   for (std::size_t p = 0; p < target.controllable.size(); ++p) controllable[p] = target.controllable[p] != 0;

@@ -55,8 +55,8 @@ PGM_DECL interface_filter::interface_filter(dynamic_network model, const junctio
   std::vector<std::size_t> interface_cards;
   for (std::size_t i = 0; i < n; ++i) {
     if (!in_interface[i]) continue;
-    interface_.push_back(variable_id(static_cast<variable_id::rep>(i)));
-    previous_interface_.push_back(variable_id(static_cast<variable_id::rep>(n + previous_interface_.size())));
+    interface_.push_back(index_at<variable_id>(i));
+    previous_interface_.push_back(index_at<variable_id>(n + previous_interface_.size()));
     interface_cells_ = detail::saturating_multiply(interface_cells_, cards[i]);
     interface_cards.push_back(cards[i]);
   }
@@ -66,8 +66,7 @@ PGM_DECL interface_filter::interface_filter(dynamic_network model, const junctio
   // need), then β over the interface.
   std::vector<table> first;
   for (std::size_t i = 0; i < n; ++i) {
-    first.push_back(
-        detail::table_factor<sum_product<double>>(model_.initial(), variable_id(static_cast<variable_id::rep>(i))));
+    first.push_back(detail::table_factor<sum_product<double>>(model_.initial(), index_at<variable_id>(i)));
   }
   if (!interface_.empty()) first.emplace_back(interface_, interface_cards, ones);
   const auto first_tree = detail::tree_over(cards, first, options);
@@ -80,10 +79,9 @@ PGM_DECL interface_filter::interface_filter(dynamic_network model, const junctio
   for (std::size_t id = 0; id < two.size(); ++id) {
     const auto i = template_of[id];
     if (slice_of[id] == 1) {
-      renumbered[id] = variable_id(static_cast<variable_id::rep>(i));
+      renumbered[id] = index_at<variable_id>(i);
     } else if (in_interface[i]) {
-      const auto at =
-          std::lower_bound(interface_.begin(), interface_.end(), variable_id(static_cast<variable_id::rep>(i)));
+      const auto at = std::lower_bound(interface_.begin(), interface_.end(), index_at<variable_id>(i));
       renumbered[id] = previous_interface_[static_cast<std::size_t>(at - interface_.begin())];
     }
   }
@@ -106,7 +104,7 @@ PGM_DECL interface_filter::interface_filter(dynamic_network model, const junctio
   transition_max_ = std::make_unique<propagation<max_product<double>>>(transition_tree, transition);
   transition_ = std::make_unique<propagation<sum_product<double>>>(transition_tree, std::move(transition));
   first_future_ = transition_prior_ = transition_future_ = max_prior_ = ones;
-  for (std::size_t i = 0; i < n; ++i) every_.push_back(variable_id(static_cast<variable_id::rep>(i)));
+  for (std::size_t i = 0; i < n; ++i) every_.push_back(index_at<variable_id>(i));
 }
 
 PGM_DECL impossible_evidence interface_filter::impossible_at(std::size_t step, const evidence_set& observed) const {
@@ -237,7 +235,7 @@ PGM_DECL most_probable_steps interface_filter::most_probable(std::span<const evi
     auto observed = steps[t];
     for (std::size_t k = 0; k < held.size(); ++k) {
       if (!observed.fixes(interface_[k])) {
-        observed.hard.push_back({interface_[k], state_index(static_cast<state_index::rep>(held[k]))});
+        observed.hard.push_back({interface_[k], index_at<state_index>(held[k])});
       }
     }
     in.set_evidence(observed);

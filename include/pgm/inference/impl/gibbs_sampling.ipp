@@ -16,7 +16,7 @@ PGM_DECL gibbs_sampling::gibbs_sampling(const bayesian_network& network, samplin
   const auto n = network.size();
   children_.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
-    const auto parents = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
+    const auto parents = network.graph().parents(index_at<variable_id>(i));
     for (std::size_t p = 0; p < parents.size(); ++p) {
       children_[parents[p].value()].push_back({i, tables_.strides(i)[p]});
     }

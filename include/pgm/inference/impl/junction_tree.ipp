@@ -83,7 +83,7 @@ PGM_DECL void junction_tree::build_cliques(const elimination& triangulated, cons
     index[k] = cliques_.size();
     clique c;
     for (auto v : triangulated.cliques[k]) {
-      c.variables.push_back(variable_id(static_cast<variable_id::rep>(v)));
+      c.variables.push_back(index_at<variable_id>(v));
       c.cardinalities.push_back(cards[v]);
       c.cells = detail::saturating_multiply(c.cells, cards[v]);
     }

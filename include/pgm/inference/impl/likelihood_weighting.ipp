@@ -16,7 +16,7 @@ PGM_DECL sampler_tables::sampler_tables(const bayesian_network& network) : order
     const auto& table = network.tables()[i];
     const auto j = table.child_cardinality();
     cards_[i] = j;
-    parents_[i] = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
+    parents_[i] = network.graph().parents(index_at<variable_id>(i));
     strides_[i] = table.parent_radix().strides();
     cumulative_[i] = cumulative_columns(table, true);
   }

@@ -9,7 +9,7 @@ namespace pgm {
 PGM_DECL interaction_graph moral_graph(const bayesian_network& network) {
   interaction_graph graph(network.size());
   for (std::size_t i = 0; i < network.size(); ++i) {
-    const auto parents = network.graph().parents(variable_id(static_cast<variable_id::rep>(i)));
+    const auto parents = network.graph().parents(index_at<variable_id>(i));
     for (std::size_t a = 0; a < parents.size(); ++a) {
       if (!boost::edge(i, parents[a].value(), graph).second) boost::add_edge(i, parents[a].value(), graph);
       for (std::size_t b = a + 1; b < parents.size(); ++b) {

@@ -23,7 +23,7 @@ PGM_DECL nlohmann::json to_json(const influence_diagram& diagram) {
   auto tables = nlohmann::json::array();
   auto decisions = nlohmann::json::array();
   for (std::size_t i = 0; i < diagram.size(); ++i) {
-    const auto id = variable_id(static_cast<variable_id::rep>(i));
+    const auto id = index_at<variable_id>(i);
     variables.push_back(detail::variable_to_json(diagram.at(id)));
     if (diagram.is_decision(id)) {
       decisions.push_back({{"variable", diagram.at(id).name()}, {"observes", names(diagram.parents(id))}});

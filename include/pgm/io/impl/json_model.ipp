@@ -536,7 +536,7 @@ PGM_DECL markov_network parse_markov_json(std::string_view text, const std::stri
       if (at == ids.end()) {
         reader.fail(path + "/scope/" + std::to_string(k), "'" + names[k] + "' is not a variable of the model");
       }
-      scope.push_back(variable_id(static_cast<variable_id::rep>(at->second)));
+      scope.push_back(index_at<variable_id>(at->second));
       cards.push_back(variables[at->second].cardinality());
     }
     // A factor beyond pgm's limit is refused before its values are read.

@@ -147,7 +147,7 @@ PGM_DECL fit_statistics parse_statistics_json(const detail::json_reader& reader,
     const auto family_path = path + "/families/" + std::to_string(i);
     const auto& entry = families[i];
     reader.only_keys(entry, family_path, {"variable", "counts", "prior"});
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     const auto name = reader.string(reader.member(entry, family_path, "variable"), family_path + "/variable");
     if (name != structure.at(node).name()) {
       reader.fail(family_path + "/variable",

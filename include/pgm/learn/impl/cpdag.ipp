@@ -21,7 +21,7 @@ PGM_DECL variable_id cpdag::id(std::string_view name) const {
   if (it == index_.end()) {
     throw model_error("unknown variable '" + std::string(name) + "' (known: " + text::list_for_message(names_) + ")");
   }
-  return variable_id(static_cast<variable_id::rep>(it->second));
+  return index_at<variable_id>(it->second);
 }
 
 PGM_DECL void cpdag::add_undirected(variable_id a, variable_id b) {
@@ -80,7 +80,7 @@ PGM_DECL std::vector<named_edge> extend_to_dag(const cpdag& graph, bool relaxed,
   cpdag rest = graph;
   std::vector<char> removed(graph.size(), 0);
   std::vector<named_edge> edges;
-  auto id = [](std::size_t i) { return variable_id(static_cast<variable_id::rep>(i)); };
+  auto id = [](std::size_t i) { return index_at<variable_id>(i); };
   for (std::size_t round = 0; round < graph.size(); ++round) {
     std::size_t pick = graph.size();
     std::size_t first_sink = graph.size();

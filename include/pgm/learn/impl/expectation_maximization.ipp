@@ -71,7 +71,7 @@ PGM_DECL observed_patterns patterns_of(const network_structure& structure, const
 PGM_DECL std::vector<std::vector<variable_id>> family_members(const network_structure& structure) {
   std::vector<std::vector<variable_id>> families;
   for (std::size_t i = 0; i < structure.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     std::vector<variable_id> members{node};
     for (auto parent : structure.parents(node)) members.push_back(parent);
     families.push_back(std::move(members));
@@ -90,7 +90,7 @@ PGM_DECL std::size_t cell_of(const expected_count_table& table, std::span<const 
 PGM_DECL std::vector<expected_count_table> empty_counts(const network_structure& structure) {
   std::vector<expected_count_table> counts;
   for (std::size_t i = 0; i < structure.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     counts.emplace_back(structure.at(node), structure.parent_variables(node));
   }
   return counts;

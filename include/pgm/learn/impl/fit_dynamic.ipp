@@ -174,8 +174,8 @@ PGM_DECL dynamic_counts count_dynamic(const dynamic_structure& structure, const 
   const auto initial = detail::first_slice(data, templates, episodes);
   const auto n = templates.size();
   for (std::size_t i = 0; i < n; ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
-    const variable_id now(static_cast<variable_id::rep>(n + i));
+    const variable_id node = index_at<variable_id>(i);
+    const variable_id now = index_at<variable_id>(n + i);
     counts.initial.push_back(count_node(structure.initial, node, initial, counting));
     if (pairs) {
       auto table = count_node(structure.transition, now, *pairs, counting);
@@ -208,7 +208,7 @@ PGM_DECL dynamic_network fit_dynamic(const dynamic_structure& structure, const d
   std::vector<cpt<double>> tables;
   for (std::size_t i = 0; i < templates.size(); ++i) {
     const auto& table = counts.transition[i];
-    const variable_id now(static_cast<variable_id::rep>(templates.size() + i));
+    const variable_id now = index_at<variable_id>(templates.size() + i);
     if (table.child() != structure.transition.at(now) ||
         table.parents() != structure.transition.parent_variables(now)) {
       throw model_error("the count table given for the transition of '" + templates[i].name() +

@@ -21,7 +21,7 @@ PGM_DECL network_score score_network(const network_structure& structure, const d
   std::vector<family_key> keys;
   for (std::size_t i = 0; i < structure.size(); ++i) {
     family_key key{i, {}};
-    for (auto p : structure.parents(variable_id(static_cast<variable_id::rep>(i)))) key.parents.push_back(p.value());
+    for (auto p : structure.parents(index_at<variable_id>(i))) key.parents.push_back(p.value());
     std::sort(key.parents.begin(), key.parents.end());
     keys.push_back(std::move(key));
   }

@@ -13,8 +13,8 @@ PGM_DECL hamming_parts hamming_differences(const cpdag& learned, const cpdag& tr
   hamming_parts parts;
   for (std::size_t i = 0; i < learned.size(); ++i) {
     for (std::size_t j = i + 1; j < learned.size(); ++j) {
-      const variable_id a(static_cast<variable_id::rep>(i));
-      const variable_id b(static_cast<variable_id::rep>(j));
+      const variable_id a = index_at<variable_id>(i);
+      const variable_id b = index_at<variable_id>(j);
       const bool in_learned = learned.adjacent(a, b);
       const bool in_truth = truth.adjacent(a, b);
       if (in_learned && !in_truth) {

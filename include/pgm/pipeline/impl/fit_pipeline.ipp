@@ -23,7 +23,7 @@ namespace pgm::detail {
 PGM_DECL std::vector<family_names> families_of(const network_structure& structure) {
   std::vector<family_names> families;
   for (std::size_t i = 0; i < structure.size(); ++i) {
-    const variable_id node(static_cast<variable_id::rep>(i));
+    const variable_id node = index_at<variable_id>(i);
     family_names family{structure.at(node).name(), {}};
     for (const auto& parent : structure.parent_variables(node)) family.parents.push_back(parent.name());
     families.push_back(std::move(family));

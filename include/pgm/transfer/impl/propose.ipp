@@ -17,7 +17,7 @@ PGM_DECL std::optional<std::pair<double, double>> value_range(const variable& v)
   if (v.has_intervals()) return std::pair{v.edges().front(), v.edges().back()};
   std::optional<std::pair<double, double>> range;
   for (std::size_t s = 0; s < v.cardinality(); ++s) {
-    const auto m = v.midpoint(state_index(static_cast<state_index::rep>(s)));
+    const auto m = v.midpoint(index_at<state_index>(s));
     if (!m) return std::nullopt;
     range = range ? std::pair{std::min(range->first, *m), std::max(range->second, *m)} : std::pair{*m, *m};
   }
@@ -110,7 +110,7 @@ PGM_DECL correspondence propose_correspondence(const network_view& target, const
   auto sinks = [](const network_structure& s) {
     std::vector<std::string> names;
     for (std::size_t i = 0; i < s.size(); ++i) {
-      const variable_id id(static_cast<variable_id::rep>(i));
+      const variable_id id = index_at<variable_id>(i);
       if (s.graph().children(id).empty() && !s.parents(id).empty()) names.push_back(s.at(id).name());
     }
     return names;

@@ -41,7 +41,7 @@ PGM_DECL state_mapping map_states(const variable& target, const variable& prior,
   }
   if (prior.has_intervals()) {
     for (std::size_t s = 0; s < mapping.size(); ++s) {
-      const state_index state(static_cast<state_index::rep>(s));
+      const state_index state = index_at<state_index>(s);
       if (matching == state_matching::overlap && target.has_intervals()) {
         mapping[s] = detail::overlap_weights(prior, target.edges()[s], target.edges()[s + 1]);
         continue;
@@ -59,10 +59,10 @@ PGM_DECL state_mapping map_states(const variable& target, const variable& prior,
       continue;
     }
     // Numeric labels written differently ("0.9" vs "0.90") still name the same value.
-    const auto value = target.midpoint(state_index(static_cast<state_index::rep>(s)));
+    const auto value = target.midpoint(index_at<state_index>(s));
     bool found = false;
     for (std::size_t p = 0; value && p < prior.cardinality() && !found; ++p) {
-      const auto other = prior.midpoint(state_index(static_cast<state_index::rep>(p)));
+      const auto other = prior.midpoint(index_at<state_index>(p));
       if (other && *other == *value) {
         mapping[s] = {{p, 1.0}};
         found = true;
@@ -79,7 +79,7 @@ PGM_DECL std::size_t pinned_state(const variable& prior, const std::string& valu
   if (const auto same = prior.find_state(value)) return same->value();
   if (number && std::isfinite(*number)) {
     for (std::size_t p = 0; p < prior.cardinality(); ++p) {
-      const auto other = prior.midpoint(state_index(static_cast<state_index::rep>(p)));
+      const auto other = prior.midpoint(index_at<state_index>(p));
       if (other && *other == *number) return p;
     }
   }
