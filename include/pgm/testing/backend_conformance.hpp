@@ -17,7 +17,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <ostream>
@@ -27,6 +26,7 @@
 #include "pgm/sim/registry.hpp"
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/task_lookup.hpp"
+#include "pgm/testing/case_names.hpp"
 
 namespace pgm::testing {
 
@@ -51,9 +51,7 @@ inline void PrintTo(const backend_case& c, std::ostream* out) { *out << c.backen
 }
 
 [[nodiscard]] inline std::string backend_case_name(const ::testing::TestParamInfo<backend_case>& info) {
-  std::string name = info.param.backend;
-  for (auto& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  return name;
+  return test_name(info.param.backend);
 }
 
 class backend_conformance : public ::testing::TestWithParam<backend_case> {

@@ -18,7 +18,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <ostream>
@@ -32,6 +31,7 @@
 #include "pgm/core/markov_network.hpp"
 #include "pgm/inference/engine_registry.hpp"
 #include "pgm/inference/exact.hpp"
+#include "pgm/testing/case_names.hpp"
 #include "pgm/testing/random_markov_network.hpp"
 #include "pgm/testing/random_network.hpp"
 
@@ -56,20 +56,12 @@ inline void PrintTo(const engine_case& c, std::ostream* out) { *out << c.engine;
 /// Every engine the registry holds, each checked as the case of `cases` with its name (the part
 /// before any '['), or exactly with the defaults where none has it.
 [[nodiscard]] inline std::vector<engine_case> registered_engine_cases(const std::vector<engine_case>& cases) {
-  std::vector<engine_case> result;
-  for (const auto& name : engine_registry::instance().names()) {
-    const auto own = std::find_if(cases.begin(), cases.end(),
-                                  [&](const engine_case& c) { return c.engine.substr(0, c.engine.find('[')) == name; });
-    result.push_back(own == cases.end() ? engine_case{name} : *own);
-  }
-  return result;
+  return cases_of(engine_registry::instance().names(), cases, [](const engine_case& c) { return c.engine; });
 }
 
 /// The case's engine as a test name ("bp_damping_0_5_").
 [[nodiscard]] inline std::string engine_case_name(const ::testing::TestParamInfo<engine_case>& info) {
-  std::string name = info.param.engine;
-  for (auto& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  return name;
+  return test_name(info.param.engine);
 }
 
 /// The unnormalized joint of `query` (ids in that order) with the evidence, hard and soft, by
@@ -205,8 +197,7 @@ TEST_P(engine_conformance, marginals_and_evidence_probability_equal_enumeration_
 
 TEST_P(engine_conformance, marginals_and_evidence_probability_equal_enumeration_on_markov_networks) {
   const auto serves = engine_registry::instance().names_for<markov_network>();
-  const auto name = GetParam().engine.substr(0, GetParam().engine.find('['));
-  if (std::find(serves.begin(), serves.end(), name) == serves.end()) {
+  if (std::find(serves.begin(), serves.end(), component_of(GetParam().engine)) == serves.end()) {
     // An engine that needs a DAG refuses a Markov network, saying so.
     EXPECT_THROW(static_cast<void>(make_engine(GetParam().engine, markov(1))), model_error);
     return;

@@ -15,7 +15,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdint>
 #include <filesystem>
 #include <ostream>
@@ -25,6 +24,7 @@
 #include "pgm/core/error.hpp"
 #include "pgm/io/network_file.hpp"
 #include "pgm/io/network_format.hpp"
+#include "pgm/testing/case_names.hpp"
 #include "pgm/testing/random_network.hpp"
 
 namespace pgm::testing {
@@ -45,18 +45,11 @@ inline void PrintTo(const format_case& c, std::ostream* out) { *out << c.format;
 /// Every registered format, each checked as the case of `cases` with its name, or with the
 /// defaults where none has it.
 [[nodiscard]] inline std::vector<format_case> registered_format_cases(const std::vector<format_case>& cases) {
-  std::vector<format_case> result;
-  for (const auto& name : known_network_formats()) {
-    const auto own = std::find_if(cases.begin(), cases.end(), [&](const format_case& c) { return c.format == name; });
-    result.push_back(own == cases.end() ? format_case{name} : *own);
-  }
-  return result;
+  return cases_of(known_network_formats(), cases, [](const format_case& c) { return c.format; });
 }
 
 [[nodiscard]] inline std::string format_case_name(const ::testing::TestParamInfo<format_case>& info) {
-  std::string name = info.param.format;
-  for (auto& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  return name;
+  return test_name(info.param.format);
 }
 
 class format_conformance : public ::testing::TestWithParam<format_case> {

@@ -17,7 +17,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdint>
 #include <ostream>
 #include <set>
@@ -29,6 +28,7 @@
 #include "pgm/inference/sampling.hpp"
 #include "pgm/learn/learn_structure.hpp"
 #include "pgm/learn/structure_learner_registry.hpp"
+#include "pgm/testing/case_names.hpp"
 
 namespace pgm::testing {
 
@@ -46,20 +46,11 @@ inline void PrintTo(const learner_case& c, std::ostream* out) { *out << c.learne
 /// Every registered learner, each checked as the case of `cases` with its name, or as one that
 /// recovers where none has it.
 [[nodiscard]] inline std::vector<learner_case> registered_learner_cases(const std::vector<learner_case>& cases) {
-  std::vector<learner_case> result;
-  for (const auto& name : structure_learners().names()) {
-    const auto own = std::find_if(cases.begin(), cases.end(), [&](const learner_case& c) {
-      return c.learner.substr(0, c.learner.find('[')) == name;
-    });
-    result.push_back(own == cases.end() ? learner_case{name} : *own);
-  }
-  return result;
+  return cases_of(structure_learners().names(), cases, [](const learner_case& c) { return c.learner; });
 }
 
 [[nodiscard]] inline std::string learner_case_name(const ::testing::TestParamInfo<learner_case>& info) {
-  std::string name = info.param.learner;
-  for (auto& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  return name;
+  return test_name(info.param.learner);
 }
 
 /// a → c ← b, c → d → e with strong tables: c's likely state is a + b, d's whether c is 0, e's

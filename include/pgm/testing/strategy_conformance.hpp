@@ -18,7 +18,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <random>
@@ -29,6 +28,7 @@
 #include "pgm/core/bayesian_network.hpp"
 #include "pgm/core/correspondence.hpp"
 #include "pgm/core/variable.hpp"
+#include "pgm/testing/case_names.hpp"
 #include "pgm/testing/random_network.hpp"
 #include "pgm/transfer/registry.hpp"
 #include "pgm/transfer/transfer_problem.hpp"
@@ -42,9 +42,7 @@ namespace pgm::testing {
 
 /// The strategy's name as a test name.
 [[nodiscard]] inline std::string strategy_name(const ::testing::TestParamInfo<std::string>& info) {
-  std::string name = info.param;
-  for (auto& c : name) c = std::isalnum(static_cast<unsigned char>(c)) ? c : '_';
-  return name;
+  return test_name(info.param);
 }
 
 /// The inputs of one transfer, held together (a transfer_problem refers to its prior network).
