@@ -78,7 +78,6 @@ template <GraphicalModel M>
   }
   std::vector<double> joint(cells, 0.0);
   std::vector<std::size_t> state(variables.size(), 0);
-  std::vector<double> weight_of_state;
   while (true) {
     double weight = 1.0;
     for (const auto& o : observed.hard) weight *= state[o.variable.value()] == o.state.value() ? 1.0 : 0.0;
@@ -133,8 +132,8 @@ class engine_conformance : public ::testing::TestWithParam<engine_case> {
   /// Up to two hard observations and one soft, on distinct variables.
   template <GraphicalModel M>
   [[nodiscard]] static evidence_set draw_evidence(const M& model, std::mt19937_64& random) {
-    std::vector<variable_id> order;
-    for (std::size_t i = 0; i < model.size(); ++i) order.push_back(index_at<variable_id>(i));
+    const auto all = ids(model.size());
+    std::vector<variable_id> order(all.begin(), all.end());
     std::shuffle(order.begin(), order.end(), random);
     evidence_set observed;
     std::size_t next = 0;
