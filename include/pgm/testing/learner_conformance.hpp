@@ -10,8 +10,9 @@
 ///
 ///     #include <pgm/testing/learner_conformance.hpp>
 ///     using pgm::testing::learner_conformance;  // the macro takes the suite's name unqualified
+///     using pgm::testing::learner_case;
 ///     INSTANTIATE_TEST_SUITE_P(mine, learner_conformance,
-///                              ::testing::Values(pgm::testing::learner_case{"chow-liu", .recovers = false}),
+///                              ::testing::Values(learner_case{.learner = "chow-liu", .recovers = false}),
 ///                              pgm::testing::learner_case_name);
 
 #include <gtest/gtest.h>
