@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
-#include <ranges>
+#include <iterator>
 
 namespace pgm {
 
@@ -40,14 +40,55 @@ template <class Index>
   return Index(static_cast<typename Index::rep>(i));
 }
 
-/// The indices 0, 1, …, n − 1, for range-for: `for (auto v : indices<state_index>(states))`.
+/// The indices 0, 1, …, n − 1 as a range. A class of its own rather than std::views::iota |
+/// transform, which clang 14 (the fuzzing build's compiler) cannot compile with libstdc++ 12.
 template <class Index>
-[[nodiscard]] constexpr auto indices(std::size_t n) {
-  return std::views::iota(std::size_t{0}, n) | std::views::transform(index_at<Index>);
+class index_range {
+ public:
+  class iterator {
+   public:
+    using iterator_category = std::input_iterator_tag;
+    using value_type = Index;
+    using difference_type = std::ptrdiff_t;
+    using pointer = void;
+    using reference = Index;
+
+    constexpr iterator() noexcept = default;
+    constexpr explicit iterator(std::size_t i) noexcept : i_(i) {}
+    [[nodiscard]] constexpr Index operator*() const noexcept { return index_at<Index>(i_); }
+    constexpr iterator& operator++() noexcept {
+      ++i_;
+      return *this;
+    }
+    constexpr iterator operator++(int) noexcept {
+      auto before = *this;
+      ++i_;
+      return before;
+    }
+    friend constexpr bool operator==(iterator, iterator) noexcept = default;
+
+   private:
+    std::size_t i_ = 0;
+  };
+
+  constexpr explicit index_range(std::size_t n) noexcept : n_(n) {}
+  [[nodiscard]] constexpr iterator begin() const noexcept { return iterator(0); }
+  [[nodiscard]] constexpr iterator end() const noexcept { return iterator(n_); }
+  [[nodiscard]] constexpr std::size_t size() const noexcept { return n_; }
+  [[nodiscard]] constexpr bool empty() const noexcept { return n_ == 0; }
+
+ private:
+  std::size_t n_;
+};
+
+/// The indices 0, 1, …, n − 1, for range-for: `for (auto s : indices<state_index>(states))`.
+template <class Index>
+[[nodiscard]] constexpr index_range<Index> indices(std::size_t n) noexcept {
+  return index_range<Index>(n);
 }
 
 /// The ids of a model's n variables: `for (auto v : ids(model.size()))`.
-[[nodiscard]] constexpr auto ids(std::size_t n) { return indices<variable_id>(n); }
+[[nodiscard]] constexpr index_range<variable_id> ids(std::size_t n) noexcept { return indices<variable_id>(n); }
 
 }  // namespace pgm
 
