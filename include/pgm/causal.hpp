@@ -4,6 +4,7 @@
 /// Every header of pgm/causal/ in one include; target pgm::core.
 
 #include "pgm/causal/adjustment.hpp"
+#include "pgm/causal/counterfactual.hpp"
 #include "pgm/causal/d_separation.hpp"
 #include "pgm/causal/dag_check.hpp"
 #include "pgm/causal/intervention.hpp"

@@ -23,6 +23,7 @@
 #include "pgm/core/network_structure.hpp"
 #include "pgm/core/process_group.hpp"
 #include "pgm/core/strong_index.hpp"
+#include "pgm/core/structural_model.hpp"
 #include "pgm/core/success_event.hpp"
 #include "pgm/core/text.hpp"
 #include "pgm/core/unknown_name.hpp"

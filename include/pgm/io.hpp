@@ -21,5 +21,6 @@
 #include "pgm/io/query_batch.hpp"
 #include "pgm/io/read_options.hpp"
 #include "pgm/io/statistics_json.hpp"
+#include "pgm/io/structural_file.hpp"
 #include "pgm/io/uai.hpp"
 #include "pgm/io/xmlbif.hpp"

@@ -574,6 +574,10 @@ PGM_DECL model_document parse_model_json(std::string_view text, const std::strin
                 "this file holds a dynamic network, not a Bayesian network or structure; pgm unroll makes one of it "
                 "over a number of slices");
   }
+  if (const auto* kind = reader.optional_member(document, "kind"); kind && kind->is_string() && *kind == "structural") {
+    reader.fail("/kind",
+                "this file holds a structural model, not a Bayesian network or structure; pgm counterfactual reads it");
+  }
   // Free for people and tools: "metadata" (io/decision_model.hpp reads its "success") and
   // "learned" (how pgm learn-structure found the structure).
   reader.only_keys(document, "",
