@@ -4,6 +4,7 @@
 /// Every header of pgm/decide/ in one include; target pgm::core.
 
 #include "pgm/decide/assignment.hpp"
+#include "pgm/decide/counterfactual_success.hpp"
 #include "pgm/decide/explain.hpp"
 #include "pgm/decide/predict.hpp"
 #include "pgm/decide/prevent.hpp"

@@ -84,6 +84,8 @@ TEST_F(decide_cli_test, prevent_explains_and_suggests) {
   EXPECT_THAT(r.out, HasSubstr("xOff1 = 0 cm (interval 1 [-0.4, 0.4) cm)"));
   EXPECT_THAT(r.out, HasSubstr("yOff1 = 0.1 cm (interval 1 [-0.4, 0.4) cm) (unchanged)"));
   EXPECT_THAT(r.out, HasSubstr("predicted success after prevention: 0.95"));
+  // A run that failed at 0.3 had its noise below 0.7; at 0.95 it fails below 0.05 only.
+  EXPECT_THAT(r.out, HasSubstr("the change would have made it succeed with probability 0.928571 (counterfactual"));
   const auto fine = run("prevent --model " + model().string() + " --assign 'xOff1=0,yOff1=0' --distance units");
   EXPECT_EQ(fine.code, 0) << fine.err;
   EXPECT_THAT(fine.out, HasSubstr("no failure predicted"));
@@ -129,6 +131,7 @@ TEST_F(decide_cli_test, prevent_with_a_reward_weighs_the_gain_against_the_cost) 
   EXPECT_NEAR(moved["expected_utility"].get<double>(), 85, 1e-12);
   EXPECT_NEAR(moved["success_probability"].get<double>(), 0.95, 1e-15);
   EXPECT_NEAR(moved["cost"].get<double>(), 10, 1e-15);
+  EXPECT_NEAR(moved["counterfactual_success"].get<double>(), 0.65 / 0.7, 1e-15);
   const auto dear = run(plan + " --reward 100 --move-cost xOff1=70,yOff1=70");
   EXPECT_EQ(dear.code, 0) << dear.err;
   EXPECT_THAT(dear.out, HasSubstr("expected utility 30 (success 0.3, cost 0)"));
@@ -213,6 +216,62 @@ TEST_F(decide_cli_test, counterfactual_bounds_necessity_and_sufficiency) {
                "--cause: expected VARIABLE=STATE");
   expect_error("counterfactual --model " + model().string() + " --cause xOff1=0 --alternative 9 --effect onTop1=0",
                "no state '9'");
+}
+
+TEST_F(decide_cli_test, counterfactual_distributions_on_a_structural_model_or_a_network_read_as_one) {
+  // The tower of tests/causal/counterfactual_test.cpp: it fell at offset 2, so its unit was u1
+  // or u2 (0.3 : 0.2), and at offset 0 u1 stands.
+  const auto tower = file("tower.json", R"({"format": "pgm-model", "version": 1, "kind": "structural",
+    "variables": [{"name": "xOff1", "states": ["0", "1", "2"]}, {"name": "onTop1", "states": ["0", "1"]}],
+    "equations": [
+      {"variable": "xOff1", "parents": [], "noise": [0.25, 0.25, 0.5], "values": [["0", "1", "2"]]},
+      {"variable": "onTop1", "parents": ["xOff1"], "noise": [0.5, 0.3, 0.2],
+       "values": [["1", "1", "0"], ["1", "1", "0"], ["1", "0", "0"]]}]})")
+                         .string();
+  const auto ask = "counterfactual --model " + tower + " --evidence xOff1=2,onTop1=0 --do xOff1=0 --query onTop1";
+  const auto csv = run(ask);
+  ASSERT_EQ(csv.code, 0) << csv.err;
+  EXPECT_EQ(csv.out, "onTop1,probability\n0,0.4\n1,0.6\n");
+  const auto json = nlohmann::json::parse(run(ask + " --format json").out);
+  EXPECT_NEAR(json["distribution"][1]["probability"].get<double>(), 0.6, 1e-15);
+  EXPECT_NEAR(json["evidence_probability"].get<double>(), 0.25, 1e-15);  // P(xOff1 = 2, fell) = 0.5 · 0.5
+  EXPECT_EQ(json["do"], nlohmann::json({{"xOff1", "0"}}));
+  // Every other command reads it as the network it implies.
+  const auto query = run("query --model " + tower + " --query onTop1 --evidence xOff1=2");
+  EXPECT_EQ(query.out, "onTop1,probability\n0,0.5\n1,0.5\n");
+  EXPECT_THAT(query.err, HasSubstr("holds a structural model: read as the causal network it implies"));
+
+  // A network is read as monotone only when asked: (x=0, y=1) succeeds with 0.3, (1, 1) with 0.95.
+  const auto network =
+      " --model " + model().string() + " --evidence xOff1=0,yOff1=1,onTop1=0 --do xOff1=1 --query onTop1";
+  expect_error("counterfactual" + network, "does not determine counterfactuals");
+  const auto monotone = run("counterfactual" + network + " --assume monotone --format json");
+  ASSERT_EQ(monotone.code, 0) << monotone.err;
+  const auto stood = nlohmann::json::parse(monotone.out)["distribution"][1];
+  EXPECT_EQ(stood["onTop1"], "1");
+  EXPECT_NEAR(stood["probability"].get<double>(), 0.65 / 0.7, 1e-15);
+  // pgm convert writes that structural model; read back, it answers the same.
+  const auto structural = (dir_ / "monotone.json").string();
+  const auto converted = run("convert " + model().string() + " " + structural + " --structural monotone");
+  ASSERT_EQ(converted.code, 0) << converted.err;
+  EXPECT_THAT(converted.out, HasSubstr("(a structural model, monotone): 4 variables"));
+  const auto back = run("counterfactual --model " + structural +
+                        " --evidence xOff1=0,yOff1=1,onTop1=0 --do xOff1=1 --query onTop1 --format json");
+  EXPECT_EQ(back.out, monotone.out);
+  expect_error("convert " + model().string() + " " + (dir_ / "m.bif").string() + " --structural monotone",
+               "name the output .json");
+
+  const auto misused = [&](const std::string& arguments, const std::string& message) {
+    const auto r = run(arguments);
+    EXPECT_EQ(r.code, 2) << arguments;  // a usage error, as the parser's own
+    EXPECT_THAT(r.err, HasSubstr(message)) << arguments;
+  };
+  misused(ask + " --cause xOff1=2", "choose one");
+  misused("counterfactual --model " + tower + " --do xOff1=0", "--query");
+  misused(ask + " --assume monotone", "needs no --assume");
+  misused(ask + " --format text", "prints as csv or json");
+  expect_error("counterfactual --model " + tower + " --evidence xOff1=2,onTop1=0 --do xOff1=0 --query nowhere",
+               "nowhere");
 }
 
 // pgm prevent --dynamic on docs/dynamic.md's model, by hand: the transition's b | a, b@-1 gives

@@ -6,6 +6,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "pgm/decide/counterfactual_success.hpp"
 #include "pgm/decide/explain.hpp"
 #include "pgm/decide/success_table.hpp"
 
@@ -150,6 +151,27 @@ TEST(explain_test, plan_on_a_network_uses_the_table_and_fixes_the_rest) {
   EXPECT_EQ(other.table.parents().size(), 3u);
   EXPECT_EQ(other.why.steps, 0u);
   EXPECT_NEAR(other.why.predicted, 0.1, 1e-12);
+}
+
+TEST(explain_test, the_change_would_have_saved_a_failed_run_as_monotone_ranks_say) {
+  const auto net = stacking();
+  const success_event s{"onTop", "1"};
+  const std::string both[] = {"x", "y"};
+  // (x=0, y=1) succeeds with 0.3, the centre with 0.95. A run that failed had its noise below
+  // 0.7 (failure is the lower state); at the centre it fails below 0.05 only.
+  const auto planned = parse_assignment("x=-1.7,y=0", net);
+  const auto plan = plan_prevention(net, s, planned, both);
+  ASSERT_EQ(plan.why.target, 4u);
+  EXPECT_NEAR(*counterfactual_success(net, plan.why, planned), (0.7 - 0.05) / 0.7, 1e-12);
+  // Only y moves from (x=2, y=0), 0.1 to 0.2.
+  const std::string only_y[] = {"y"};
+  const auto right = parse_assignment("x=1,y=-1", net);
+  EXPECT_NEAR(*counterfactual_success(net, plan_prevention(net, s, right, only_y).why, right), (0.9 - 0.8) / 0.9,
+              1e-12);
+  // Nothing moves: nothing to say.
+  const std::string colour[] = {"colour"};
+  const auto red = parse_assignment("x=1,y=-1,colour=Red", net);
+  EXPECT_FALSE(counterfactual_success(net, plan_prevention(net, s, red, colour).why, red));
 }
 
 }  // namespace

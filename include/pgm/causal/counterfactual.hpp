@@ -50,6 +50,11 @@ struct twin_network {
 /// more '*' or '_' where a name is taken). Throws model_error for an unknown variable or state.
 [[nodiscard]] PGM_DECL twin_network make_twin_network(const structural_model& model, const intervention& set);
 
+/// The twin network of monotone_structural_model(network), making the equations of only what
+/// the intervention reaches: a large table elsewhere costs nothing.
+[[nodiscard]] PGM_DECL twin_network make_monotone_twin_network(const bayesian_network& network,
+                                                               const intervention& set);
+
 /// P(`names` in the world where `set` had been done | `observed` in this one), a table over the
 /// model's variables of those names (the last fastest); its evidence_probability is P(observed).
 /// A query variable that is observed and that the intervention does not reach keeps its observed
@@ -57,6 +62,11 @@ struct twin_network {
 /// variable twice, and impossible_evidence when P(observed) = 0.
 [[nodiscard]] PGM_DECL posterior counterfactual_query(const structural_model& model, std::span<const std::string> names,
                                                       const evidence& observed, const intervention& set);
+
+/// The same on monotone_structural_model(network), through make_monotone_twin_network.
+[[nodiscard]] PGM_DECL posterior monotone_counterfactual_query(const bayesian_network& network,
+                                                               std::span<const std::string> names,
+                                                               const evidence& observed, const intervention& set);
 
 }  // namespace pgm
 

@@ -19,7 +19,9 @@
 /// name the file and the JSON path of what is wrong.
 
 #include <filesystem>
+#include <functional>
 #include <nlohmann/json.hpp>
+#include <ostream>
 #include <string>
 #include <string_view>
 
@@ -28,15 +30,20 @@
 
 namespace pgm {
 
-[[nodiscard]] PGM_DECL nlohmann::json to_json(const structural_model& model);
+/// The document, its keys in the order above.
+[[nodiscard]] PGM_DECL nlohmann::ordered_json to_json(const structural_model& model);
+
+/// Writes the document a variable and an equation to a line.
+PGM_DECL void write_structural_json(std::ostream& out, const structural_model& model);
 
 [[nodiscard]] PGM_DECL structural_model parse_structural_json(std::string_view text, const std::string& source);
 
 /// Reads a structural model from pgm's JSON model.
 [[nodiscard]] PGM_DECL structural_model read_structural_model(const std::filesystem::path& path);
 
-/// Writes pgm's JSON model of `model`, atomically.
-PGM_DECL void write_structural_model(const structural_model& model, const std::filesystem::path& path);
+/// Writes pgm's JSON model of `model`, atomically; `before_replacing` runs once all is written.
+PGM_DECL void write_structural_model(const structural_model& model, const std::filesystem::path& path,
+                                     const std::function<void()>& before_replacing = {});
 
 }  // namespace pgm
 

@@ -7,8 +7,10 @@
 #include <vector>
 
 #include "cli/common.hpp"
+#include "pgm/causal/counterfactual.hpp"
 #include "pgm/io/decision_model.hpp"
 #include "pgm/io/network_file.hpp"
+#include "pgm/io/structural_file.hpp"
 #include "pgm/io/uai.hpp"
 
 namespace pgm::cli {
@@ -19,7 +21,23 @@ struct convert_arguments {
   std::string out;
   std::string to;
   bool no_properties = false;
+  std::string structural;
 };
+
+/// A network read as a structural model under an assumption, written in pgm's JSON.
+void convert_to_structural(const convert_arguments& args, const network_format& to) {
+  if (to != network_format("json")) {
+    throw error("a structural model is written in pgm's JSON: name the output .json");
+  }
+  const auto model = monotone_structural_model(read_network_file(args.in));
+  std::size_t noise = 0;
+  for (std::size_t i = 0; i < model.size(); ++i) noise += model.equation(index_at<variable_id>(i)).noise.size();
+  const auto summary = summary_before_replacing("converted " + args.in + " -> " + args.out + " (a structural model, " +
+                                                    args.structural + "): " + std::to_string(model.size()) +
+                                                    " variables, " + std::to_string(noise) + " noise states\n",
+                                                args.out);
+  write_structural_model(model, args.out, summary);
+}
 
 /// A Markov network goes to the formats that hold one: UAI (MARKOV) and pgm's JSON.
 void convert_markov_network(const convert_arguments& args, const markov_network& model, const network_format& from,
@@ -54,6 +72,10 @@ void run_convert(const convert_arguments& args) {
     throw error("'" + args.out + "' names the " + std::string(name_of(*named)) + " format but --to says " + args.to);
   }
   pgm::check_output_path(args.out);
+  if (!args.structural.empty()) {
+    convert_to_structural(args, to);
+    return;
+  }
   if (auto markov = read_markov_network_file(args.in)) {
     convert_markov_network(args, *markov, from, to);
     return;
@@ -100,6 +122,11 @@ void add_convert_command(CLI::App& app) {
       ->check(CLI::IsMember(known_network_formats()));
   cmd->add_flag("--no-properties", args->no_properties,
                 "Leave out pgm's interval edges and semantic tags (properties and attributes other tools ignore)");
+  cmd->add_option("--structural", args->structural,
+                  "Write the network as a structural model (pgm's JSON) under this assumption. monotone: every "
+                  "variable takes the first state whose cumulative probability exceeds one uniform noise "
+                  "(docs/causal.md); pgm counterfactual reads it")
+      ->check(CLI::IsMember({"monotone"}));
   cmd->callback([args] { run_convert(*args); });
 }
 

@@ -17,6 +17,7 @@
 #include "commands/decide_common.hpp"
 #include "pgm/core/text.hpp"
 #include "pgm/decide/assignment.hpp"
+#include "pgm/decide/counterfactual_success.hpp"
 #include "pgm/decide/explain.hpp"
 #include "pgm/decide/prevent_by_utility.hpp"
 #include "pgm/decide/prevent_over_time.hpp"
@@ -62,6 +63,14 @@ void print_moves(const explanation& why, const bayesian_network& network, const 
   }
 }
 
+/// What the change would have done for a run of the plan that failed.
+void print_counterfactual(const bayesian_network& network, const explanation& why, const assignment& planned) {
+  if (const auto p = counterfactual_success(network, why, planned)) {
+    std::cout << "had a run of the plan failed, the change would have made it succeed with probability "
+              << text::format_short(*p) << " (counterfactual, the network read as monotone: docs/causal.md)\n";
+  }
+}
+
 /// "x=1.5,y=2" as costs per variable.
 std::map<std::string, double, std::less<>> parse_move_costs(const std::string& text) {
   std::map<std::string, double, std::less<>> costs;
@@ -98,7 +107,10 @@ void print_best_move(const prevent_arguments& args, const prevention_plan& plan,
     }
     out += "], \"expected_utility\": " + json_number(move.expected_utility) +
            ", \"success_probability\": " + json_number(move.success_probability) +
-           ", \"cost\": " + json_number(move.cost) + "}";
+           ", \"cost\": " + json_number(move.cost);
+    if (const auto p = counterfactual_success(network, why, planned))
+      out += ", \"counterfactual_success\": " + json_number(*p);
+    out += "}";
     std::cout << out << '\n';
     return;
   }
@@ -113,6 +125,7 @@ void print_best_move(const prevent_arguments& args, const prevention_plan& plan,
     return;
   }
   print_moves(why, network, planned);
+  print_counterfactual(network, why, planned);
 }
 
 /// pgm prevent --dynamic: the next step of an episode of a dynamic network.
@@ -210,6 +223,7 @@ void run_prevent(const prevent_arguments& args) {
   std::cout << ")\n";
   print_moves(why, network, planned);
   std::cout << "predicted success after prevention: " << text::format_short(why.target_predicted) << '\n';
+  print_counterfactual(network, why, planned);
 }
 
 }  // namespace

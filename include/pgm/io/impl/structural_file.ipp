@@ -9,34 +9,42 @@
 #include "pgm/core/file.hpp"
 #include "pgm/detail/json_reader.hpp"
 #include "pgm/io/json_model.hpp"
+#include "pgm/io/network_file.hpp"
 #include "pgm/io/structural_file.hpp"
 
 namespace pgm {
 
-PGM_DECL nlohmann::json to_json(const structural_model& model) {
-  auto variables = nlohmann::json::array();
-  auto equations = nlohmann::json::array();
+PGM_DECL nlohmann::ordered_json to_json(const structural_model& model) {
+  auto variables = nlohmann::ordered_json::array();
+  auto equations = nlohmann::ordered_json::array();
   for (std::size_t i = 0; i < model.size(); ++i) {
     const auto id = index_at<variable_id>(i);
     const auto& v = model.at(id);
-    variables.push_back(detail::variable_to_json(v));
+    variables.push_back(nlohmann::ordered_json(detail::variable_to_json(v)));
     const auto& e = model.equation(id);
-    auto parents = nlohmann::json::array();
+    auto parents = nlohmann::ordered_json::array();
     for (const auto p : e.parents) parents.push_back(model.at(p).name());
-    auto rows = nlohmann::json::array();
+    auto rows = nlohmann::ordered_json::array();
     const auto configurations = parent_configurations(model, e.parents);
     for (std::size_t c = 0; c < configurations; ++c) {
-      auto row = nlohmann::json::array();
+      auto row = nlohmann::ordered_json::array();
       for (std::size_t k = 0; k < e.noise.size(); ++k) row.push_back(v.states()[model.value(id, c, k)]);
       rows.push_back(std::move(row));
     }
-    equations.push_back({{"variable", v.name()}, {"parents", parents}, {"noise", e.noise}, {"values", rows}});
+    auto equation = nlohmann::ordered_json::object();
+    equation["variable"] = v.name();
+    equation["parents"] = std::move(parents);
+    equation["noise"] = e.noise;
+    equation["values"] = std::move(rows);
+    equations.push_back(std::move(equation));
   }
-  return {{"format", "pgm-model"},
-          {"version", 1},
-          {"kind", "structural"},
-          {"variables", variables},
-          {"equations", equations}};
+  nlohmann::ordered_json document;
+  document["format"] = "pgm-model";
+  document["version"] = 1;
+  document["kind"] = "structural";
+  document["variables"] = std::move(variables);
+  document["equations"] = std::move(equations);
+  return document;
 }
 
 PGM_DECL structural_model parse_structural_json(std::string_view text, const std::string& source) {
@@ -119,12 +127,28 @@ PGM_DECL structural_model parse_structural_json(std::string_view text, const std
 }
 
 PGM_DECL structural_model read_structural_model(const std::filesystem::path& path) {
-  return parse_structural_json(read_file(path), path.string());
+  return parse_structural_json(read_model_text(path), path.string());
 }
 
-PGM_DECL void write_structural_model(const structural_model& model, const std::filesystem::path& path) {
-  const auto text = to_json(model).dump(2) + "\n";
-  write_file_atomically(path, [&](std::ostream& out) { out << text; });
+PGM_DECL void write_structural_json(std::ostream& out, const structural_model& model) {
+  const auto document = to_json(model);
+  const auto lines = [&](const char* key) {
+    const auto& items = document.at(key);
+    for (std::size_t i = 0; i < items.size(); ++i)
+      out << "\n    " << items[i].dump() << (i + 1 < items.size() ? "," : "");
+    out << (items.empty() ? "]" : "\n  ]");
+  };
+  out << "{\n  \"format\": \"pgm-model\",\n  \"version\": 1,\n  \"kind\": \"structural\",\n  \"variables\": [";
+  lines("variables");
+  out << ",\n  \"equations\": [";
+  lines("equations");
+  out << "\n}\n";
+}
+
+PGM_DECL void write_structural_model(const structural_model& model, const std::filesystem::path& path,
+                                     const std::function<void()>& before_replacing) {
+  write_file_atomically(
+      path, [&](std::ostream& out) { write_structural_json(out, model); }, before_replacing);
 }
 
 }  // namespace pgm
