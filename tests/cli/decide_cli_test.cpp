@@ -219,15 +219,11 @@ TEST_F(decide_cli_test, counterfactual_bounds_necessity_and_sufficiency) {
 }
 
 TEST_F(decide_cli_test, counterfactual_distributions_on_a_structural_model_or_a_network_read_as_one) {
-  // The tower of tests/causal/counterfactual_test.cpp: it fell at offset 2, so its unit was u1
-  // or u2 (0.3 : 0.2), and at offset 0 u1 stands.
-  const auto tower = file("tower.json", R"({"format": "pgm-model", "version": 1, "kind": "structural",
-    "variables": [{"name": "xOff1", "states": ["0", "1", "2"]}, {"name": "onTop1", "states": ["0", "1"]}],
-    "equations": [
-      {"variable": "xOff1", "parents": [], "noise": [0.25, 0.25, 0.5], "values": [["0", "1", "2"]]},
-      {"variable": "onTop1", "parents": ["xOff1"], "noise": [0.5, 0.3, 0.2],
-       "values": [["1", "1", "0"], ["1", "1", "0"], ["1", "0", "0"]]}]})")
-                         .string();
+  // docs/causal.md's tower: it fell at offset 2, so its unit was noise 1 or 2 (0.3 : 0.2), and
+  // at offset 0 noise 1 stands.
+  const auto page = slurp(std::filesystem::path(PGM_SOURCE_DIR) / "docs" / "causal.md");
+  const auto start = page.find("```json\n") + 8;
+  const auto tower = file("tower.json", page.substr(start, page.find("```", start) - start)).string();
   const auto ask = "counterfactual --model " + tower + " --evidence xOff1=2,onTop1=0 --do xOff1=0 --query onTop1";
   const auto csv = run(ask);
   ASSERT_EQ(csv.code, 0) << csv.err;

@@ -63,9 +63,20 @@ void print_moves(const explanation& why, const bayesian_network& network, const 
   }
 }
 
-/// What the change would have done for a run of the plan that failed.
+/// What the change would have done for a run of the plan that failed; nothing, with a note, where
+/// the success table is too large to read as a structural model (the suggestion stands without it).
+std::optional<double> counterfactual_of(const bayesian_network& network, const explanation& why,
+                                        const assignment& planned) {
+  try {
+    return counterfactual_success(network, why, planned);
+  } catch (const table_too_large& e) {
+    note(std::string("the counterfactual is left out: ") + e.what());
+    return std::nullopt;
+  }
+}
+
 void print_counterfactual(const bayesian_network& network, const explanation& why, const assignment& planned) {
-  if (const auto p = counterfactual_success(network, why, planned)) {
+  if (const auto p = counterfactual_of(network, why, planned)) {
     std::cout << "had a run of the plan failed, the change would have made it succeed with probability "
               << text::format_short(*p) << " (counterfactual, the network read as monotone: docs/causal.md)\n";
   }
@@ -108,7 +119,7 @@ void print_best_move(const prevent_arguments& args, const prevention_plan& plan,
     out += "], \"expected_utility\": " + json_number(move.expected_utility) +
            ", \"success_probability\": " + json_number(move.success_probability) +
            ", \"cost\": " + json_number(move.cost);
-    if (const auto p = counterfactual_success(network, why, planned))
+    if (const auto p = counterfactual_of(network, why, planned))
       out += ", \"counterfactual_success\": " + json_number(*p);
     out += "}";
     std::cout << out << '\n';
