@@ -30,6 +30,7 @@ __all__ = [
     "ENGINES",
     "backdoor_sets",
     "check",
+    "counterfactual",
     "d_separated",
     "DecisionSolution",
     "DynamicNetwork",
@@ -618,6 +619,50 @@ def intervene(network, do):
     parents with the point distribution at its state, the other tables kept."""
     handle = _handle(network)
     return Network(_core.intervene(handle, _checks._evidence(do, "do")))
+
+
+def counterfactual(model, variables, evidence=None, *, do, assume=None):
+    """P(variables in the world where `do` had been done | evidence in this one), as
+    `pgm counterfactual --do`: a Series indexed by state (a MultiIndex over several variables, the
+    last fastest), P(evidence) in .attrs["evidence_probability"]. model: the path of a structural
+    model (pgm's JSON of "kind": "structural"), or a network (a pgm.Network or the path of one)
+    with assume="monotone", which reads each table as one uniform noise through its cumulative
+    column (docs/causal.md); a network alone does not determine counterfactuals."""
+    names = _names(variables, "variables")
+    observed = _checks._evidence(evidence)
+    done = _checks._evidence(do, "do")
+    if not done:
+        raise Error("do: name what had been set in the world asked about, e.g. do={'xOff1': '0'}")
+    if assume is not None:
+        _choice(assume, "assume", ("monotone",), "assumption")
+    if isinstance(model, Network):
+        network = model
+    else:
+        path = _path(model, "model")
+        if _core.holds_structural_model(path):
+            if assume is not None:
+                raise Error(f"'{path}' is a structural model: it needs no assume")
+            return _counterfactual_series(names, _core.counterfactual_structural(path, names, observed, done))
+        network = read_network(path)
+        if not isinstance(network, Network):
+            raise Error(f"'{path}' holds no Bayesian network or structural model")
+    if assume is None:
+        raise Error(
+            "a Bayesian network does not determine counterfactuals: pass a structural model, or "
+            'assume="monotone" to read the network as one (docs/causal.md)'
+        )
+    return _counterfactual_series(names, _core.counterfactual_monotone(_handle(network), names, observed, done))
+
+
+def _counterfactual_series(names, answer):
+    values, states, evidence_probability = answer
+    if len(names) == 1:
+        index = pd.Index(states[0], name=names[0])
+    else:
+        index = pd.MultiIndex.from_product(states, names=names)
+    series = pd.Series(values, index=index, name="probability")
+    series.attrs["evidence_probability"] = evidence_probability
+    return series
 
 
 def backdoor_sets(network, x, y, *, limit=100_000):

@@ -13,10 +13,14 @@
 #include "columns.hpp"
 #include "network_handle.hpp"
 #include "pgm/causal/adjustment.hpp"
+#include "pgm/causal/counterfactual.hpp"
 #include "pgm/causal/d_separation.hpp"
 #include "pgm/causal/dag_check.hpp"
 #include "pgm/causal/intervention.hpp"
 #include "pgm/core/text.hpp"
+#include "pgm/io/json_model.hpp"
+#include "pgm/io/network_file.hpp"
+#include "pgm/io/structural_file.hpp"
 
 namespace py = pybind11;
 
@@ -66,9 +70,35 @@ py::dict check_frame(const network_handle& handle, const py::list& columns, cons
   return out;
 }
 
+/// A counterfactual's table for Python: (probabilities, the last variable fastest; each variable's
+/// states; P(evidence)).
+py::tuple counterfactual_answer(const posterior& answer) {
+  std::vector<std::vector<std::string>> states;
+  for (const auto& v : answer.variables) states.push_back(v.states());
+  const auto& values = answer.table.values();
+  return py::make_tuple(std::vector<double>(values.begin(), values.end()), states, answer.evidence_probability);
+}
+
 }  // namespace
 
 void add_causal(py::module_& m) {
+  m.def("holds_structural_model", [](const std::string& path) {
+    return find_format_of(path) == network_format("json") && declared_model_kind(read_model_text(path)) == "structural";
+  });
+  m.def("counterfactual_structural",
+        [](const std::string& path, const std::vector<std::string>& names,
+           const std::map<std::string, std::string>& seen, const std::map<std::string, std::string>& set) {
+          const evidence observed(seen.begin(), seen.end());
+          const intervention done(set.begin(), set.end());
+          return counterfactual_answer(counterfactual_query(read_structural_model(path), names, observed, done));
+        });
+  m.def("counterfactual_monotone",
+        [](const network_handle& handle, const std::vector<std::string>& names,
+           const std::map<std::string, std::string>& seen, const std::map<std::string, std::string>& set) {
+          const evidence observed(seen.begin(), seen.end());
+          const intervention done(set.begin(), set.end());
+          return counterfactual_answer(monotone_counterfactual_query(handle.network, names, observed, done));
+        });
   m.def("d_separated",
         [](const network_handle& handle, const std::vector<std::string>& x, const std::vector<std::string>& y,
            const std::vector<std::string>& given) { return d_separated(handle.network.structure(), x, y, given); });

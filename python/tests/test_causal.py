@@ -113,3 +113,47 @@ def test_check_refuses_an_unknown_test_in_the_librarys_words(confounded):
         with pytest.raises(pgm.Error) as ours:
             pgm.check(confounded, frame, test=word)
         assert str(by_library.value) == "test: option test of the structure learner 'pc': " + str(ours.value), word
+
+
+TOWER = """{"format": "pgm-model", "version": 1, "kind": "structural",
+  "variables": [{"name": "xOff1", "states": ["0", "1", "2"]}, {"name": "onTop1", "states": ["0", "1"]}],
+  "equations": [
+    {"variable": "xOff1", "parents": [], "noise": [0.25, 0.25, 0.5], "values": [["0", "1", "2"]]},
+    {"variable": "onTop1", "parents": ["xOff1"], "noise": [0.5, 0.3, 0.2],
+     "values": [["1", "1", "0"], ["1", "1", "0"], ["1", "0", "0"]]}]}"""
+
+
+def test_a_counterfactual_on_a_structural_model_is_the_programs(tmp_path):
+    # docs/causal.md's tower: it fell at offset 2, so its noise was 1 or 2 (0.3 : 0.2), and at
+    # offset 0 noise 1 stands.
+    path = tmp_path / "tower.json"
+    path.write_text(TOWER)
+    answer = pgm.counterfactual(path, "onTop1", {"xOff1": 2, "onTop1": 0}, do={"xOff1": 0})
+    assert list(answer.index) == ["0", "1"]
+    assert answer["1"] == pytest.approx(0.6, abs=1e-15)
+    assert answer.attrs["evidence_probability"] == pytest.approx(0.25, abs=1e-15)
+    both = pgm.counterfactual(str(path), ["onTop1", "xOff1"], {"xOff1": 2, "onTop1": 0}, do={"xOff1": 0})
+    assert both[("1", "0")] == pytest.approx(0.6, abs=1e-15)
+    assert both[("1", "2")] == 0.0
+    with pytest.raises(pgm.Error, match="needs no assume"):
+        pgm.counterfactual(path, "onTop1", do={"xOff1": 0}, assume="monotone")
+
+
+def test_a_network_answers_a_counterfactual_only_as_monotone(confounded, tmp_path):
+    with pytest.raises(pgm.Error, match="does not determine counterfactuals"):
+        pgm.counterfactual(confounded, "Y", {"X": 1, "Y": 0}, do={"X": 0})
+    with pytest.raises(pgm.Error, match="unknown assumption 'monotonic'; did you mean 'monotone'"):
+        pgm.counterfactual(confounded, "Y", {"X": 1, "Y": 0}, do={"X": 0}, assume="monotonic")
+    with pytest.raises(pgm.Error, match="do: name what had been set"):
+        pgm.counterfactual(confounded, "Y", {"X": 1, "Y": 0}, do={}, assume="monotone")
+    # Given C, Y = 1 iff its noise ≥ P(Y = 0 | C, X): a unit with Y = 1 at X = 0 keeps it at X = 1,
+    # where Y = 1 is likelier, so P(Y_{X=1} = 1 | C = 0, X = 0, Y = 1) = 1; one with Y = 0 at
+    # X = 0 (noise < 0.9) has Y = 1 at X = 1 when its noise ≥ 0.6: (0.9 − 0.6) / 0.9.
+    up = pgm.counterfactual(confounded, "Y", {"C": 0, "X": 0, "Y": 1}, do={"X": 1}, assume="monotone")
+    assert up["1"] == pytest.approx(1.0, abs=1e-12)
+    down = pgm.counterfactual(confounded, "Y", {"C": 0, "X": 0, "Y": 0}, do={"X": 1}, assume="monotone")
+    assert down["1"] == pytest.approx(0.3 / 0.9, abs=1e-12)
+    path = tmp_path / "confounded.bif"
+    confounded.write(path)
+    from_file = pgm.counterfactual(path, "Y", {"C": 0, "X": 0, "Y": 0}, do={"X": 1}, assume="monotone")
+    assert from_file["1"] == pytest.approx(0.3 / 0.9, abs=1e-12)
