@@ -18,8 +18,6 @@
 #include "pgm/causal/dag_check.hpp"
 #include "pgm/causal/intervention.hpp"
 #include "pgm/core/text.hpp"
-#include "pgm/io/json_model.hpp"
-#include "pgm/io/network_file.hpp"
 #include "pgm/io/structural_file.hpp"
 
 namespace py = pybind11;
@@ -82,9 +80,7 @@ py::tuple counterfactual_answer(const posterior& answer) {
 }  // namespace
 
 void add_causal(py::module_& m) {
-  m.def("holds_structural_model", [](const std::string& path) {
-    return find_format_of(path) == network_format("json") && declared_model_kind(read_model_text(path)) == "structural";
-  });
+  m.def("holds_structural_model", [](const std::string& path) { return holds_structural_model(path); });
   m.def("counterfactual_structural",
         [](const std::string& path, const std::vector<std::string>& names,
            const std::map<std::string, std::string>& seen, const std::map<std::string, std::string>& set) {

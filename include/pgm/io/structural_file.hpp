@@ -38,6 +38,9 @@ PGM_DECL void write_structural_json(std::ostream& out, const structural_model& m
 
 [[nodiscard]] PGM_DECL structural_model parse_structural_json(std::string_view text, const std::string& source);
 
+/// Whether `path` holds a structural model: a pgm JSON model (.json, .json.gz) of that kind.
+[[nodiscard]] PGM_DECL bool holds_structural_model(const std::filesystem::path& path);
+
 /// Reads a structural model from pgm's JSON model.
 [[nodiscard]] PGM_DECL structural_model read_structural_model(const std::filesystem::path& path);
 

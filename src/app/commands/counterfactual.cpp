@@ -12,8 +12,6 @@
 #include "pgm/causal/probability_of_causation.hpp"
 #include "pgm/core/text.hpp"
 #include "pgm/inference/posterior_table.hpp"
-#include "pgm/io/json_model.hpp"
-#include "pgm/io/network_file.hpp"
 #include "pgm/io/structural_file.hpp"
 
 namespace pgm::cli {
@@ -40,10 +38,6 @@ std::pair<std::string, std::string> variable_and_state(const std::string& text, 
     throw model_error(option + ": expected VARIABLE=STATE, found '" + text + "'");
   }
   return {text.substr(0, eq), text.substr(eq + 1)};
-}
-
-bool holds_structural_model(const std::string& path) {
-  return find_format_of(path) == network_format("json") && declared_model_kind(read_model_text(path)) == "structural";
 }
 
 /// The counterfactual distribution on --model: a structural model as the file holds it, or a

@@ -194,7 +194,6 @@ inline posterior query_twin(const bayesian_network& implied, const twin_network&
       free.push_back(node.name());
     }
   }
-  for (const auto& [name, state] : observed) (void)implied.at(name).state(state);
   // Infer what is free, then place the known states.
   posterior inner;
   if (free.empty()) {

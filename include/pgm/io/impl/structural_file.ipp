@@ -10,6 +10,7 @@
 #include "pgm/detail/json_reader.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
+#include "pgm/io/network_format.hpp"
 #include "pgm/io/structural_file.hpp"
 
 namespace pgm {
@@ -124,6 +125,10 @@ PGM_DECL structural_model parse_structural_json(std::string_view text, const std
   } catch (const model_error& e) {
     reader.fail("/equations", e.what());
   }
+}
+
+PGM_DECL bool holds_structural_model(const std::filesystem::path& path) {
+  return find_format_of(path) == network_format("json") && declared_model_kind(read_model_text(path)) == "structural";
 }
 
 PGM_DECL structural_model read_structural_model(const std::filesystem::path& path) {
