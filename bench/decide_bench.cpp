@@ -246,6 +246,58 @@ void prevent_one_plan_by_utility(benchmark::State& state) {
 }
 BENCHMARK(prevent_one_plan_by_utility)->Unit(benchmark::kMicrosecond);
 
+// The same plan through its influence diagram, built and solved as any diagram: the general
+// route best_move's scan of the slice stands in for.
+void prevent_one_plan_by_its_diagram(benchmark::State& state) {
+  const auto table = stacking_table(0.85);
+  const pgm::move_costs costs{.reward = 100, .cost = {{"xOff1", 2}, {"yOff1", 2}, {"xOff2", 2}, {"yOff2", 2}}};
+  double meu = 0;
+  for (auto _ : state) {
+    meu = pgm::solve_decisions(pgm::prevention_diagram(table, 1, 0, all_controllable, costs)).meu;
+    benchmark::DoNotOptimize(meu);
+  }
+  pgm::bench::check(state,
+                    std::abs(meu - pgm::best_move(table, 1, 0, all_controllable, costs).expected_utility) <= 1e-9,
+                    "the diagram and the scan disagree");
+}
+BENCHMARK(prevent_one_plan_by_its_diagram)->Unit(benchmark::kMicrosecond);
+
+// Every configuration of the 625-parameter table by expected utility, as the experiment scores
+// an estimate (best_moves: each slice's members found once), beside best_move one plan at a time.
+const pgm::move_costs stacking_costs{.reward = 1,
+                                     .cost = {{"xOff1", 0.01}, {"yOff1", 0.01}, {"xOff2", 0.01}, {"yOff2", 0.01}}};
+
+void prevent_whole_table_by_utility(benchmark::State& state) {
+  const auto table = stacking_table(0.85);
+  std::vector<pgm::utility_move> moves;
+  for (auto _ : state) {
+    moves = pgm::best_moves(table, 1, all_controllable, stacking_costs);
+    benchmark::DoNotOptimize(moves.data());
+  }
+  pgm::bench::check(state, moves.size() == table.configurations(), "a move per configuration");
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(table.configurations()));
+}
+BENCHMARK(prevent_whole_table_by_utility)->Unit(benchmark::kMillisecond);
+
+void prevent_whole_table_one_plan_at_a_time(benchmark::State& state) {
+  const auto table = stacking_table(0.85);
+  double total = 0;
+  for (auto _ : state) {
+    total = 0;
+    for (std::size_t u = 0; u < table.configurations(); ++u) {
+      total += pgm::best_move(table, 1, u, all_controllable, stacking_costs).expected_utility;
+    }
+    benchmark::DoNotOptimize(total);
+  }
+  double expected = 0;
+  for (const auto& move : pgm::best_moves(table, 1, all_controllable, stacking_costs)) {
+    expected += move.expected_utility;
+  }
+  pgm::bench::check(state, std::abs(total - expected) <= 1e-9 * std::abs(expected), "the two disagree");
+  state.SetItemsProcessed(state.iterations() * static_cast<std::int64_t>(table.configurations()));
+}
+BENCHMARK(prevent_whole_table_one_plan_at_a_time)->Unit(benchmark::kMillisecond);
+
 void prevent_one_plan_by_epsilon(benchmark::State& state) {
   const auto table = stacking_table(0.85);
   std::size_t target = 0;

@@ -440,6 +440,24 @@ TEST_F(cli_test, experiment_output_folder_is_checked_first) {
   expect_failure("experiment --scenario bogus --out " + path("r").string(), "unknown scenario 'bogus'", path("r"));
 }
 
+// --reward and --move-cost add the rule of highest expected utility's metrics; a cost of a
+// variable the target cannot move is noted, a malformed one refused before anything is written.
+TEST_F(cli_test, experiment_with_move_costs_scores_both_prevention_rules) {
+  const std::string base = "experiment --scenario 2-stack-reality --reps 1 --threads 1 --no-auto";
+  const auto r = run(base + " --reward 1 --move-cost xOff1=0.01,xOff2=0.01,colour=3 --out " + path("r").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.err, HasSubstr("the cost of moving 'colour' is left out: it is no controllable parent of 'onTop2'"));
+  const auto summary = slurp(path("r/summary.csv"));
+  for (const auto* metric : {",prevention_cost,", ",utility_prevention,", ",utility_prevention_cost,"}) {
+    EXPECT_THAT(summary, HasSubstr(metric));
+  }
+  expect_failure(base + " --reward 1 --move-cost xOff1 --out " + path("bad").string(),
+                 "--move-cost: expected NAME=COST, found 'xOff1'", path("bad"));
+  const auto needs = run(base + " --move-cost xOff1=1 --out " + path("bad").string());
+  EXPECT_EQ(needs.code, 2);
+  EXPECT_THAT(needs.err, HasSubstr("--move-cost requires --reward"));
+}
+
 // --data-cache keeps each task's data between runs; a later run reads them and gets the same
 // results. Without it, nothing but the results folder is written.
 TEST_F(cli_test, experiment_data_cache_is_written_once_and_read_by_a_later_run) {

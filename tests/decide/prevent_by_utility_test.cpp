@@ -7,10 +7,12 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <random>
 
 #include "pgm/core/mixed_radix.hpp"
 #include "pgm/decide/prevent.hpp"
+#include "pgm/decide/solve_decisions.hpp"
 
 namespace pgm::prevent_by_utility_tests {
 namespace {
@@ -92,6 +94,11 @@ TEST(prevent_by_utility_test, the_best_move_equals_enumeration_of_every_reachabl
     const auto move = best_move(table, 1, u, flags.span(), costs);
     const double expected = best_by_enumeration(table, u, controllable, costs);
     EXPECT_NEAR(move.expected_utility, expected, 1e-12 * std::max(1.0, std::abs(expected)));
+    // The plan's influence diagram, solved as any other, is worth the same (where it decides).
+    if (std::find(controllable.begin(), controllable.end(), true) != controllable.end()) {
+      const auto solved = solve_decisions(prevention_diagram(table, 1, u, flags.span(), costs));
+      EXPECT_NEAR(solved.meu, expected, 1e-12 * std::max(1.0, std::abs(expected)));
+    }
     EXPECT_NEAR(move.expected_utility, costs.reward * move.success_probability - move.cost,
                 1e-12 * costs.reward + 1e-12);
     // Only controllable variables move.
@@ -183,6 +190,87 @@ TEST(prevent_by_utility_test, bad_costs_are_refused_by_name) {
       },
       ThrowsMessage<model_error>(HasSubstr("'colour' has no units")));
   EXPECT_EQ(best_move(categorical, 1, 0, yes, {.reward = 10, .cost = {{"colour", 1}}}).target, 1u);
+}
+
+TEST(prevent_by_utility_test, the_best_moves_of_a_whole_table_are_best_move_at_each_configuration) {
+  for (unsigned seed = 0; seed < 30; ++seed) {
+    SCOPED_TRACE(seed);
+    std::mt19937 rng(seed + 2000);
+    const auto table = random_success_table(seed + 500, 2 + seed % 3);
+    std::vector<bool> controllable(table.parents().size());
+    for (std::size_t p = 0; p < controllable.size(); ++p) controllable[p] = rng() % 3 != 0;
+    move_costs costs{.reward = std::uniform_real_distribution<double>(0, 100)(rng)};
+    costs.unit = seed % 2 ? move_costs::per::units : move_costs::per::steps;
+    for (std::size_t p = 0; p < controllable.size(); ++p) {
+      if (controllable[p] && rng() % 4 != 0) {
+        costs.cost[table.parents()[p].name()] = std::uniform_real_distribution<double>(0, 20)(rng);
+      }
+    }
+    const mask flags(controllable);
+    const auto moves = best_moves(table, 1, flags.span(), costs);
+    ASSERT_EQ(moves.size(), table.configurations());
+    for (std::size_t u = 0; u < moves.size(); ++u) {
+      const auto one = best_move(table, 1, u, flags.span(), costs);
+      EXPECT_EQ(moves[u].target, one.target) << u;
+      EXPECT_EQ(moves[u].expected_utility, one.expected_utility) << u;
+      EXPECT_NEAR(moves[u].expected_utility, costs.reward * moves[u].success_probability - moves[u].cost,
+                  1e-12 * std::max(1.0, std::abs(one.expected_utility)));
+      EXPECT_EQ(moves[u].success_probability, table(state_index(1), config_index(moves[u].target)));
+    }
+  }
+}
+
+TEST(prevent_by_utility_test, the_outcome_of_a_rule_is_its_success_by_the_truth_less_what_its_moves_cost) {
+  // Three bins of x; the estimate believes in x = 2, the truth in x = 1.
+  const auto x = variable::intervals("x", {0, 1, 2, 3});
+  const cpt<double> estimate(variable("ok", {"0", "1"}), {x}, {0.9, 0.1, 0.5, 0.5, 0.1, 0.9});
+  const cpt<double> truth(variable("ok", {"0", "1"}), {x}, {0.8, 0.2, 0.3, 0.7, 0.6, 0.4});
+  const bool yes[] = {true};
+  const std::vector<double> weights{1, 2, 1};
+  const move_costs costs{.reward = 10, .cost = {{"x", 1}}};
+  // ε = 0.8: every configuration moves to x = 2 (2, 1 and 0 steps).
+  const auto by_epsilon = prevention_targets(estimate, 1, yes, {.epsilon = 0.8});
+  EXPECT_EQ(by_epsilon, (std::vector<std::size_t>{2, 2, 2}));
+  const auto outcome = prevention_outcome_of(by_epsilon, truth, 1, yes, weights, costs);
+  EXPECT_DOUBLE_EQ(outcome.success, 0.4);
+  EXPECT_DOUBLE_EQ(outcome.cost, (2 * 1 + 1 * 2 + 0 * 1) / 4.0);
+  EXPECT_DOUBLE_EQ(outcome.utility, 10 * 0.4 - 1);
+  EXPECT_DOUBLE_EQ(outcome.success, failure_prevention_rate(estimate, truth, 1, yes, weights, {.epsilon = 0.8}));
+  // By utility on the estimate: from x = 0, 10·0.9 − 2 = 7 beats 10·0.5 − 1 = 4 and 1; from
+  // x = 1, 9 − 1 = 8 beats 5.
+  const auto moves = best_moves(estimate, 1, yes, costs);
+  std::vector<std::size_t> by_utility;
+  for (const auto& move : moves) by_utility.push_back(move.target);
+  EXPECT_EQ(by_utility, (std::vector<std::size_t>{2, 2, 2}));
+  // At 5 a step no move pays: from x = 0, 9 − 10 = −1 and 5 − 5 = 0 against 1 for staying;
+  // from x = 1, 9 − 5 = 4 against 5.
+  const auto dear = best_moves(estimate, 1, yes, {.reward = 10, .cost = {{"x", 5}}});
+  EXPECT_EQ(dear[0].target, 0u);
+  EXPECT_EQ(dear[1].target, 1u);
+  const auto stayed = prevention_outcome_of(std::vector<std::size_t>{0, 1, 2}, truth, 1, yes, weights, costs);
+  EXPECT_DOUBLE_EQ(stayed.success, (0.2 + 2 * 0.7 + 0.4) / 4);
+  EXPECT_DOUBLE_EQ(stayed.cost, 0);
+  // Bad input.
+  const bool no[] = {false};
+  EXPECT_THAT([&] { (void)prevention_outcome_of(by_epsilon, truth, 1, no, weights, {}); },
+              ThrowsMessage<model_error>(HasSubstr("moves 'x', which is not controllable")));
+  EXPECT_THAT(
+      [&] {
+        (void)prevention_outcome_of(std::vector<std::size_t>{2, 2}, truth, 1, yes, weights, {});
+      },
+      ThrowsMessage<model_error>(HasSubstr("expected 3 prevention targets, got 2")));
+  EXPECT_THAT(
+      [&] {
+        (void)prevention_outcome_of(std::vector<std::size_t>{2, 2, 7}, truth, 1, yes, weights, {});
+      },
+      ThrowsMessage<model_error>(HasSubstr("prevention target 7 is out of range")));
+  EXPECT_THAT(
+      [&] {
+        (void)prevention_outcome_of(by_epsilon, truth, 1, yes, std::vector<double>{0, 0, 0}, {});
+      },
+      ThrowsMessage<model_error>(HasSubstr("sum to zero")));
+  EXPECT_THAT([&] { (void)best_moves(estimate, 2, yes, costs); },
+              ThrowsMessage<model_error>(HasSubstr("success state 2 is out of range")));
 }
 
 }  // namespace

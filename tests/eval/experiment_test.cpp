@@ -8,6 +8,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <tuple>
 
 #include "eval/tiny_scenario.hpp"
 
@@ -111,6 +113,47 @@ TEST(experiment_test, prevention_uses_the_scenarios_epsilon) {
   other.prevention.epsilon = 0.3;
   const auto c = run_experiment(usual, deterministic_tasks(), other);
   for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].value, c[i].value) << i;
+}
+
+// With move costs, both rules' moves are costed and the rule of highest expected utility is
+// scored beside the ε-rule; the points without costs stay what they were. On θ* itself the
+// utility rule is best by the truth, so its net utility is never below the ε-rule's.
+TEST(experiment_test, move_costs_score_the_rule_of_highest_expected_utility_beside_the_epsilon_rule) {
+  const auto s = parse_scenario(tiny_scenario, "tiny.json");
+  const auto plain = run_experiment(s, deterministic_tasks(), {.seed = 7, .threads = 1});
+  std::vector<std::string> notes;
+  experiment_options costed{.seed = 7, .threads = 1};
+  costed.costs = move_costs{.reward = 1, .cost = {{"x1", 0.1}, {"x2", 0.1}, {"x9", 1}}};
+  costed.note = [&](const std::string& text) { notes.push_back(text); };
+  const auto points = run_experiment(s, deterministic_tasks(), costed);
+  EXPECT_THAT(notes, ::testing::Contains(HasSubstr("the cost of moving 'x9' is left out")));
+  std::vector<experiment_point> without;
+  std::map<std::tuple<std::string, std::string, std::size_t, std::size_t>, std::map<experiment_metric, double>> by;
+  for (const auto& p : points) {
+    const bool new_metric = p.metric == experiment_metric::prevention_cost ||
+                            p.metric == experiment_metric::utility_prevention ||
+                            p.metric == experiment_metric::utility_prevention_cost;
+    if (!new_metric) without.push_back(p);
+    by[{p.strategy, p.weight, p.rows, p.repetition}][p.metric] = p.value;
+  }
+  ASSERT_EQ(without.size(), plain.size());
+  for (std::size_t i = 0; i < plain.size(); ++i) EXPECT_EQ(without[i].value, plain[i].value) << i;
+  std::size_t oracles = 0;
+  for (const auto& [key, m] : by) {
+    ASSERT_EQ(m.count(experiment_metric::utility_prevention), 1U);
+    ASSERT_EQ(m.count(experiment_metric::prevention_cost), 1U);
+    const double cost = m.at(experiment_metric::utility_prevention_cost);
+    EXPECT_GE(cost, 0.0);
+    EXPECT_GE(m.at(experiment_metric::prevention_cost), 0.0);
+    if (std::get<0>(key) != "oracle") continue;
+    ++oracles;
+    const double by_epsilon = m.at(experiment_metric::failure_prevention) - m.at(experiment_metric::prevention_cost);
+    EXPECT_GE(m.at(experiment_metric::utility_prevention) - cost, by_epsilon - 1e-12);
+    // The deterministic task: a run fails only at an offset of 2, and moving it a step or two
+    // costs far less than the success it gains, so every failure is moved to success.
+    EXPECT_DOUBLE_EQ(m.at(experiment_metric::utility_prevention), 1.0);
+  }
+  EXPECT_GT(oracles, 0U);
 }
 
 TEST(experiment_test, the_split_is_a_uniform_random_subset_fixed_by_the_seed) {

@@ -70,7 +70,8 @@ TEST(result_tables_test, a_broken_summary_is_an_error_naming_line_and_column) {
   EXPECT_THAT([&] { static_cast<void>(parse_summary_csv(header + "a,b,mle,0,1,max_diference,1,0,3\n", "s.csv")); },
               ThrowsMessage<parse_error>(HasSubstr("s.csv:2:13: column 'metric': unknown metric 'max_diference'; did "
                                                    "you mean 'max_difference'? (known: max_difference, "
-                                                   "mean_difference, failure_prevention, chosen_w)")));
+                                                   "mean_difference, failure_prevention, chosen_w, prevention_cost, "
+                                                   "utility_prevention, utility_prevention_cost)")));
   EXPECT_THAT([] { static_cast<void>(parse_summary_csv("", "s.csv")); },
               ThrowsMessage<parse_error>(HasSubstr("the file is empty")));
 }

@@ -65,6 +65,10 @@ PGM_DECL void check_epsilon(double epsilon);
 PGM_DECL void check_prevention_inputs(const cpt<double>& table, std::size_t success_state,
                                       std::span<const bool> controllable, const prevention_options& options);
 
+/// The sum of one weight per configuration; throws model_error for a wrong count, a negative
+/// or non-finite weight, or a zero sum.
+PGM_DECL double checked_weight_total(std::span<const double> weights, std::size_t configurations);
+
 /// Per controllable parent, the squared midpoint differences between its states.
 PGM_DECL std::vector<std::vector<double>> squared_midpoint_gaps(const cpt<double>& table,
                                                                 const std::vector<std::size_t>& dims);

@@ -37,6 +37,7 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/limits.hpp"
 #include "pgm/decide/prevent.hpp"
+#include "pgm/decide/prevent_by_utility.hpp"
 #include "pgm/detail/parallel_for.hpp"
 #include "pgm/detail/splitmix.hpp"
 #include "pgm/eval/family_data.hpp"
@@ -75,6 +76,11 @@ struct experiment_options {
   bool automatic_lines = true;  ///< add w = auto and the proposed map
   /// Failure prevention's options; its threshold ε is each scenario's `epsilon`.
   prevention_options prevention;
+  /// With these, each estimate is also scored by the rule of highest expected utility (the
+  /// reward of success less what moving costs) and both rules' moves are costed (the metrics
+  /// prevention_cost, utility_prevention, utility_prevention_cost). A cost of a variable that is
+  /// no controllable parent of a target is left out there, with a note.
+  std::optional<move_costs> costs;
   std::function<void(std::size_t done, std::size_t total)> progress;
   std::function<void(const std::string&)> note;
   /// Split the jobs over pgm::processes() (see the file comment).
@@ -129,6 +135,8 @@ struct prepared_target {
   /// The transferred priors, by map: the scenario's for each strategy, and the proposed map's.
   std::map<std::string, transferred_prior, std::less<>> priors;
   std::vector<estimator_line> lines;
+  /// experiment_options::costs less those of variables that are no controllable parent here.
+  std::optional<move_costs> costs;
 };
 
 namespace detail {
@@ -139,6 +147,11 @@ namespace detail {
 [[nodiscard]] inline std::uint64_t data_seed(std::uint64_t base_seed, std::string_view task) {
   return mix_seed(base_seed, seed_of(task));
 }
+
+/// The costs of moving the target's controllable parents; a cost of any other variable is left
+/// out with a note.
+[[nodiscard]] PGM_DECL move_costs costs_of_target(const prepared_target& target, const move_costs& costs,
+                                                  const std::function<void(const std::string&)>& note);
 
 /// Thrown to skip the preparation of a process that has no jobs.
 struct nothing_to_prepare {};

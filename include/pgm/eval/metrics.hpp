@@ -25,11 +25,19 @@ enum class experiment_metric {
   max_difference,      ///< Max-Difference against θ*
   mean_difference,     ///< Mean-Difference against θ*
   failure_prevention,  ///< the share of failures prevented
-  chosen_w             ///< the weight an automatic line chose
+  chosen_w,            ///< the weight an automatic line chose
+  // With move costs (experiment_options::costs): the ε-rule's cost, and the rule of highest
+  // expected utility's success and cost (pgm/decide/prevent_by_utility.hpp).
+  prevention_cost,         ///< the mean cost of the ε-rule's moves
+  utility_prevention,      ///< success after the moves of highest expected utility
+  utility_prevention_cost  ///< the mean cost of those moves
 };
 
-inline constexpr std::array experiment_metrics{experiment_metric::max_difference, experiment_metric::mean_difference,
-                                               experiment_metric::failure_prevention, experiment_metric::chosen_w};
+inline constexpr std::array experiment_metrics{
+    experiment_metric::max_difference,         experiment_metric::mean_difference,
+    experiment_metric::failure_prevention,     experiment_metric::chosen_w,
+    experiment_metric::prevention_cost,        experiment_metric::utility_prevention,
+    experiment_metric::utility_prevention_cost};
 
 [[nodiscard]] constexpr std::string_view to_string(experiment_metric metric) noexcept {
   switch (metric) {
@@ -41,6 +49,12 @@ inline constexpr std::array experiment_metrics{experiment_metric::max_difference
       return "failure_prevention";
     case experiment_metric::chosen_w:
       return "chosen_w";
+    case experiment_metric::prevention_cost:
+      return "prevention_cost";
+    case experiment_metric::utility_prevention:
+      return "utility_prevention";
+    case experiment_metric::utility_prevention_cost:
+      return "utility_prevention_cost";
   }
   return "?";
 }

@@ -7,6 +7,7 @@
 
 #include "cli/common.hpp"
 #include "cli/external_programs.hpp"
+#include "cli/move_cost_options.hpp"
 #include "cli/progress.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/limits.hpp"
@@ -31,6 +32,7 @@ struct experiment_arguments {
   std::string tasks_dir;
   std::string out = "results";
   std::string data_cache;
+  move_cost_arguments utility;
 };
 
 void run_experiment_command(const experiment_arguments& args) {
@@ -45,6 +47,7 @@ void run_experiment_command(const experiment_arguments& args) {
   options.experiment.automatic_lines = !args.no_automatic;
   options.experiment.across_processes = true;  // under mpirun, the jobs are split over the processes
   options.experiment.prevention.metric = parse_distance(args.distance);
+  options.experiment.costs = move_costs_of(args.utility);
   // One bar per scenario, ended when its last repetition is done so that the next notes start a line.
   std::optional<progress_bar> bar;
   options.progress = [&bar](const scenario& s, std::size_t done, std::size_t total) {
@@ -90,6 +93,10 @@ void add_experiment_command(CLI::App& app) {
   cmd->add_option("--distance", args->distance, "Failure prevention's distance: steps (bins) or units")
       ->check(CLI::IsMember(known_distances()))
       ->capture_default_str();
+  add_move_cost_options(*cmd, args->utility,
+                        "Also prevent by the move of highest expected utility (success worth this much, failure 0, "
+                        "less what moving costs) and cost both rules' moves: the metrics prevention_cost, "
+                        "utility_prevention and utility_prevention_cost (docs/decide.md)");
   cmd->add_flag("--no-auto", args->no_automatic, "Leave out the lines of w = auto and of the proposed map");
   cmd->add_option("--tasks-dir", args->tasks_dir,
                   "Folder with the task files and scenarios/ (default: the installed tasks)");

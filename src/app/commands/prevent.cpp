@@ -14,6 +14,7 @@
 
 #include "cli/common.hpp"
 #include "cli/episode.hpp"
+#include "cli/move_cost_options.hpp"
 #include "commands/decide_common.hpp"
 #include "pgm/core/text.hpp"
 #include "pgm/decide/assignment.hpp"
@@ -30,9 +31,7 @@ struct prevent_arguments {
   std::optional<std::string> controllable;  // given but empty is an error, not the default
   double epsilon = 0.8;
   std::string distance = "steps";
-  std::optional<double> reward;
-  std::string move_cost;
-  std::string per = "steps";
+  move_cost_arguments utility;
   std::string format = "text";
   bool dynamic = false;
   std::string data;
@@ -82,27 +81,10 @@ void print_counterfactual(const bayesian_network& network, const explanation& wh
   }
 }
 
-/// "x=1.5,y=2" as costs per variable.
-std::map<std::string, double, std::less<>> parse_move_costs(const std::string& text) {
-  std::map<std::string, double, std::less<>> costs;
-  if (text.empty()) return costs;
-  for (const auto& piece : split_list(text, "--move-cost")) {
-    const auto eq = piece.find('=');
-    const auto number = eq == std::string::npos ? std::nullopt : text::parse_double(piece.substr(eq + 1));
-    if (!number) throw model_error("--move-cost: expected NAME=COST, found '" + piece + "'");
-    if (!costs.emplace(piece.substr(0, eq), *number).second) {
-      throw model_error("--move-cost names '" + piece.substr(0, eq) + "' twice");
-    }
-  }
-  return costs;
-}
-
 /// The move of highest expected utility (--reward): prevention as a decision.
 void print_best_move(const prevent_arguments& args, const prevention_plan& plan, const bayesian_network& network,
                      const assignment& planned, const std::vector<std::string>& controllable) {
-  const move_costs costs{.reward = *args.reward,
-                         .cost = parse_move_costs(args.move_cost),
-                         .unit = args.per == "units" ? move_costs::per::units : move_costs::per::steps};
+  const auto costs = *move_costs_of(args.utility);
   const auto [move, why] = prevent_by_utility(plan, controllable, costs);
   if (args.format == "json") {
     std::string out = "{\"success\": " + nlohmann::json(why.success_variable + "=" + why.success_state).dump() +
@@ -128,7 +110,7 @@ void print_best_move(const prevent_arguments& args, const prevention_plan& plan,
   std::cout << "success: " << why.success_variable << "=" << why.success_state << '\n';
   std::cout << "predicted success probability: " << text::format_short(why.predicted) << '\n';
   std::cout << "best move by expected utility (reward " << text::format_short(costs.reward)
-            << " for success, costs per " << (args.per == "units" ? "unit moved" : "bin step") << "): expected utility "
+            << " for success, costs per " << cost_unit_label(costs) << "): expected utility "
             << text::format_short(move.expected_utility) << " (success " << text::format_short(move.success_probability)
             << ", cost " << text::format_short(move.cost) << ")\n";
   if (why.responsible().empty()) {
@@ -146,7 +128,7 @@ void run_prevent_over_time(const prevent_arguments& args) {
   };
   refuse(!args.decision.assign.empty(), "--assign");
   refuse(args.decision.marginalize, "--marginalize");
-  refuse(args.reward.has_value(), "--reward");
+  refuse(args.utility.reward.has_value(), "--reward");
   if (args.data.empty()) throw error("--dynamic needs --data, the episode so far in long form (episode,t,<variables>)");
   if (args.decision.success.empty()) throw error("--dynamic needs --success, e.g. --success onTop=1");
   if (!args.controllable || args.controllable->empty()) {
@@ -190,7 +172,7 @@ void run_prevent(const prevent_arguments& args) {
     return;
   }
   if (!args.data.empty() || args.steps != 0) throw error("--data and --steps apply with --dynamic");
-  if (!args.reward && args.format != "text") throw error("--format applies with --reward or --dynamic");
+  if (!args.utility.reward && args.format != "text") throw error("--format applies with --reward or --dynamic");
   if (args.decision.assign.empty()) throw CLI::RequiredError("--assign");
   const auto model = read_decision_model(args.decision.model, args.decision.success);
   const auto& network = model.network;
@@ -208,7 +190,7 @@ void run_prevent(const prevent_arguments& args) {
   options.metric = parse_distance(args.distance);
   const auto plan = plan_prevention(network, model.success, planned, controllable, options,
                                     {.marginalize_missing = args.decision.marginalize});
-  if (args.reward) {
+  if (args.utility.reward) {
     print_best_move(args, plan, network, planned, controllable);
     return;
   }
@@ -258,18 +240,9 @@ void add_prevent_command(CLI::App& app) {
                   "Nearness: steps (bins moved) or units (Euclidean distance between interval midpoints)")
       ->check(CLI::IsMember(known_distances()))
       ->capture_default_str();
-  auto* reward = cmd->add_option("--reward", args->reward,
-                                 "Choose the move of highest expected utility instead: success is worth this much, "
-                                 "failure 0, less what moving costs (--move-cost)")
-                     ->check(number_between(0, std::numeric_limits<double>::infinity(), false, true));
-  cmd->add_option("--move-cost", args->move_cost,
-                  "With --reward: the cost of moving each variable per bin step (or unit, --per units), e.g. "
-                  "\"xOff2=2,yOff2=2\"; a controllable variable not named moves for free")
-      ->needs(reward);
-  cmd->add_option("--per", args->per, "With --reward: costs per bin step (steps) or per unit moved (units)")
-      ->check(CLI::IsMember({"steps", "units"}))
-      ->needs(reward)
-      ->capture_default_str();
+  add_move_cost_options(*cmd, args->utility,
+                        "Choose the move of highest expected utility instead: success is worth this much, failure 0, "
+                        "less what moving costs (--move-cost)");
   cmd->add_option("--format", args->format,
                   "With --reward or --dynamic: text or json (numbers to 17 significant digits)")
       ->check(CLI::IsMember({"text", "json"}))

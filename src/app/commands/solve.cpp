@@ -69,10 +69,12 @@ evidence_set evidence_of(const solve_arguments& args, const markov_network& mode
 
 /// Ends the process when --time-limit passes before the answer is computed: an exact engine
 /// cannot stop half way with an answer, and nothing has been written yet. bp and gibbs are given
-/// the time left less a margin, so they stop on their own with what they have.
+/// the time left less a margin, so they stop on their own with what they have; asked for by
+/// name, they are stopped only if still at work a grace period later (on a starved machine the
+/// margin alone can be too short to reduce their messages to marginals).
 class time_limit_guard {
  public:
-  explicit time_limit_guard(double seconds) : seconds_(seconds) {
+  time_limit_guard(double seconds, bool stops_on_its_own) : seconds_(seconds), stops_on_its_own_(stops_on_its_own) {
     if (std::isfinite(seconds)) watcher_ = std::thread([this] { watch(); });
   }
   time_limit_guard(const time_limit_guard&) = delete;
@@ -98,15 +100,20 @@ class time_limit_guard {
 
  private:
   void watch() {
+    const double grace = stops_on_its_own_ ? std::max(1.0, seconds_) : 0.0;
     std::unique_lock lock(mutex_);
-    if (done_changed_.wait_for(lock, std::chrono::duration<double>(seconds_), [this] { return done_; })) return;
-    std::cerr << "pgm: error: solve did not finish within --time-limit " << text::format_short(seconds_)
-              << " s, so nothing was written; bp and gibbs stop at the limit with the answer they have (--engine bp)"
+    if (done_changed_.wait_for(lock, std::chrono::duration<double>(seconds_ + grace), [this] { return done_; })) {
+      return;
+    }
+    std::cerr << "pgm: error: solve did not finish within --time-limit " << text::format_short(seconds_) << " s";
+    if (stops_on_its_own_) std::cerr << " (and a grace of " << text::format_short(grace) << " s)";
+    std::cerr << ", so nothing was written; bp and gibbs stop at the limit with the answer they have (--engine bp)"
               << std::endl;
     std::_Exit(1);
   }
 
   double seconds_;
+  bool stops_on_its_own_;
   std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
   std::mutex mutex_;
   std::condition_variable done_changed_;
@@ -153,7 +160,7 @@ void run_solve(const solve_arguments& args) {
   }
   pgm::check_output_path(args.out);
   const auto started = std::chrono::steady_clock::now();
-  time_limit_guard limit(args.time_limit);
+  time_limit_guard limit(args.time_limit, args.engine == "bp" || args.engine == "gibbs");
   solve_report report;
   std::string text;
   if (is_uai(args.model)) {

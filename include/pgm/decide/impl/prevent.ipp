@@ -224,6 +224,24 @@ PGM_DECL std::size_t prevention_target(const cpt<double>& estimated, std::size_t
   return targets[configuration];
 }
 
+namespace detail {
+
+PGM_DECL double checked_weight_total(std::span<const double> weights, std::size_t configurations) {
+  if (weights.size() != configurations) {
+    throw model_error("expected " + std::to_string(configurations) + " configuration weights, got " +
+                      std::to_string(weights.size()));
+  }
+  double total = 0.0;
+  for (double w : weights) {
+    if (!std::isfinite(w) || w < 0.0) throw model_error("configuration weights must be finite and non-negative");
+    total += w;
+  }
+  if (!(total > 0.0)) throw model_error("the configuration weights sum to zero");
+  return total;
+}
+
+}  // namespace detail
+
 PGM_DECL double failure_prevention_rate(const cpt<double>& estimated, const cpt<double>& truth,
                                         std::size_t success_state, std::span<const bool> controllable,
                                         std::span<const double> configuration_weights,
@@ -231,16 +249,7 @@ PGM_DECL double failure_prevention_rate(const cpt<double>& estimated, const cpt<
   if (estimated.parent_radix() != truth.parent_radix() || estimated.child_cardinality() != truth.child_cardinality()) {
     throw model_error("the estimated and the true table of '" + estimated.child().name() + "' differ in shape");
   }
-  if (configuration_weights.size() != estimated.configurations()) {
-    throw model_error("expected " + std::to_string(estimated.configurations()) + " configuration weights, got " +
-                      std::to_string(configuration_weights.size()));
-  }
-  double total = 0.0;
-  for (double w : configuration_weights) {
-    if (!std::isfinite(w) || w < 0.0) throw model_error("configuration weights must be finite and non-negative");
-    total += w;
-  }
-  if (!(total > 0.0)) throw model_error("the configuration weights sum to zero");
+  const double total = detail::checked_weight_total(configuration_weights, estimated.configurations());
   const auto targets = prevention_targets(estimated, success_state, controllable, options);
   const auto j = truth.child_cardinality();
   double sum = 0.0;

@@ -4,12 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include "pgm/core/mixed_radix.hpp"
+#include "pgm/decide/prevent.hpp"
 #include "pgm/decide/prevent_by_utility.hpp"
-#include "pgm/decide/solve_decisions.hpp"
 
 namespace pgm {
 namespace detail {
@@ -52,16 +53,81 @@ PGM_DECL std::vector<double> cost_rates(const cpt<double>& table, std::span<cons
   return rates;
 }
 
-PGM_DECL double utility_of(const cpt<double>& table, std::size_t success_state, const std::vector<std::size_t>& from,
-                           const std::vector<std::size_t>& to, const std::vector<double>& rates,
-                           const move_costs& costs, double* cost = nullptr) {
-  double total = 0;
-  for (std::size_t p = 0; p < from.size(); ++p) {
-    total += move_cost(table.parents()[p], from[p], to[p], rates[p], costs.unit);
+slice_mover::slice_mover(const cpt<double>& table, std::size_t success_state, std::span<const bool> controllable,
+                         const move_costs& costs)
+    : table_(table), success_state_(success_state), reward_(costs.reward) {
+  check_prevention_inputs(table, success_state, controllable, {});
+  const auto rates = cost_rates(table, controllable, costs);
+  std::vector<std::size_t> cards;
+  for (std::size_t p = 0; p < controllable.size(); ++p) {
+    if (!controllable[p]) continue;
+    const auto& v = table.parents()[p];
+    const auto k = v.cardinality();
+    moved_.push_back(p);
+    cards.push_back(k);
+    auto& matrix = cost_between_.emplace_back(k * k);
+    for (std::size_t a = 0; a < k; ++a) {
+      for (std::size_t b = 0; b < k; ++b) matrix[a * k + b] = move_cost(v, a, b, rates[p], costs.unit);
+    }
   }
-  if (cost != nullptr) *cost = total;
-  const double success = table(index_at<state_index>(success_state), table.configuration(to));
-  return costs.reward * success - total;
+  cards_ = cards;
+  const mixed_radix local(cards);
+  const auto& radix = table.parent_radix();
+  const auto m = moved_.size();
+  digits_.assign(local.size() * m, 0);
+  offset_.assign(local.size(), 0);
+  std::vector<std::size_t> digits(m);
+  for (std::size_t l = 0; l < local.size(); ++l) {
+    local.decode(l, digits);
+    for (std::size_t k = 0; k < m; ++k) {
+      digits_[l * m + k] = static_cast<std::uint32_t>(digits[k]);
+      offset_[l] += digits[k] * radix.stride(moved_[k]);
+    }
+  }
+}
+
+PGM_DECL void slice_mover::members_of(std::size_t u, std::vector<std::size_t>& members) const {
+  const auto& radix = table_.parent_radix();
+  std::size_t base = u;
+  for (const auto p : moved_) base -= (u / radix.stride(p)) % radix.radix(p) * radix.stride(p);
+  members.resize(offset_.size());
+  for (std::size_t l = 0; l < offset_.size(); ++l) members[l] = base + offset_[l];
+}
+
+PGM_DECL std::size_t slice_mover::local_of(std::size_t u) const {
+  const auto& radix = table_.parent_radix();
+  std::size_t local = 0;
+  for (std::size_t k = 0; k < moved_.size(); ++k) {
+    local = local * cards_[k] + (u / radix.stride(moved_[k])) % radix.radix(moved_[k]);
+  }
+  return local;
+}
+
+PGM_DECL utility_move slice_mover::best_from(std::size_t from, const std::vector<std::size_t>& members) const {
+  const auto j = table_.child_cardinality();
+  const auto values = table_.values();
+  utility_move best{.target = members[from], .expected_utility = -std::numeric_limits<double>::infinity()};
+  std::size_t fewest = moved_.size() + 1;
+  for (std::size_t to = 0; to < members.size(); ++to) {
+    double cost = 0;
+    std::size_t changed = 0;
+    for (std::size_t k = 0; k < moved_.size(); ++k) {
+      const auto a = digits_[from * moved_.size() + k], b = digits_[to * moved_.size() + k];
+      cost += cost_between_[k][a * cards_[k] + b];
+      changed += a != b;
+    }
+    const double success = values[members[to] * j + success_state_];
+    const double utility = reward_ * success - cost;
+    const double tolerance = 1e-12 * std::max(1.0, std::abs(best.expected_utility));
+    const bool better = utility > best.expected_utility + tolerance ||
+                        (utility >= best.expected_utility - tolerance &&
+                         (changed < fewest || (changed == fewest && members[to] < best.target)));
+    if (better) {
+      best = {.target = members[to], .expected_utility = utility, .success_probability = success, .cost = cost};
+      fewest = changed;
+    }
+  }
+  return best;
 }
 
 }  // namespace detail
@@ -115,50 +181,69 @@ PGM_DECL influence_diagram prevention_diagram(const cpt<double>& table, std::siz
 
 PGM_DECL utility_move best_move(const cpt<double>& table, std::size_t success_state, std::size_t configuration,
                                 std::span<const bool> controllable, const move_costs& costs) {
-  const auto rates = detail::cost_rates(table, controllable, costs);
-  const auto from = table.parent_codes(config_index(configuration));
-  utility_move move;
-  if (std::none_of(controllable.begin(), controllable.end(), [](bool c) { return c; })) {  // nothing moves
-    move.target = configuration;
-    move.expected_utility = detail::utility_of(table, success_state, from, from, rates, costs, &move.cost);
-    move.success_probability = table(index_at<state_index>(success_state), config_index(configuration));
-    return move;
+  if (configuration >= table.configurations()) {
+    throw model_error("configuration " + std::to_string(configuration) + " is out of range for '" +
+                      table.child().name() + "'");
   }
-  const auto diagram = prevention_diagram(table, success_state, configuration, controllable, costs);
-  const auto solution = solve_decisions(diagram);
-  // Follow the policies from the first decision: each action given the ones before.
-  std::vector<std::size_t> action(diagram.size(), 0);
-  for (const auto& policy : solution.policies) {
-    std::vector<std::size_t> seen;
-    std::vector<std::size_t> cards;
-    for (const auto id : policy.observed) {
-      seen.push_back(action[id.value()]);
-      cards.push_back(diagram.at(id).cardinality());
-    }
-    action[policy.decision.value()] = policy.actions[mixed_radix(cards).encode(seen)];
-  }
-  auto to = from;
-  for (std::size_t p = 0, k = 0; p < from.size(); ++p) {
-    if (controllable[p]) to[p] = action[k++];
-  }
-  // Of equally good moves, stay, or else keep a variable where moving it gains nothing.
-  double best = detail::utility_of(table, success_state, from, to, rates, costs);
-  const auto equal = [&](double utility) { return utility >= best - 1e-12 * std::max(1.0, std::abs(best)); };
-  if (equal(detail::utility_of(table, success_state, from, from, rates, costs))) to = from;
-  for (std::size_t p = 0; p < from.size(); ++p) {
-    if (to[p] == from[p]) continue;
-    auto kept = to;
-    kept[p] = from[p];
-    const double utility = detail::utility_of(table, success_state, from, kept, rates, costs);
-    if (equal(utility)) {
-      to = kept;
-      best = std::max(best, utility);
+  if (table.is_sparse()) return best_move(table.dense(), success_state, configuration, controllable, costs);
+  const detail::slice_mover mover(table, success_state, controllable, costs);
+  std::vector<std::size_t> members;
+  mover.members_of(configuration, members);
+  return mover.best_from(mover.local_of(configuration), members);
+}
+
+PGM_DECL std::vector<utility_move> best_moves(const cpt<double>& table, std::size_t success_state,
+                                              std::span<const bool> controllable, const move_costs& costs) {
+  if (table.is_sparse()) return best_moves(table.dense(), success_state, controllable, costs);
+  const detail::slice_mover mover(table, success_state, controllable, costs);
+  std::vector<utility_move> moves(table.configurations());
+  std::vector<char> solved(moves.size(), 0);
+  std::vector<std::size_t> members;
+  for (std::size_t u = 0; u < moves.size(); ++u) {
+    if (solved[u]) continue;
+    mover.members_of(u, members);
+    for (std::size_t from = 0; from < members.size(); ++from) {
+      moves[members[from]] = mover.best_from(from, members);
+      solved[members[from]] = 1;
     }
   }
-  move.target = table.configuration(to).value();
-  move.expected_utility = detail::utility_of(table, success_state, from, to, rates, costs, &move.cost);
-  move.success_probability = table(index_at<state_index>(success_state), config_index(move.target));
-  return move;
+  return moves;
+}
+
+PGM_DECL prevention_outcome prevention_outcome_of(std::span<const std::size_t> targets, const cpt<double>& truth,
+                                                  std::size_t success_state, std::span<const bool> controllable,
+                                                  std::span<const double> configuration_weights,
+                                                  const move_costs& costs) {
+  detail::check_prevention_inputs(truth, success_state, controllable, {});
+  const auto rates = detail::cost_rates(truth, controllable, costs);
+  const double total = detail::checked_weight_total(configuration_weights, truth.configurations());
+  if (targets.size() != truth.configurations()) {
+    throw model_error("expected " + std::to_string(truth.configurations()) + " prevention targets, got " +
+                      std::to_string(targets.size()));
+  }
+  prevention_outcome outcome;
+  for (std::size_t u = 0; u < targets.size(); ++u) {
+    if (configuration_weights[u] == 0.0) continue;
+    if (targets[u] >= truth.configurations()) {
+      throw model_error("prevention target " + std::to_string(targets[u]) + " is out of range for '" +
+                        truth.child().name() + "'");
+    }
+    const auto from = truth.parent_codes(config_index(u));
+    const auto to = truth.parent_codes(config_index(targets[u]));
+    double cost = 0;
+    for (std::size_t p = 0; p < from.size(); ++p) {
+      if (from[p] != to[p] && !controllable[p]) {
+        throw model_error("a prevention target moves '" + truth.parents()[p].name() + "', which is not controllable");
+      }
+      cost += detail::move_cost(truth.parents()[p], from[p], to[p], rates[p], costs.unit);
+    }
+    const double success = truth(index_at<state_index>(success_state), config_index(targets[u]));
+    const double w = configuration_weights[u] / total;
+    outcome.success += w * success;
+    outcome.cost += w * cost;
+  }
+  outcome.utility = costs.reward * outcome.success - outcome.cost;
+  return outcome;
 }
 
 PGM_DECL utility_prevention prevent_by_utility(const prevention_plan& plan, std::span<const std::string> controllable,

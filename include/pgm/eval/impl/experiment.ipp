@@ -103,6 +103,26 @@ PGM_DECL std::vector<std::uint32_t> split_rows(std::size_t rows, std::size_t tra
   return order;
 }
 
+namespace detail {
+
+PGM_DECL move_costs costs_of_target(const prepared_target& target, const move_costs& costs,
+                                    const std::function<void(const std::string&)>& note) {
+  move_costs kept{.reward = costs.reward, .unit = costs.unit};
+  for (const auto& [name, rate] : costs.cost) {
+    const auto& parents = target.family.parents;
+    const auto p = std::find_if(parents.begin(), parents.end(), [&](const variable& v) { return v.name() == name; });
+    if (p != parents.end() && target.controllable[static_cast<std::size_t>(p - parents.begin())] != 0) {
+      kept.cost.emplace(name, rate);
+    } else if (note) {
+      note(target.task + ": the cost of moving '" + name + "' is left out: it is no controllable parent of '" +
+           target.family.child.name() + "'");
+    }
+  }
+  return kept;
+}
+
+}  // namespace detail
+
 PGM_DECL std::vector<experiment_point> run_repetition(const scenario& s, const prepared_target& target,
                                                       std::size_t repetition, std::uint64_t base_seed,
                                                       const prevention_options& prevention) {
@@ -133,6 +153,23 @@ PGM_DECL std::vector<experiment_point> run_repetition(const scenario& s, const p
   };
   const double oracle =
       failure_prevention_rate(truth, truth, target.success_state, controllable_parents, produced, prevention);
+  // With move costs, both rules' moves costed and the rule of highest expected utility scored.
+  const auto score_by_costs = [&](const std::string& strategy, const std::string& weight, std::size_t rows,
+                                  const cpt<double>& estimated) {
+    if (!target.costs) return;
+    const auto& costs = *target.costs;
+    const auto by_epsilon = prevention_targets(estimated, target.success_state, controllable_parents, prevention);
+    emit(strategy, weight, rows, experiment_metric::prevention_cost,
+         prevention_outcome_of(by_epsilon, truth, target.success_state, controllable_parents, produced, costs).cost);
+    std::vector<std::size_t> by_utility;
+    for (const auto& move : best_moves(estimated, target.success_state, controllable_parents, costs)) {
+      by_utility.push_back(move.target);
+    }
+    const auto outcome =
+        prevention_outcome_of(by_utility, truth, target.success_state, controllable_parents, produced, costs);
+    emit(strategy, weight, rows, experiment_metric::utility_prevention, outcome.success);
+    emit(strategy, weight, rows, experiment_metric::utility_prevention_cost, outcome.cost);
+  };
   auto counts = family.empty_counts();
   std::size_t counted = 0;
   for (std::size_t k = 0; k <= s.subsets; ++k) {
@@ -140,6 +177,7 @@ PGM_DECL std::vector<experiment_point> run_repetition(const scenario& s, const p
     family.add_counts(std::span(order).subspan(counted, end - counted), counts);
     counted = end;
     emit("oracle", "0", end, experiment_metric::failure_prevention, oracle);
+    score_by_costs("oracle", "0", end, truth);
     for (const auto& line : target.lines) {
       const auto strategy = line.strategy_label();
       const auto weight_label = line.weight_label();
@@ -155,6 +193,7 @@ PGM_DECL std::vector<experiment_point> run_repetition(const scenario& s, const p
       emit(
           strategy, weight_label, end, experiment_metric::failure_prevention,
           failure_prevention_rate(estimate_k, truth, target.success_state, controllable_parents, produced, prevention));
+      score_by_costs(strategy, weight_label, end, estimate_k);
     }
   }
   return out;
@@ -200,6 +239,7 @@ PGM_DECL std::vector<experiment_point> run_experiment(const scenario& s, const t
       failed_job = index * repetitions;
       noting = index + 1;
       targets[index].emplace(prepare_target(s, index, source, prior, base_seed, options.automatic_lines, note));
+      if (options.costs) targets[index]->costs = detail::costs_of_target(*targets[index], *options.costs, note);
     }
   } catch (const detail::nothing_to_prepare&) {
   } catch (...) {
