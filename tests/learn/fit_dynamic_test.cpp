@@ -15,6 +15,7 @@
 
 #include "pgm/io/csv.hpp"
 #include "pgm/io/json_model.hpp"
+#include "pgm/learn/dynamic_statistics.hpp"
 #include "pgm/learn/parameter_prior.hpp"
 #include "support/long_form.hpp"
 #include "support/program_test.hpp"
@@ -178,6 +179,51 @@ TEST(fit_dynamic_test, a_prior_of_its_own_for_a_table_of_either_slice) {
               ThrowsMessage<model_error>(HasSubstr("a prior is given for 'ghost', which is not a template variable")));
 }
 
+/// The rows of the first `episodes` episodes, and the rest.
+std::pair<dataset, dataset> split_episodes(const testing::long_form& sampled, std::size_t episodes) {
+  std::vector<std::size_t> first, later;
+  for (std::size_t r = 0; r < sampled.rows.size(); ++r) (sampled.rows[r].first < episodes ? first : later).push_back(r);
+  return {sampled.data.select_rows(first), sampled.data.select_rows(later)};
+}
+
+// Counts add up: the statistics kept from some episodes, updated with the rest, estimate the
+// network fitted on all of them to the last bit, under any prior; a decay weighs the old less.
+TEST(fit_dynamic_test, kept_statistics_updated_with_more_episodes_equal_the_fit_on_all) {
+  const auto model = testing::random_dynamic(13, 4);
+  const auto sampled = testing::sample_long_form(model, 70, 6, 13, true);
+  const auto [first, later] = split_episodes(sampled, 40);
+  const auto structure = structure_of_model(model);
+  dynamic_fit_options options;
+  options.fit.prior = bdeu_prior(3.0);
+  options.fit.node_priors.emplace(model.variables()[2].name(), weighted_prior{model.transition_tables()[2], 4.0});
+  options.initial_priors.emplace(model.variables()[0].name(), dirichlet_prior(0.5));
+  const auto kept = dynamic_statistics_of(structure, count_dynamic(structure, first), options);
+  EXPECT_EQ(kept.initial.rows, 40.0);
+  EXPECT_EQ(estimate_dynamic(structure, kept), fit_dynamic(structure, first, options));
+  const auto more = count_dynamic(structure, later);
+  const auto all = updated(kept, more);
+  EXPECT_EQ(all.initial.rows, 70.0);
+  EXPECT_EQ(all.transition.rows, static_cast<double>(sampled.data.rows() - 70));
+  EXPECT_EQ(estimate_dynamic(structure, all), fit_dynamic(structure, sampled.data, options));
+  // A decay of ½: half of each old count, the new ones whole.
+  const auto decayed = updated(kept, more, 0.5);
+  for (std::size_t i = 0; i < model.size(); ++i) {
+    const auto old_cells = kept.transition.counts[i].counts();
+    const auto new_cells = more.transition[i].counts();
+    const auto cells = decayed.transition.counts[i].counts();
+    for (std::size_t c = 0; c < cells.size(); ++c) {
+      EXPECT_EQ(cells[c], 0.5 * old_cells[c] + static_cast<double>(new_cells[c]));
+    }
+  }
+  EXPECT_EQ(decayed.initial.rows, 0.5 * 40 + 30);
+  // Statistics of another network are refused.
+  const auto other_model = testing::random_dynamic(14, 4);
+  const auto other = structure_of_model(other_model);
+  const auto other_counts = count_dynamic(other, testing::sample_long_form(other_model, 5, 3, 1).data);
+  EXPECT_THROW(static_cast<void>(estimate_dynamic(other, all)), model_error);
+  EXPECT_THROW(static_cast<void>(updated(kept, other_counts)), model_error);
+}
+
 TEST(fit_dynamic_test, episodes_of_one_step_leave_the_transition_to_the_empty_rule) {
   const auto model = testing::random_dynamic(2, 2);
   const auto data = testing::sample_long_form(model, 20, 1, 2);
@@ -284,6 +330,58 @@ TEST_F(fit_dynamic_cli_test, fits_from_edges_or_a_model_and_refuses_bad_input) {
   expect_failure("fit --dynamic --data " + twice.string() + " --edges '" + v[0].name() + "@-1->" + v[0].name() +
                      "' --out " + out.string(),
                  "twice.csv: episode 'e1' has two rows with t = 0 (data rows 1 and 2)", out);
+}
+
+// pgm fit --dynamic --keep-counts keeps the counts in the model; pgm update adds new episodes to
+// them and writes the model fitted on all the episodes, to the last bit.
+TEST_F(fit_dynamic_cli_test, update_adds_episodes_to_a_model_that_kept_its_counts) {
+  const auto model = testing::random_dynamic(8, 3);
+  const auto sampled = testing::sample_long_form(model, 60, 5, 21, true);
+  const auto [first_data, later_data] = split_episodes(sampled, 35);
+  const auto csv_of = [](const dataset& data) {
+    std::ostringstream out;
+    write_csv(data, out);
+    return out.str();
+  };
+  const auto first = file("first.csv", csv_of(first_data));
+  const auto later = file("later.csv", csv_of(later_data));
+  const auto all = file("all.csv", csv_of(sampled.data));
+  const auto model_file = file("model.json", to_json(model).dump(2));
+  const auto fit = "fit --dynamic --model " + model_file.string() + " --estimator bayes --prior bdeu --ess 2 ";
+  auto r = run(fit + "--data " + first.string() + " --keep-counts --out " + path("kept.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(slurp(path("kept.json")), HasSubstr("\"statistics\""));
+  r = run("update --model " + path("kept.json").string() + " --data " + later.string() + " --out " +
+          path("kept.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("updated a dynamic network of 3 template variables with 25 episodes"));
+  EXPECT_THAT(r.out, HasSubstr("60 episodes in all"));
+  r = run(fit + "--data " + all.string() + " --out " + path("all.json").string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(parse_dynamic_json(slurp(path("kept.json")), "kept.json"),
+            parse_dynamic_json(slurp(path("all.json")), "all.json"));
+  // The statistics read back as written: a second update from the file adds to them again.
+  const auto file_read = parse_dynamic_model_json(slurp(path("kept.json")), "kept.json");
+  ASSERT_TRUE(file_read.statistics);
+  EXPECT_EQ(file_read.statistics->initial.rows, 60.0);
+
+  const auto out = path("never.json");
+  expect_failure("update --model " + path("all.json").string() + " --data " + later.string() + " --out " + out.string(),
+                 "carries no counts to add the new episodes to: fit it with pgm fit --dynamic --keep-counts", out);
+  expect_failure("update --model " + path("kept.json").string() + " --data " + later.string() +
+                     " --missing drop --out " + out.string(),
+                 "a dynamic network is updated with --missing available", out);
+  expect_failure("update --model " + path("kept.json").string() + " --data " + later.string() + " --out " +
+                     path("never.bif").string(),
+                 "a dynamic network is written as pgm's JSON model (.json)", path("never.bif"));
+  // A file whose statistics do not fit its network names the JSON path.
+  auto text = slurp(path("kept.json"));
+  const auto at = text.find("\"rows\": 60");
+  ASSERT_NE(at, std::string::npos);
+  text.replace(at, 11, "\"rows\": -1");
+  const auto broken = file("broken.json", text);
+  expect_failure("update --model " + broken.string() + " --data " + later.string() + " --out " + out.string(),
+                 "broken.json: /statistics/initial/rows: expected a finite number >= 0", out);
 }
 
 }  // namespace fit_dynamic_test

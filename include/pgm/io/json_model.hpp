@@ -24,7 +24,8 @@
 ///   "format": "pgm-model", "version": 1, "kind": "dynamic",
 ///   "variables": [{"name": "x", "states": ["0", "1"]}, …],
 ///   "initial": {"edges": [["x", "y"]], "tables": [{"variable": "x", "parents": [], …}, …]},
-///   "transition": {"edges": [["x@-1", "x"], ["x", "y"]], "tables": [{"variable": "x", "parents": ["x@-1"], …}, …]}
+///   "transition": {"edges": [["x@-1", "x"], ["x", "y"]], "tables": [{"variable": "x", "parents": ["x@-1"], …}, …]},
+///   "statistics": {"initial": {…}, "transition": {…}}   // optional, as a static model's
 /// }
 ///
 /// A Markov network (a factor graph) says so with "kind" and holds factors instead of edges
@@ -61,6 +62,7 @@
 #include "pgm/data/discretizer.hpp"
 #include "pgm/detail/json_reader.hpp"
 #include "pgm/io/statistics_json.hpp"
+#include "pgm/learn/dynamic_statistics.hpp"
 #include "pgm/learn/fit_statistics.hpp"
 
 namespace pgm {
@@ -113,17 +115,40 @@ PGM_DECL void write_markov_json(std::ostream& out, const markov_network& model);
 /// not a JSON object: the reader then says what is wrong), "markov" or "dynamic".
 [[nodiscard]] PGM_DECL std::string declared_model_kind(std::string_view text);
 
-/// A dynamic network as pgm's JSON model ("kind": "dynamic").
-[[nodiscard]] PGM_DECL nlohmann::json to_json(const dynamic_network& model);
+/// A dynamic network as pgm's JSON model ("kind": "dynamic"), with the counts and priors it was
+/// estimated from when given: "statistics": {"initial": {…}, "transition": {…}}, each as a
+/// static model's (pgm/io/statistics_json.hpp), the transition's one family per template
+/// variable.
+[[nodiscard]] PGM_DECL nlohmann::json to_json(const dynamic_network& model,
+                                              const dynamic_fit_statistics* statistics = nullptr);
 
 /// Writes a dynamic network's JSON model to `path`, atomically (nothing is left half-written);
 /// `before_replacing` runs once the new file is complete, before it replaces `path`, and may fail
 /// the write (write_file_atomically).
 PGM_DECL void write_dynamic_json(const dynamic_network& model, const std::filesystem::path& path,
-                                 const std::function<void()>& before_replacing = {});
+                                 const std::function<void()>& before_replacing = {},
+                                 const dynamic_fit_statistics* statistics = nullptr);
+
+/// A dynamic network read from pgm's JSON model, with its statistics when the file keeps them.
+struct dynamic_model_file {
+  dynamic_network model;
+  std::optional<dynamic_fit_statistics> statistics;
+};
 
 /// Reads a dynamic network; errors name the source and the JSON path of what is wrong.
+[[nodiscard]] PGM_DECL dynamic_model_file parse_dynamic_model_json(std::string_view text, const std::string& source);
+
+/// The network alone.
 [[nodiscard]] PGM_DECL dynamic_network parse_dynamic_json(std::string_view text, const std::string& source);
+
+namespace detail {
+
+/// The "statistics" of a dynamic model file, over `model`'s families.
+[[nodiscard]] PGM_DECL dynamic_fit_statistics parse_dynamic_statistics(const json_reader& reader,
+                                                                       const nlohmann::json& value,
+                                                                       const dynamic_network& model);
+
+}  // namespace detail
 
 /// A Markov network from pgm's JSON model; errors name the JSON path (an unknown variable in a
 /// scope, a variable twice in one, values of the wrong number, negative or not finite).

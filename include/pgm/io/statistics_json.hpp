@@ -50,6 +50,12 @@ namespace detail {
                                                             const nlohmann::json& value,
                                                             const network_structure& structure);
 
+/// The statistics at JSON path `path`, one family per entry of `families` (empty count tables
+/// of each family's shape), in that order.
+[[nodiscard]] PGM_DECL fit_statistics parse_statistics_json(const detail::json_reader& reader,
+                                                            const nlohmann::json& value, const std::string& path,
+                                                            std::vector<expected_count_table> families);
+
 }  // namespace pgm
 
 #if !defined(PGM_SEPARATE_COMPILATION)

@@ -76,7 +76,7 @@ any_model read_any_model_file(const std::filesystem::path& path) {
   return read_network_file(path);
 }
 
-dynamic_network read_dynamic_model_file(const std::string& path) {
+dynamic_model_file read_dynamic_model_file(const std::string& path) {
   if (find_format_of(path) != network_format("json")) {
     throw error("'" + path + "' is not a pgm JSON model: a dynamic network is written in pgm's JSON (docs/dynamic.md)");
   }
@@ -85,7 +85,7 @@ dynamic_network read_dynamic_model_file(const std::string& path) {
     throw error("'" + path + "' holds a " + (kind == "markov" ? "Markov" : "Bayesian") +
                 " network, not a dynamic one (\"kind\": \"dynamic\")");
   }
-  return parse_dynamic_json(text, path);
+  return parse_dynamic_model_json(text, path);
 }
 
 namespace {

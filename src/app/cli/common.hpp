@@ -99,9 +99,9 @@ using any_model = std::variant<bayesian_network, markov_network>;
 /// notes).
 [[nodiscard]] any_model read_any_model_file(const std::filesystem::path& path);
 
-/// The dynamic network of a pgm JSON model of "kind": "dynamic"; an error naming what the file
-/// holds otherwise.
-[[nodiscard]] dynamic_network read_dynamic_model_file(const std::string& path);
+/// The dynamic network of a pgm JSON model of "kind": "dynamic", with its statistics when it
+/// keeps them; an error naming what the file holds otherwise.
+[[nodiscard]] dynamic_model_file read_dynamic_model_file(const std::string& path);
 
 /// Accepts only a whole number in [lo, hi], so that "-5" is an error rather than 2^64 - 5.
 CLI::Validator whole_number(std::uint64_t lo, std::uint64_t hi);

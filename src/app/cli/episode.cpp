@@ -1,5 +1,7 @@
 #include "cli/episode.hpp"
 
+#include <algorithm>
+
 #include "cli/common.hpp"
 #include "pgm/core/text.hpp"
 #include "pgm/io/csv.hpp"
@@ -15,6 +17,26 @@ variable_id template_id(const dynamic_network& model, const std::string& name, c
   const auto closest = text::closest_name(name, names);
   throw error(where + ": '" + name + "' is not a variable of the model" +
               (closest ? " (did you mean '" + *closest + "'?)" : ""));
+}
+
+dataset read_episodes(const std::string& path, const std::set<std::string>& templates, const dynamic_network* model,
+                      const missing_values& missing, unsigned threads) {
+  const episode_columns columns;
+  auto reading = long_form_options(columns);
+  reading.missing = missing;
+  reading.threads = threads;
+  if (model) {
+    for (const auto& v : model->variables()) reading.variables.emplace(v.name(), v);
+  }
+  if (path != "-") {  // other columns are not read (standard input is read once)
+    const auto header = csv_reader(path).header();
+    reading.columns.assign(templates.begin(), templates.end());
+    reading.columns.push_back(columns.step);
+    if (std::find(header.begin(), header.end(), columns.episode) != header.end()) {
+      reading.columns.push_back(columns.episode);
+    }
+  }
+  return read_csv(path, reading);
 }
 
 std::vector<evidence_set> read_episode(const dynamic_network& model, const std::string& path) {

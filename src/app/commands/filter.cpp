@@ -89,7 +89,7 @@ void write_most_probable(const dynamic_network& model, const most_probable_steps
 
 void run_filter(const filter_arguments& args) {
   pgm::check_output_path(args.out);
-  const auto model = read_dynamic_model_file(args.model);
+  const auto model = read_dynamic_model_file(args.model).model;
   auto steps = read_episode(model, args.data);
   const std::size_t observed_steps = steps.size();
   if (!args.intervene.empty()) add_interventions(model, args.intervene, steps, args.predict);

@@ -12,6 +12,7 @@
 
 #include "cli/common.hpp"
 #include "cli/component_options.hpp"
+#include "cli/episode.hpp"
 #include "cli/transfer_arguments.hpp"
 #include "pgm/core/error.hpp"
 #include "pgm/core/process_group.hpp"
@@ -19,6 +20,7 @@
 #include "pgm/io/csv_source.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
+#include "pgm/learn/dynamic_statistics.hpp"
 #include "pgm/learn/estimator_choice.hpp"
 #include "pgm/learn/family_source.hpp"
 #include "pgm/learn/fit_dynamic.hpp"
@@ -138,7 +140,6 @@ void refuse_static_only(const fit_arguments& args) {
          "--missing drop leaves gaps in the episodes where it drops a row; --missing available counts each family "
          "over the steps where its variables are present");
   refuse(!args.latent.empty(), "--latent applies with --missing em, which dynamic networks do not have yet");
-  refuse(args.keep_counts, "--keep-counts is not available for dynamic networks yet");
   refuse(!args.discretization_file.empty() || !args.intervals_file.empty(),
          "--discretization and --intervals are not available for dynamic networks yet: bin the columns first "
          "(pgm discretize)");
@@ -160,21 +161,14 @@ void run_dynamic_fit(const fit_arguments& args) {
                 "'; pgm unroll then writes it unrolled in any format");
   }
   pgm::check_output_path(args.out);
-  const episode_columns columns;
-  auto reading = long_form_options(columns);
-  reading.missing = missing_of(args.missing);
-  reading.threads = args.threads;
   dynamic_structure structure;
   std::optional<dynamic_network> given;
   std::vector<named_edge> edges;
   std::set<std::string> templates;  // the columns read besides the episode's and the step's
   if (!args.model.empty()) {
-    given = read_dynamic_model_file(args.model);
+    given = read_dynamic_model_file(args.model).model;
     structure = structure_of(*given);
-    for (const auto& v : given->variables()) {
-      reading.variables.emplace(v.name(), v);
-      templates.insert(v.name());
-    }
+    for (const auto& v : given->variables()) templates.insert(v.name());
   } else {
     edges = parse_edge_list(args.edges);
     for (const auto& [from, to] : edges) {
@@ -182,19 +176,11 @@ void run_dynamic_fit(const fit_arguments& args) {
       templates.insert(template_of(to));
     }
   }
-  if (args.data != "-") {  // other columns are not read (standard input is read once)
-    const auto header = csv_reader(args.data).header();
-    reading.columns.assign(templates.begin(), templates.end());
-    reading.columns.push_back(columns.step);
-    if (std::find(header.begin(), header.end(), columns.episode) != header.end()) {
-      reading.columns.push_back(columns.episode);
-    }
-  }
-  const auto data = read_csv(args.data, reading);
+  const auto data =
+      read_episodes(args.data, templates, given ? &*given : nullptr, missing_of(args.missing), args.threads);
   if (!given) structure = dynamic_structure_from_data(data, edges);
   dynamic_fit_options options;
   set_estimation(args, options.fit);
-  options.columns = columns;
   const auto counts = count_dynamic(structure, data, options.columns, options.fit.counting);
   if (!args.transfer.prior_model.empty()) {
     const auto prior = read_network_file(args.transfer.prior_model);
@@ -212,11 +198,14 @@ void run_dynamic_fit(const fit_arguments& args) {
     throw error("--map, --initial-map and --initial-strategy apply with --prior-model");
   }
   const auto model = fit_dynamic(structure, counts, options);
+  const auto statistics =
+      args.keep_counts ? std::optional(dynamic_statistics_of(structure, counts, options)) : std::nullopt;
   std::ostringstream summary;
   summary << "fitted a dynamic network of " << model.size() << " template variables from " << counts.episodes
           << (counts.episodes == 1 ? " episode" : " episodes") << " (" << counts.steps << " steps; "
           << counts.steps - counts.episodes << " transitions counted into the tied tables) -> " << args.out << '\n';
-  write_dynamic_json(model, args.out, summary_before_replacing(summary.str(), args.out));
+  write_dynamic_json(model, args.out, summary_before_replacing(summary.str(), args.out),
+                     statistics ? &*statistics : nullptr);
 }
 
 void run_fit(const fit_arguments& args) {
@@ -362,9 +351,11 @@ void add_fit_command(CLI::App& app) {
   cmd->add_flag("--hard", args->hard,
                 "With --missing em: hard EM (each incomplete row completed by its most probable values)");
   cmd->add_flag("--verbose", args->verbose, "With --missing em: print the log-likelihood of every iteration");
-  cmd->add_flag("--keep-counts", args->keep_counts,
-                "Keep the counts and priors in the model (in JSON under \"statistics\", in BIF, XMLBIF and NET as a "
-                "property peers ignore), so that pgm update can add new data to it");
+  cmd->add_flag(
+      "--keep-counts", args->keep_counts,
+      "Keep the counts and priors in the model (in JSON under \"statistics\", in BIF, XMLBIF and NET as a "
+      "property peers ignore; a dynamic network's under \"statistics\" too), so that pgm update can add new data "
+      "(or episodes) to it");
   add_transfer_options(*cmd, args->transfer, true);
   cmd->add_flag("--dynamic", args->dynamic,
                 "Fit a dynamic network (a 2-TBN, written as pgm's JSON model) from episodes in long form: columns "

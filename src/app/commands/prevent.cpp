@@ -134,7 +134,7 @@ void run_prevent_over_time(const prevent_arguments& args) {
   if (!args.controllable || args.controllable->empty()) {
     throw error("--dynamic needs --controllable, the variables set at the next step");
   }
-  const auto model = read_dynamic_model_file(args.decision.model);
+  const auto model = read_dynamic_model_file(args.decision.model).model;
   prevention_over_time_request request;
   request.success = parse_success_event(args.decision.success, model.initial());
   for (const auto& name : split_list(*args.controllable, "--controllable")) {

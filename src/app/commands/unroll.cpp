@@ -24,7 +24,7 @@ struct unroll_arguments {
 void run_unroll(const unroll_arguments& args) {
   const auto to = format_of(args.out);  // fails, listing the extensions, before anything is read
   pgm::check_output_path(args.out);
-  const auto dynamic = read_dynamic_model_file(args.model);
+  const auto dynamic = read_dynamic_model_file(args.model).model;
   // BIF's and NET's names hold letters, digits, '_', '-' and '.' only.
   const bool plain_names = to == network_format("bif") || to == network_format("net");
   const auto network = dynamic.unroll(args.steps, plain_names ? '_' : '@');

@@ -1,14 +1,19 @@
 // pgm update: add new rows to a fitted network that kept its counts (pgm fit --keep-counts)
 // and estimate its tables again under the priors it was fitted with.
 
+#include <filesystem>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <string>
 
 #include "cli/common.hpp"
+#include "cli/episode.hpp"
 #include "pgm/core/process_group.hpp"
 #include "pgm/io/csv_source.hpp"
+#include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
+#include "pgm/learn/dynamic_statistics.hpp"
 #include "pgm/pipeline/fit_pipeline.hpp"
 
 namespace pgm::cli {
@@ -23,7 +28,43 @@ struct update_arguments {
   missing_arguments missing;
 };
 
+/// pgm update on a dynamic network: new episodes in long form counted into its statistics.
+void run_dynamic_update(const update_arguments& args) {
+  if (args.missing.policy == "drop") {
+    throw error(
+        "--missing drop leaves gaps in the episodes where it drops a row; a dynamic network is updated with "
+        "--missing available (each family counted over the steps where its variables are present)");
+  }
+  if (std::filesystem::path(args.out).extension() != ".json") {
+    throw error("--out: a dynamic network is written as pgm's JSON model (.json), not '" + args.out + "'");
+  }
+  pgm::check_output_path(args.out);
+  const auto file = read_dynamic_model_file(args.model);
+  if (!file.statistics) {
+    throw error("'" + args.model +
+                "' carries no counts to add the new episodes to: fit it with pgm fit --dynamic --keep-counts");
+  }
+  std::set<std::string> templates;
+  for (const auto& v : file.model.variables()) templates.insert(v.name());
+  const auto data = read_episodes(args.data, templates, &file.model, missing_of(args.missing), args.threads);
+  const auto structure = structure_of(file.model);
+  const auto counts = count_dynamic(structure, data, {}, {.threads = args.threads});
+  const auto statistics = updated(*file.statistics, counts, args.decay);
+  const auto model = estimate_dynamic(structure, statistics);
+  std::ostringstream summary;
+  summary << "updated a dynamic network of " << model.size() << " template variables with " << counts.episodes
+          << (counts.episodes == 1 ? " episode" : " episodes") << " (" << counts.steps << " steps; "
+          << text::format_double(statistics.initial.rows) << " episodes in all"
+          << (args.decay < 1.0 ? ", old ones weighted by the decay" : "") << ") -> " << args.out << '\n';
+  write_dynamic_json(model, args.out, summary_before_replacing(summary.str(), args.out), &statistics);
+}
+
 void run_update(const update_arguments& args) {
+  if (find_format_of(args.model) == network_format("json") &&
+      declared_model_kind(read_model_text(args.model)) == "dynamic") {
+    run_dynamic_update(args);
+    return;
+  }
   require_network_extension(args.out);
   if (args.data == "-" && processes().size() > 1) {
     throw error("--data -: standard input reaches one process only; under mpirun give a file every process can read");
@@ -58,7 +99,8 @@ void add_update_command(CLI::App& app) {
   auto args = std::make_shared<update_arguments>();
   auto* cmd = app.add_subcommand(
       "update",
-      "Add new rows to a network fitted with --keep-counts and estimate its tables again with the same priors.\n"
+      "Add new rows to a network fitted with --keep-counts and estimate its tables again with the same priors; "
+      "a dynamic network's new episodes in long form (episode,t,<variables>).\n"
       "Example: pgm update --model robot.json --data today.csv --out robot.json");
   cmd->add_option("--model", args->model,
                   "The network, fitted with pgm fit --keep-counts (" + network_file_kinds() + ")")

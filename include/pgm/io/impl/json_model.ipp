@@ -403,7 +403,7 @@ PGM_DECL std::string declared_model_kind(std::string_view text) {
   return finder.kind;
 }
 
-PGM_DECL nlohmann::json to_json(const dynamic_network& model) {
+PGM_DECL nlohmann::json to_json(const dynamic_network& model, const dynamic_fit_statistics* statistics) {
   auto document = to_json(model.initial());
   nlohmann::json initial = {{"edges", document["edges"]}, {"tables", document["tables"]}};
   auto transition = to_json(model.transition_structure(), &model.transition_tables());
@@ -412,21 +412,55 @@ PGM_DECL nlohmann::json to_json(const dynamic_network& model) {
   document["kind"] = "dynamic";
   document["initial"] = std::move(initial);
   document["transition"] = {{"edges", transition["edges"]}, {"tables", transition["tables"]}};
+  if (statistics) {
+    document["statistics"] = {{"initial", to_json(statistics->initial)},
+                              {"transition", to_json(statistics->transition)}};
+  }
   return document;
 }
 
 PGM_DECL void write_dynamic_json(const dynamic_network& model, const std::filesystem::path& path,
-                                 const std::function<void()>& before_replacing) {
-  const auto text = to_json(model).dump(2) + "\n";
+                                 const std::function<void()>& before_replacing,
+                                 const dynamic_fit_statistics* statistics) {
+  const auto text = to_json(model, statistics).dump(2) + "\n";
   write_file_atomically(
       path, [&](std::ostream& out) { out << text; }, before_replacing);
 }
 
+namespace detail {
+
+PGM_DECL dynamic_fit_statistics parse_dynamic_statistics(const json_reader& reader, const nlohmann::json& value,
+                                                         const dynamic_network& model) {
+  reader.only_keys(value, "/statistics", {"initial", "transition"});
+  const auto& first = model.initial().structure();
+  const auto& both = model.transition_structure();
+  const auto templates = first.size();
+  std::vector<expected_count_table> initial;
+  std::vector<expected_count_table> transition;
+  for (std::size_t i = 0; i < templates; ++i) {
+    const auto node = index_at<variable_id>(i);
+    const auto now = index_at<variable_id>(templates + i);
+    initial.emplace_back(first.at(node), first.parent_variables(node));
+    transition.emplace_back(both.at(now), both.parent_variables(now));
+  }
+  return {parse_statistics_json(reader, reader.member(value, "/statistics", "initial"), "/statistics/initial",
+                                std::move(initial)),
+          parse_statistics_json(reader, reader.member(value, "/statistics", "transition"), "/statistics/transition",
+                                std::move(transition))};
+}
+
+}  // namespace detail
+
 PGM_DECL dynamic_network parse_dynamic_json(std::string_view text, const std::string& source) {
+  return parse_dynamic_model_json(text, source).model;
+}
+
+PGM_DECL dynamic_model_file parse_dynamic_model_json(std::string_view text, const std::string& source) {
   const detail::json_reader reader(source);
   const auto document = reader.parse(text);
   reader.check_format(document, "pgm-model");
-  reader.only_keys(document, "", {"format", "version", "kind", "variables", "initial", "transition", "metadata"});
+  reader.only_keys(document, "",
+                   {"format", "version", "kind", "variables", "initial", "transition", "metadata", "statistics"});
   if (reader.string(reader.member(document, "", "kind"), "/kind") != "dynamic") {
     reader.fail("/kind", "expected \"dynamic\": this reader reads dynamic networks");
   }
@@ -490,21 +524,25 @@ PGM_DECL dynamic_network parse_dynamic_json(std::string_view text, const std::st
   }
   auto tables = detail::read_edges_and_tables(reader, transition, "/transition", both, false);
   if (!tables) reader.fail("/transition", "the transition needs its tables");
+  std::optional<dynamic_network> model;
   try {
-    dynamic_network model(bayesian_network(first, std::move(*first_tables)), std::move(*tables));
-    const auto sorted = [](std::vector<named_edge> edges) {
-      std::sort(edges.begin(), edges.end(), [](const named_edge& a, const named_edge& b) {
-        return std::tie(a.from, a.to) < std::tie(b.from, b.to);
-      });
-      return edges;
-    };
-    if (sorted(model.transition_structure().edges()) != sorted(both.edges())) {
-      reader.fail("/transition/edges", "the edges differ from the tables' parents");
-    }
-    return model;
+    model.emplace(bayesian_network(first, std::move(*first_tables)), std::move(*tables));
   } catch (const model_error& e) {
     reader.fail("/transition", e.what());
   }
+  const auto sorted = [](std::vector<named_edge> edges) {
+    std::sort(edges.begin(), edges.end(),
+              [](const named_edge& a, const named_edge& b) { return std::tie(a.from, a.to) < std::tie(b.from, b.to); });
+    return edges;
+  };
+  if (sorted(model->transition_structure().edges()) != sorted(both.edges())) {
+    reader.fail("/transition/edges", "the edges differ from the tables' parents");
+  }
+  dynamic_model_file file{std::move(*model), std::nullopt};
+  if (const auto* statistics = reader.optional_member(document, "statistics")) {
+    file.statistics = detail::parse_dynamic_statistics(reader, *statistics, file.model);
+  }
+  return file;
 }
 
 PGM_DECL markov_network parse_markov_json(std::string_view text, const std::string& source) {

@@ -128,7 +128,16 @@ PGM_DECL nlohmann::json to_json(const fit_statistics& statistics) {
 
 PGM_DECL fit_statistics parse_statistics_json(const detail::json_reader& reader, const nlohmann::json& value,
                                               const network_structure& structure) {
-  const std::string path = "/statistics";
+  std::vector<expected_count_table> families;
+  for (std::size_t i = 0; i < structure.size(); ++i) {
+    const variable_id node = index_at<variable_id>(i);
+    families.emplace_back(structure.at(node), structure.parent_variables(node));
+  }
+  return parse_statistics_json(reader, value, "/statistics", std::move(families));
+}
+
+PGM_DECL fit_statistics parse_statistics_json(const detail::json_reader& reader, const nlohmann::json& value,
+                                              const std::string& path, std::vector<expected_count_table> families) {
   reader.only_keys(value, path, {"rows", "empty", "families"});
   fit_statistics result;
   result.rows = reader.number(reader.member(value, path, "rows"), path + "/rows");
@@ -139,21 +148,20 @@ PGM_DECL fit_statistics parse_statistics_json(const detail::json_reader& reader,
   } catch (const unknown_name& e) {
     reader.fail(path + "/empty", e.what());
   }
-  const auto& families = reader.array(reader.member(value, path, "families"), path + "/families");
-  if (families.size() != structure.size()) {
-    reader.fail(path + "/families", "expected " + std::to_string(structure.size()) + " families, one per variable");
+  const auto& entries = reader.array(reader.member(value, path, "families"), path + "/families");
+  if (entries.size() != families.size()) {
+    reader.fail(path + "/families", "expected " + std::to_string(families.size()) + " families, one per variable");
   }
-  for (std::size_t i = 0; i < families.size(); ++i) {
+  for (std::size_t i = 0; i < entries.size(); ++i) {
     const auto family_path = path + "/families/" + std::to_string(i);
-    const auto& entry = families[i];
+    const auto& entry = entries[i];
     reader.only_keys(entry, family_path, {"variable", "counts", "prior"});
-    const variable_id node = index_at<variable_id>(i);
+    auto& counts = families[i];
     const auto name = reader.string(reader.member(entry, family_path, "variable"), family_path + "/variable");
-    if (name != structure.at(node).name()) {
+    if (name != counts.child().name()) {
       reader.fail(family_path + "/variable",
-                  "expected '" + structure.at(node).name() + "' (the families are in the variables' order)");
+                  "expected '" + counts.child().name() + "' (the families are in the variables' order)");
     }
-    expected_count_table counts(structure.at(node), structure.parent_variables(node));
     const auto cells =
         detail::cells_of(reader, reader.member(entry, family_path, "counts"), family_path + "/counts", counts);
     std::copy(cells.begin(), cells.end(), counts.counts().begin());
