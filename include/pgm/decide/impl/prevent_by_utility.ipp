@@ -119,7 +119,8 @@ PGM_DECL utility_move slice_mover::best_from(std::size_t from, const std::vector
     const double success = values[members[to] * j + success_state_];
     const double utility = reward_ * success - cost;
     const double tolerance = 1e-12 * std::max(1.0, std::abs(best.expected_utility));
-    const bool better = utility > best.expected_utility + tolerance ||
+    const bool better = fewest > moved_.size() ||  // the first candidate
+                        utility > best.expected_utility + tolerance ||
                         (utility >= best.expected_utility - tolerance &&
                          (changed < fewest || (changed == fewest && members[to] < best.target)));
     if (better) {
