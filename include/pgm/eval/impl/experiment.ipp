@@ -108,11 +108,12 @@ namespace detail {
 PGM_DECL move_costs costs_of_target(const prepared_target& target, const move_costs& costs,
                                     const std::function<void(const std::string&)>& note) {
   move_costs kept{.reward = costs.reward, .unit = costs.unit};
-  for (const auto& [name, rate] : costs.cost) {
+  for (const auto& cost : costs.cost) {
+    const auto& name = cost.first;  // not a structured binding: the lambda below captures it (clang < 16)
     const auto& parents = target.family.parents;
     const auto p = std::find_if(parents.begin(), parents.end(), [&](const variable& v) { return v.name() == name; });
     if (p != parents.end() && target.controllable[static_cast<std::size_t>(p - parents.begin())] != 0) {
-      kept.cost.emplace(name, rate);
+      kept.cost.emplace(cost);
     } else if (note) {
       note(target.task + ": the cost of moving '" + name + "' is left out: it is no controllable parent of '" +
            target.family.child.name() + "'");
