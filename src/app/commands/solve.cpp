@@ -160,7 +160,8 @@ void run_solve(const solve_arguments& args) {
   }
   pgm::check_output_path(args.out);
   const auto started = std::chrono::steady_clock::now();
-  time_limit_guard limit(args.time_limit, args.engine == "bp" || args.engine == "gibbs");
+  const auto engine = parse_solve_engine(args.engine);
+  time_limit_guard limit(args.time_limit, engine == solve_engine::bp || engine == solve_engine::gibbs);
   solve_report report;
   std::string text;
   if (is_uai(args.model)) {

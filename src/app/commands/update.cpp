@@ -29,7 +29,8 @@ struct update_arguments {
 };
 
 /// pgm update on a dynamic network: new episodes in long form counted into its statistics.
-void run_dynamic_update(const update_arguments& args) {
+/// `text` is the model file's, read once.
+void run_dynamic_update(const update_arguments& args, const std::string& text) {
   if (args.missing.policy == "drop") {
     throw error(
         "--missing drop leaves gaps in the episodes where it drops a row; a dynamic network is updated with "
@@ -39,7 +40,7 @@ void run_dynamic_update(const update_arguments& args) {
     throw error("--out: a dynamic network is written as pgm's JSON model (.json), not '" + args.out + "'");
   }
   pgm::check_output_path(args.out);
-  const auto file = read_dynamic_model_file(args.model);
+  const auto file = parse_dynamic_model_json(text, args.model);
   if (!file.statistics) {
     throw error("'" + args.model +
                 "' carries no counts to add the new episodes to: fit it with pgm fit --dynamic --keep-counts");
@@ -60,10 +61,13 @@ void run_dynamic_update(const update_arguments& args) {
 }
 
 void run_update(const update_arguments& args) {
-  if (find_format_of(args.model) == network_format("json") &&
-      declared_model_kind(read_model_text(args.model)) == "dynamic") {
-    run_dynamic_update(args);
-    return;
+  if (find_format_of(args.model) == network_format("json")) {
+    const auto text = read_model_text(args.model);
+    // Only a file that names the token can declare the kind (the full scan is left to those).
+    if (text.find("\"dynamic\"") != std::string::npos && declared_model_kind(text) == "dynamic") {
+      run_dynamic_update(args, text);
+      return;
+    }
   }
   require_network_extension(args.out);
   if (args.data == "-" && processes().size() > 1) {

@@ -58,20 +58,18 @@ slice_mover::slice_mover(const cpt<double>& table, std::size_t success_state, st
     : table_(table), success_state_(success_state), reward_(costs.reward) {
   check_prevention_inputs(table, success_state, controllable, {});
   const auto rates = cost_rates(table, controllable, costs);
-  std::vector<std::size_t> cards;
   for (std::size_t p = 0; p < controllable.size(); ++p) {
     if (!controllable[p]) continue;
     const auto& v = table.parents()[p];
     const auto k = v.cardinality();
     moved_.push_back(p);
-    cards.push_back(k);
+    cards_.push_back(k);
     auto& matrix = cost_between_.emplace_back(k * k);
     for (std::size_t a = 0; a < k; ++a) {
       for (std::size_t b = 0; b < k; ++b) matrix[a * k + b] = move_cost(v, a, b, rates[p], costs.unit);
     }
   }
-  cards_ = cards;
-  const mixed_radix local(cards);
+  const mixed_radix local(cards_);
   const auto& radix = table.parent_radix();
   const auto m = moved_.size();
   digits_.assign(local.size() * m, 0);
