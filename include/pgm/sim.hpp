@@ -15,6 +15,7 @@
 #include "pgm/sim/simulator.hpp"
 #include "pgm/sim/simulator_concept.hpp"
 #include "pgm/sim/task.hpp"
+#include "pgm/sim/task_episodes.hpp"
 #include "pgm/sim/task_file.hpp"
 #include "pgm/sim/task_lookup.hpp"
 #include "pgm/sim/task_variant.hpp"

@@ -57,8 +57,8 @@ def test_simulated_data_discretizes_and_fits():
 
 
 def test_simulation_errors():
-    with pytest.raises(pgm.Error, match="unknown task '3-stack'; did you mean '1-stack'\\? \\(known: 1-stack"):
-        pgm.simulate("3-stack", 10)
+    with pytest.raises(pgm.Error, match="unknown task '9-stack'; did you mean '1-stack'\\? \\(known: 1-stack"):
+        pgm.simulate("9-stack", 10)
     with pytest.raises(pgm.Error, match="task 'drop-glass' has no reality variant"):
         pgm.simulate("drop-glass", 10, variant="reality")
     with pytest.raises(pgm.Error, match="unknown variant 'real'"):

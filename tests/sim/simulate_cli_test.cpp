@@ -12,6 +12,7 @@
 
 #include "pgm/io/csv.hpp"
 #include "pgm/sim/simulator.hpp"
+#include "pgm/sim/task_episodes.hpp"
 #include "pgm/sim/task_file.hpp"
 #include "support/program_test.hpp"
 
@@ -57,10 +58,10 @@ TEST_F(simulate_cli_test, reality_variant_is_labelled) {
 
 TEST_F(simulate_cli_test, clear_errors_and_no_output) {
   const auto out = path("raw.csv");
-  auto r = run("simulate --task 3-stack --rows 10 --out " + out.string());
+  auto r = run("simulate --task 9-stack --rows 10 --out " + out.string());
   EXPECT_EQ(r.code, 1);
   EXPECT_THAT(r.err,
-              HasSubstr("unknown task '3-stack'; did you mean '1-stack'? (known: 1-stack, 1-stack-reality, 2-stack"));
+              HasSubstr("unknown task '9-stack'; did you mean '1-stack'? (known: 1-stack, 1-stack-reality, 2-stack"));
   r = run("simulate --task drop-glass --variant reality --rows 10 --out " + out.string());
   EXPECT_THAT(r.err, HasSubstr("task 'drop-glass' has no reality variant"));
   r = run("simulate --task 1-stack --backend unity --rows 10 --out " + out.string());
@@ -98,6 +99,44 @@ TEST_F(simulate_cli_test, rows_beyond_a_block_are_written_as_they_come_and_equal
   std::ostringstream one;
   write_csv(sim::simulate(task, {.rows = 300'001, .seed = 3}), one);
   EXPECT_TRUE(slurp(out) == one.str());
+}
+
+// Episodes numbered on across blocks: the file equals the long form of the data made in one piece.
+TEST_F(simulate_cli_test, long_form_numbers_episodes_across_blocks) {
+  const auto out = path("episodes.csv");
+  const auto r = run("simulate --task 1-stack --rows 300001 --seed 3 --long-form --out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("as episodes of 1 steps"));
+  const auto task = sim::load_task(fs::path(PGM_SOURCE_DIR) / "tasks" / "1-stack.json");
+  std::ostringstream one;
+  write_csv(sim::episodes_of(sim::simulate(task, {.rows = 300'001, .seed = 3}), task, sim::episode_layout_of(task)),
+            one);
+  EXPECT_TRUE(slurp(out) == one.str());
+}
+
+// The tower's episodes, binned, are what pgm fit --dynamic learns a tied model from.
+TEST_F(simulate_cli_test, the_towers_episodes_fit_a_dynamic_network) {
+  const auto raw = path("tower.csv"), binned = path("binned.csv"), model = path("tower.json");
+  auto r = run("simulate --task 3-stack --rows 2000 --seed 5 --long-form --out " + raw.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(slurp(raw), HasSubstr("episode,t,xOff,yOff,dropOff,colorUp,onTop,colorDown\n0,0,"));
+  ASSERT_EQ(run("discretize --in " + raw.string() + " --columns xOff,yOff --bins 5 --out " + binned.string()).code, 0);
+  r = run("fit --dynamic --data " + binned.string() +
+          " --edges \"xOff->onTop, yOff->onTop, onTop@-1->onTop, xOff@-1->onTop\" --out " + model.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  // A tower that has fallen stays fallen: the tied table says so, whatever the offsets.
+  ASSERT_EQ(run("unroll --model " + model.string() + " --steps 3 --out " + path("u.json").string()).code, 0);
+  r = run("query --model " + path("u.json").string() + " --query onTop@2 --evidence onTop@1=0 --digits 17");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_THAT(r.out, HasSubstr("onTop@2,probability\n0,1\n1,0\n"));
+}
+
+TEST_F(simulate_cli_test, long_form_needs_numbered_actions) {
+  const auto out = path("drop.csv");
+  const auto r = run("simulate --task drop-glass --rows 10 --long-form --out " + out.string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_THAT(r.err, HasSubstr("task 'drop-glass' has no numbered variables"));
+  EXPECT_FALSE(fs::exists(out));
 }
 
 }  // namespace

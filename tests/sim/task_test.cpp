@@ -54,10 +54,10 @@ TEST(task_test, finds_tasks_by_name_and_lists_the_known_ones) {
   const std::vector<std::filesystem::path> dirs{std::filesystem::path(PGM_SOURCE_DIR) / "tasks"};
   EXPECT_EQ(load_task("drop-bowl", dirs).name, "drop-bowl");
   try {
-    (void)find_task("3-stack", dirs);
+    (void)find_task("9-stack", dirs);
     FAIL();
   } catch (const unknown_name& e) {
-    EXPECT_THAT(e.what(), HasSubstr("unknown task '3-stack'"));
+    EXPECT_THAT(e.what(), HasSubstr("unknown task '9-stack'"));
     EXPECT_THAT(e.what(), HasSubstr("1-stack, 1-stack-reality, 2-stack"));
   }
 }

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "cli/common.hpp"
@@ -14,6 +15,7 @@
 #include "pgm/core/text.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/sim/simulator.hpp"
+#include "pgm/sim/task_episodes.hpp"
 #include "pgm/sim/task_lookup.hpp"
 #include "pgm/sim/task_variant.hpp"
 
@@ -29,6 +31,7 @@ struct simulate_arguments {
   unsigned threads = 0;
   std::string tasks_dir;
   std::string out;
+  bool long_form = false;
 };
 
 /// Rows simulated and written at a time: memory stays that of one block (a few tens of MB)
@@ -45,6 +48,8 @@ void run_simulate(const simulate_arguments& args) {
     directories = sim::default_task_directories();
   }
   const auto task = sim::load_task_variant(args.task, args.variant, directories);
+  // Checked before any work: a task without numbered actions has no steps.
+  const auto layout = args.long_form ? std::optional(sim::episode_layout_of(task)) : std::nullopt;
   sim::simulate_options options;
   options.backend = args.backend;
   options.seed = args.seed;
@@ -62,10 +67,12 @@ void run_simulate(const simulate_arguments& args) {
       };
       const auto data = sim::simulate(task, options);
       if (out == nullptr) continue;
+      const auto written = layout ? sim::episodes_of(data, task, *layout, done) : dataset();
+      const auto& rows = layout ? written : data;
       if (done == 0) {
-        write_csv(data, *out);
+        write_csv(rows, *out);
       } else {
-        write_csv_rows(data, *out);
+        write_csv_rows(rows, *out);
       }
       const auto& success = data.discrete(task.success);
       for (std::size_t row = 0; row < data.rows(); ++row) successes += success.code(row);
@@ -80,8 +87,9 @@ void run_simulate(const simulate_arguments& args) {
       [&] {
         bar.finish();
         summary_before_replacing(
-            "simulated " + std::to_string(args.rows) + " experiments of " + task.name + " (" + args.backend +
-                ", seed " + std::to_string(args.seed) + "): " + task.success + " = 1 in " +
+            "simulated " + std::to_string(args.rows) + " experiments of " + task.name +
+                (layout ? " as episodes of " + std::to_string(layout->steps) + " steps" : std::string()) + " (" +
+                args.backend + ", seed " + std::to_string(args.seed) + "): " + task.success + " = 1 in " +
                 text::format_short(static_cast<double>(successes) / static_cast<double>(args.rows), 4) + " -> " +
                 args.out + "\n",
             args.out)();
@@ -118,6 +126,10 @@ void add_simulate_command(CLI::App& app) {
   cmd->add_option("--tasks-dir", args->tasks_dir,
                   "Directory of task files (default: $PGM_TASKS_DIR, then the source tree's tasks/)");
   cmd->add_option("--out", args->out, "Output CSV file (written atomically)")->required();
+  cmd->add_flag("--long-form", args->long_form,
+                "Write each experiment as an episode of the task's actions, one row per step (columns episode, t and "
+                "the numbered variables without their number: xOff1, xOff2 become xOff at t = 0, 1), as pgm fit "
+                "--dynamic reads it; for tasks of numbered actions (the stacking tasks)");
   cmd->callback([args] { run_simulate(*args); });
 }
 
