@@ -43,6 +43,7 @@ __all__ = [
     "discretize",
     "experiment",
     "fit",
+    "fit_dynamic",
     "from_pgmpy",
     "learn_structure",
     "MarkovNetwork",
@@ -327,9 +328,9 @@ def read_network(path):
         handle = _core.read_markov_json(path)
         if handle is not None:
             return MarkovNetwork(handle, None)
-        handle = _core.read_dynamic_json(path)
-        if handle is not None:
-            return DynamicNetwork(handle)
+        found = _core.read_dynamic_json(path)
+        if found is not None:
+            return DynamicNetwork(*found)
     return Network(_core.read_network(path))
 
 
@@ -514,6 +515,84 @@ def fit(
         _flag(keep_counts, "keep_counts"),
     )
     return Network(net)
+
+
+def fit_dynamic(
+    data,
+    edges=None,
+    estimator="mle",
+    prior="bdeu",
+    ess=1.0,
+    prior_model=None,
+    strategy=None,
+    map=None,
+    w_prior=None,
+    *,
+    model=None,
+    alpha=1.0,
+    initial_map=None,
+    initial_strategy=None,
+    empty="uniform",
+    missing="error",
+    keep_counts=False,
+    threads=0,
+):
+    """Fits a dynamic network (a 2-TBN with tied tables) from episodes, as `pgm fit --dynamic`.
+
+    data: a DataFrame in long form, one row per episode and step: columns `t` (0, 1, … within
+    an episode), `episode` (any labels; without it, one episode) and the template variables'
+    states. edges: "a->b" within a slice, "a@-1->b" from the step before, as a text or (parent,
+    child) pairs; or model: a DynamicNetwork whose structure and states to fit instead.
+    estimator, prior, ess, alpha and empty as pgm.fit takes them. prior_model: a static
+    pgm.Network (the 1-Stack's, say) whose tables become the priors of the template variables'
+    tables by `strategy` through `map` (template variables as targets, "x@-1" for a parent in
+    the step before) at `w_prior` (5 by default); initial_map and initial_strategy are the
+    first slice's own (docs/dynamic.md). missing: "error" (the default) or "available" (each
+    family counted over the steps where it is present). keep_counts: keep the counts, so that
+    DynamicNetwork.update can add episodes later. How the priors were transferred is in the
+    model's `notes`.
+    """
+    if (edges is None) == (model is None):
+        raise Error('give the structure as edges ("a->b, a@-1->a") or as model (a pgm.DynamicNetwork), one of them')
+    if model is not None and not isinstance(model, DynamicNetwork):
+        raise TypeError("model must be a pgm.DynamicNetwork")
+    if missing not in ("error", "available"):
+        raise Error(f"missing must be 'error' or 'available' for a dynamic network, got '{missing}'"
+                    + ("; 'drop' would leave gaps in the episodes" if missing == "drop" else ""))
+    text = edges if edges is None or isinstance(edges, str) else ", ".join(f"{a}->{b}" for a, b in _edge_pairs(edges))
+    if model is not None:
+        variables = model.variables
+    else:
+        variables = sorted({name.split("@")[0] for pair in _core.parse_edge_list(text) for name in pair})
+    if prior_model is None:
+        if any(v is not None for v in (strategy, map, w_prior, initial_map, initial_strategy)):
+            raise Error("strategy, map, w_prior, initial_map and initial_strategy apply with prior_model")
+    elif not isinstance(prior_model, Network):
+        raise TypeError("prior_model must be a pgm.Network")
+    elif map is None:
+        raise Error('prior_model needs map, e.g. map="onTop=onTop1, xOff~xOff1, xOff@-1==xOff1"')
+    weight = None if w_prior is None else _real(w_prior, "w_prior")
+    wanted = list(variables) + ["t"] + (["episode"] if "episode" in data.columns else [])
+    data = _frame.with_missing(data, wanted, missing)
+    columns = _frame.columns_of(data, wanted)
+    found, notes = _core.fit_dynamic(
+        columns,
+        text or "",
+        None if model is None else model._model,
+        _text(estimator, "estimator"),
+        _text(prior, "prior"),
+        _prior_settings(alpha=_real(alpha, "alpha"), ess=_real(ess, "ess")),
+        _text(empty, "empty"),
+        _threads(threads),
+        None if prior_model is None else prior_model._net,
+        _text(strategy, "strategy") or "minimal",
+        _text(map, "map") or "",
+        5.0 if weight is None else weight,
+        _text(initial_map, "initial_map"),
+        _text(initial_strategy, "initial_strategy"),
+        _flag(keep_counts, "keep_counts"),
+    )
+    return DynamicNetwork(*found, notes=notes)
 
 
 def _em_arguments(missing, latent, restarts, seed, max_iterations, tolerance, hard, keep_counts):

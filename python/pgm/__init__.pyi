@@ -117,6 +117,9 @@ class DynamicNetwork:
     @property
     def transition_edges(self) -> list[tuple[str, str]]: ...
     def unroll(self, steps: int) -> Network: ...
+    @property
+    def has_counts(self) -> bool: ...
+    def update(self, data: pd.DataFrame, decay: float = 1.0, *, threads: int = 0) -> DynamicNetwork: ...
     def filter(
         self, data: pd.DataFrame, predict: int = 0, do: Optional[Mapping[str, str]] = None
     ) -> pd.DataFrame: ...
@@ -181,6 +184,26 @@ def fit(
     keep_counts: bool = False,
     states: Optional[Mapping[str, Sequence[Union[str, int]]]] = None,
 ) -> Network: ...
+def fit_dynamic(
+    data: pd.DataFrame,
+    edges: Optional[_Edges] = None,
+    estimator: Literal["mle", "bayes"] = "mle",
+    prior: str = "bdeu",
+    ess: float = 1.0,
+    prior_model: Optional[Network] = None,
+    strategy: Optional[str] = None,
+    map: Optional[str] = None,
+    w_prior: Optional[float] = None,
+    *,
+    model: Optional[DynamicNetwork] = None,
+    alpha: float = 1.0,
+    initial_map: Optional[str] = None,
+    initial_strategy: Optional[str] = None,
+    empty: str = "uniform",
+    missing: Literal["error", "available"] = "error",
+    keep_counts: bool = False,
+    threads: int = 0,
+) -> DynamicNetwork: ...
 def query(
     network: Network,
     variables: _Names,

@@ -13,12 +13,35 @@ class DynamicNetwork:
     """A two-slice temporal Bayesian network: pgm.read_network returns one for a JSON model of
     "kind": "dynamic"."""
 
-    __slots__ = ("_model",)
+    __slots__ = ("_model", "_counts", "notes")
 
-    def __init__(self, handle):
+    def __init__(self, handle, counts=None, notes=()):
         if not isinstance(handle, _core.DynamicNetwork):
-            raise TypeError("read a DynamicNetwork with pgm.read_network")
+            raise TypeError("read a DynamicNetwork with pgm.read_network, or fit one with pgm.fit_dynamic")
         self._model = handle
+        self._counts = counts
+        self.notes = list(notes)
+
+    @property
+    def has_counts(self):
+        """Whether the model keeps the counts it was estimated from, so that `update` can add
+        episodes to them (pgm.fit_dynamic(..., keep_counts=True), or a model file written so)."""
+        return self._counts is not None
+
+    def update(self, data, decay=1.0, *, threads=0):
+        """A new model: this one's counts, times `decay` in (0, 1], plus the episodes of `data`
+        (long form, as pgm.fit_dynamic reads it, holding the model's states), each table
+        estimated again under the prior it was fitted with. With decay 1 it equals fitting all
+        the episodes at once, to the last bit. As `pgm update`; this model is unchanged."""
+        from ._checks import _real, _threads
+        from . import _frame
+
+        decay = _real(decay, "decay")
+        if not 0 < decay <= 1:
+            raise _core.Error(f"decay must be in (0, 1], got {decay}")
+        columns = _frame.columns_of(data, _long_form_columns(data, self.variables))
+        model, counts = _core.update_dynamic(self._model, self._counts, columns, decay, _threads(threads))
+        return DynamicNetwork(model, counts)
 
     @property
     def variables(self):
@@ -158,8 +181,21 @@ class DynamicNetwork:
         return dynamic_to_pgmpy(self, bool(state_names))
 
     def write(self, path):
-        """Writes the model as pgm's JSON ("kind": "dynamic"), atomically."""
-        self._model.write(_path(path, "path"))
+        """Writes the model as pgm's JSON ("kind": "dynamic"), atomically, with its counts when
+        it keeps them (pgm update and DynamicNetwork.update read them)."""
+        if self._counts is None:
+            self._model.write(_path(path, "path"))
+        else:
+            self._counts.write(self._model, _path(path, "path"))
 
     def __repr__(self):
         return f"<pgm.DynamicNetwork: {len(self.variables)} template variables>"
+
+
+def _long_form_columns(data, variables):
+    """The columns of a long-form frame a fit reads: t, the episode's when there is one, and
+    `variables`; a missing one is an error naming it."""
+    names = list(variables) + ["t"]
+    if "episode" in data.columns:
+        names.append("episode")
+    return names

@@ -72,6 +72,10 @@ class numpy_source {
 void require_columns(const std::vector<std::string>& wanted, const std::vector<std::string>& available,
                      const std::string& source);
 
+/// The data's column under the model's variable: each value's label becomes that state's code.
+/// Throws data_error for a value that is no state of the model's.
+[[nodiscard]] discrete_column with_model_states(const discrete_column& column, const variable& model);
+
 /// A data set's columns for pgm/_frame.py: (name, "coded", codes, states) for a discrete
 /// column, (name, "float", values, None) for a continuous one; each array a new NumPy buffer.
 [[nodiscard]] pybind11::list dataset_columns(const dataset& data);

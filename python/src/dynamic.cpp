@@ -14,22 +14,119 @@
 #include <utility>
 #include <vector>
 
+#include "columns.hpp"
 #include "network_handle.hpp"
 #include "pgm/core/dynamic_network.hpp"
+#include "pgm/core/text.hpp"
 #include "pgm/inference/dynamic_inference.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
+#include "pgm/learn/dynamic_statistics.hpp"
+#include "pgm/learn/estimate.hpp"
+#include "pgm/learn/estimator_choice.hpp"
+#include "pgm/learn/fit_dynamic.hpp"
+#include "pgm/transfer/dynamic_transfer.hpp"
 
 namespace py = pybind11;
 
 namespace pgm::python {
 namespace {
 
-/// The dynamic network of a pgm JSON model of "kind": "dynamic", or None for another model.
+/// A dynamic network and the counts it was estimated from, when it keeps them: what
+/// pgm.DynamicNetwork holds.
+using model_and_counts = std::pair<dynamic_network, std::optional<dynamic_fit_statistics>>;
+
+/// The dynamic network of a pgm JSON model of "kind": "dynamic", with its counts (None where
+/// it keeps none), or None for another model.
 py::object read_dynamic_json(const std::filesystem::path& path) {
   const auto text = read_model_text(path);
   if (declared_model_kind(text) != "dynamic") return py::none();
-  return py::cast(parse_dynamic_json(text, path.string()));
+  auto file = parse_dynamic_model_json(text, path.string());
+  return py::cast(model_and_counts{std::move(file.model), std::move(file.statistics)});
+}
+
+/// What pgm.fit_dynamic passes besides the frame: the prior, and the transfer's settings.
+struct dynamic_fit_arguments {
+  std::string edges;
+  estimator_choice estimator;
+  std::string empty = "uniform";
+  unsigned threads = 0;
+  const dynamic_network* structure_of_model = nullptr;  // `model=`: its structure and states
+  const bayesian_network* prior_model = nullptr;
+  transfer_settings transfer;
+  std::optional<std::string> initial_map, initial_strategy;
+  bool keep_counts = false;
+};
+
+/// The episodes of the frame's columns (episode, t and the template variables), the template
+/// variables recoded onto `model`'s states when there is one.
+dataset episodes_of(const std::vector<column_buffer>& buffers, const dynamic_network* model) {
+  auto data = make_dataset(buffers, "DataFrame");
+  if (model == nullptr) return data;
+  dataset recoded(data.source());
+  const auto& templates = model->initial().structure();
+  for (const auto& column : data.columns()) {
+    const auto& name = column_name(column);
+    recoded.add(templates.contains(name) ? data_column(with_model_states(data.discrete(name), templates.at(name)))
+                                         : column);
+  }
+  return recoded;
+}
+
+/// pgm.fit_dynamic: the 2-TBN fitted from a frame of episodes in long form, as pgm fit --dynamic.
+py::tuple fit_dynamic_frame(const py::list& columns, const dynamic_fit_arguments& args) {
+  std::vector<py::array> keep;
+  const auto buffers = read_column_buffers(columns, keep);
+  model_and_counts fitted;
+  std::vector<std::string> notes;
+  {
+    const py::gil_scoped_release release;
+    const auto data = episodes_of(buffers, args.structure_of_model);
+    const auto structure = args.structure_of_model ? structure_of(*args.structure_of_model)
+                                                   : dynamic_structure_from_data(data, parse_edge_list(args.edges));
+    dynamic_fit_options options;
+    options.fit.prior = prior_of(args.estimator);
+    options.fit.estimation.empty = parse_empty_configuration(args.empty);
+    options.fit.counting.threads = args.threads;
+    const auto counts = count_dynamic(structure, data, options.columns, options.fit.counting);
+    if (args.prior_model) {
+      std::optional<transfer_settings> initial;
+      if (args.initial_map || args.initial_strategy) {
+        initial = args.transfer;
+        if (args.initial_map) initial->map = *args.initial_map;
+        if (args.initial_strategy) initial->strategy = *args.initial_strategy;
+      }
+      const auto report = add_transferred_priors(options, structure, counts, *args.prior_model, args.transfer,
+                                                 initial ? &*initial : nullptr);
+      for (const auto& [node, entry] : report.nodes) {
+        notes.push_back("'" + node + "' gets the " + args.transfer.strategy + " prior from '" + entry.prior_node +
+                        "' with w = " + text::format_short(entry.weight));
+      }
+    }
+    fitted.first = fit_dynamic(structure, counts, options);
+    if (args.keep_counts) fitted.second = dynamic_statistics_of(structure, counts, options);
+  }
+  return py::make_tuple(py::cast(std::move(fitted)), notes);
+}
+
+/// DynamicNetwork.update: the frame's episodes added to the model's counts, every table
+/// estimated again under its prior (old counts weighted by `decay`), as pgm update.
+model_and_counts update_frame(const model_and_counts& current, const py::list& columns, double decay,
+                              unsigned threads) {
+  if (!current.second) {
+    throw error(
+        "the dynamic network carries no counts to add the episodes to: fit it with keep_counts=True (or read a "
+        "model written so, or by pgm fit --dynamic --keep-counts)");
+  }
+  std::vector<py::array> keep;
+  const auto buffers = read_column_buffers(columns, keep);
+  const py::gil_scoped_release release;
+  const auto data = episodes_of(buffers, &current.first);
+  const auto structure = structure_of(current.first);
+  const auto counts = count_dynamic(structure, data, {}, {.threads = threads});
+  auto statistics = updated(*current.second, counts, decay);
+  auto model = estimate_dynamic(structure, statistics);
+  return {std::move(model), std::move(statistics)};
 }
 
 using step_evidence = std::vector<std::map<std::string, std::string>>;  // per step: {variable: state}
@@ -131,7 +228,47 @@ void add_dynamic(py::module_& m) {
       .def("most_probable", &most_probable_steps_of)
       .def("to_json", [](const dynamic_network& d) { return to_json(d).dump(2); })
       .def("write", [](const dynamic_network& d, const std::filesystem::path& path) { write_dynamic_json(d, path); });
+  py::class_<dynamic_fit_statistics>(m, "DynamicCounts")
+      .def_property_readonly("episodes", [](const dynamic_fit_statistics& s) { return s.initial.rows; })
+      .def("write", [](const dynamic_fit_statistics& s, const dynamic_network& d, const std::filesystem::path& path) {
+        write_dynamic_json(d, path, {}, &s);
+      });
   m.def("read_dynamic_json", &read_dynamic_json);
+  m.def(
+      "fit_dynamic",
+      [](const py::list& columns, const std::string& edges, const dynamic_network* model, const std::string& estimator,
+         const std::string& prior, const std::vector<std::tuple<std::string, std::string, std::string>>& prior_settings,
+         const std::string& empty, unsigned threads, const network_handle* prior_model, const std::string& strategy,
+         const std::string& map, std::optional<double> w_prior, const std::optional<std::string>& initial_map,
+         const std::optional<std::string>& initial_strategy, bool keep_counts) {
+        dynamic_fit_arguments args;
+        args.edges = edges;
+        args.structure_of_model = model;
+        args.estimator = {estimator, prior, {}};
+        for (const auto& [keyword, key, value] : prior_settings)
+          args.estimator.settings.push_back({keyword, key, value});
+        args.empty = empty;
+        args.threads = threads;
+        if (prior_model) args.prior_model = &prior_model->network;
+        args.transfer.strategy = strategy;
+        args.transfer.map = map;
+        args.transfer.weight = w_prior;
+        args.initial_map = initial_map;
+        args.initial_strategy = initial_strategy;
+        args.keep_counts = keep_counts;
+        return fit_dynamic_frame(columns, args);
+      },
+      py::arg("columns"), py::arg("edges"), py::arg("model").none(true), py::arg("estimator"), py::arg("prior"),
+      py::arg("prior_settings"), py::arg("empty"), py::arg("threads"), py::arg("prior_model").none(true),
+      py::arg("strategy"), py::arg("map"), py::arg("w_prior"), py::arg("initial_map"), py::arg("initial_strategy"),
+      py::arg("keep_counts"));
+  m.def(
+      "update_dynamic",
+      [](const dynamic_network& model, const dynamic_fit_statistics* counts, const py::list& columns, double decay,
+         unsigned threads) {
+        return update_frame({model, counts ? std::optional(*counts) : std::nullopt}, columns, decay, threads);
+      },
+      py::arg("model"), py::arg("counts").none(true), py::arg("columns"), py::arg("decay"), py::arg("threads"));
   m.def("parse_dynamic_json", &parse_dynamic_json);
 }
 

@@ -433,34 +433,6 @@ py::dict declared_defaults(const component_registry<Product>& registry) {
   return defaults;
 }
 
-/// The data's column under the model's variable: each value's label becomes that state's code.
-discrete_column with_model_states(const discrete_column& column, const variable& model) {
-  std::vector<std::uint32_t> map(column.var().cardinality());
-  for (std::size_t s = 0; s < map.size(); ++s) {
-    const auto& label = column.var().states()[s];
-    const auto& states = model.states();
-    const auto it = std::find(states.begin(), states.end(), label);
-    if (it == states.end()) {
-      throw data_error("column '" + column.name() + "' holds the value '" + label +
-                       "', which is not a state of the network's variable (states: " + text::list_for_message(states) +
-                       ")");
-    }
-    map[s] = static_cast<std::uint32_t>(it - states.begin());
-  }
-  const bool missing = column.missing() != 0;
-  auto codes = make_code_vector(model.cardinality() + (missing ? 1 : 0), column.size());
-  std::visit(
-      [&](auto& out) {
-        using code_type = typename std::decay_t<decltype(out)>::value_type;
-        for (std::size_t row = 0; row < out.size(); ++row) {
-          const auto c = column.code(row);
-          out[row] = c < map.size() ? static_cast<code_type>(map[c]) : missing_code<code_type>;
-        }
-      },
-      codes);
-  return discrete_column(model, std::move(codes), std::in_place, column.missing());
-}
-
 py::tuple score_frame(const network_handle& handle, const py::list& columns, const std::string& score_text,
                       unsigned threads) {
   std::vector<py::array> keep;

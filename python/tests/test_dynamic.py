@@ -110,3 +110,80 @@ def test_the_most_probable_sequence_is_the_unrolled_networks_most_probable_expla
     # ln P(x*, e) = ln P(x* | e) + ln P(e)
     expected = math.log(probability) + engine.log_probability_of_evidence()
     assert best.attrs["log_probability"] == pytest.approx(expected, abs=1e-12)
+
+
+TOWER_EDGES = "xOff->onTop, yOff->onTop, onTop@-1->onTop, xOff@-1->onTop"
+
+
+def tower_episodes(program, tmp_path, name, rows, seed):
+    """The 3-stack tower's episodes in long form, offsets in 5 bins of the first call's edges."""
+    raw, binned, edges = tmp_path / f"{name}-raw.csv", tmp_path / f"{name}.csv", tmp_path / "edges.json"
+    program.run("simulate", "--task", "3-stack", "--rows", rows, "--seed", seed, "--long-form", "--out", raw)
+    if edges.exists():
+        program.run("discretize", "--in", raw, "--method", "edges", "--edges-in", edges, "--out", binned)
+    else:
+        program.run("discretize", "--in", raw, "--columns", "xOff,yOff", "--bins", 5, "--out", binned, "--edges-out",
+                    edges)
+    return binned
+
+
+def test_fit_dynamic_and_update_write_what_the_program_writes(program, tmp_path):
+    import pandas as pd
+
+    monday = tower_episodes(program, tmp_path, "monday", 300, 1)
+    tuesday = tower_episodes(program, tmp_path, "tuesday", 200, 2)
+    program.run("simulate", "--task", "1-stack", "--rows", 2000, "--seed", 3, "--out", tmp_path / "one-raw.csv")
+    program.run("discretize", "--in", tmp_path / "one-raw.csv", "--columns", "xOff1,yOff1", "--bins", 5, "--out",
+                tmp_path / "one.csv")
+    program.run("fit", "--data", tmp_path / "one.csv", "--edges", "xOff1->onTop1, yOff1->onTop1", "--out",
+                tmp_path / "one.json")
+    transfer = ["--estimator", "bayes", "--prior", "bdeu[ess=2]", "--prior-model", tmp_path / "one.json", "--strategy",
+                "minimal", "--w-prior", 5, "--map", "onTop=onTop1, xOff~xOff1, yOff~yOff1, xOff@-1==xOff1, yOff1@0",
+                "--initial-map", "onTop=onTop1, xOff==xOff1, yOff==yOff1", "--initial-strategy", "direct"]
+    program.run("fit", "--dynamic", "--data", monday, "--edges", TOWER_EDGES, *transfer, "--keep-counts", "--out",
+                tmp_path / "cli.json")
+    program.run("update", "--model", tmp_path / "cli.json", "--data", tuesday, "--decay", 0.5, "--out",
+                tmp_path / "cli-updated.json")
+
+    model = pgm.fit_dynamic(
+        pd.read_csv(monday), TOWER_EDGES, "bayes", "bdeu[ess=2]", prior_model=pgm.read_network(tmp_path / "one.json"),
+        strategy="minimal", w_prior=5, map="onTop=onTop1, xOff~xOff1, yOff~yOff1, xOff@-1==xOff1, yOff1@0",
+        initial_map="onTop=onTop1, xOff==xOff1, yOff==yOff1", initial_strategy="direct", keep_counts=True)
+    assert model.has_counts
+    assert any("'onTop' gets the minimal prior from 'onTop1' with w = 5" in note for note in model.notes)
+    model.write(tmp_path / "python.json")
+    assert (tmp_path / "python.json").read_text() == (tmp_path / "cli.json").read_text()
+    updated = model.update(pd.read_csv(tuesday), decay=0.5)
+    updated.write(tmp_path / "python-updated.json")
+    assert (tmp_path / "python-updated.json").read_text() == (tmp_path / "cli-updated.json").read_text()
+    # Read back, the counts come along: the update of the file equals the update in memory.
+    again = pgm.read_network(tmp_path / "python.json").update(pd.read_csv(tuesday), decay=0.5)
+    again.write(tmp_path / "again.json")
+    assert (tmp_path / "again.json").read_text() == (tmp_path / "cli-updated.json").read_text()
+    # A model's structure and states, refitted without a prior, as pgm fit --dynamic --model.
+    program.run("fit", "--dynamic", "--data", monday, "--model", tmp_path / "cli.json", "--out", tmp_path / "mle.json")
+    pgm.fit_dynamic(pd.read_csv(monday), model=model).write(tmp_path / "python-mle.json")
+    assert (tmp_path / "python-mle.json").read_text() == (tmp_path / "mle.json").read_text()
+
+
+def test_fit_dynamic_refuses_what_it_cannot_do(program, tmp_path):
+    import pandas as pd
+
+    data = pd.read_csv(tower_episodes(program, tmp_path, "few", 20, 4))
+    with pytest.raises(pgm.Error, match="give the structure as edges"):
+        pgm.fit_dynamic(data)
+    with pytest.raises(pgm.Error, match="'drop' would leave gaps in the episodes"):
+        pgm.fit_dynamic(data, TOWER_EDGES, missing="drop")
+    with pytest.raises(pgm.Error, match="apply with prior_model"):
+        pgm.fit_dynamic(data, TOWER_EDGES, map="onTop=onTop1")
+    with pytest.raises(pgm.Error, match="ends in another slice"):
+        pgm.fit_dynamic(data, "xOff->onTop@-1")
+    model = pgm.fit_dynamic(data, TOWER_EDGES)
+    assert not model.has_counts
+    with pytest.raises(pgm.Error, match="carries no counts to add the episodes to"):
+        model.update(data)
+    counted = pgm.fit_dynamic(data, TOWER_EDGES, keep_counts=True)
+    with pytest.raises(pgm.Error, match="holds the value '7', which is not a state"):
+        counted.update(data.assign(xOff=7))
+    with pytest.raises(pgm.Error, match="has two rows with t = 0"):
+        pgm.fit_dynamic(data.assign(t=0), TOWER_EDGES)
