@@ -343,6 +343,7 @@ py::dict prevent_plan(const network_handle& handle, const py::object& planned,
   const auto movable = controllable ? *controllable : default_controllable(network, event);
   if (!(epsilon >= 0.0 && epsilon <= 1.0))
     throw error("epsilon must lie in [0, 1], got " + text::format_double(epsilon));
+  const auto unit = parse_choice("cost unit", per, distances);  // checked with or without a reward
   prevention_options options;
   options.epsilon = epsilon;
   options.metric = parse_distance(distance);
@@ -350,11 +351,8 @@ py::dict prevent_plan(const network_handle& handle, const py::object& planned,
       plan_prevention(network, event, plan_values, movable, options, {.marginalize_missing = marginalize});
   std::optional<utility_prevention> by_utility;
   if (reward) {
-    if (per != "steps" && per != "units") throw error("per must be \"steps\" or \"units\", got \"" + per + "\"");
     by_utility = prevent_by_utility(plan, movable,
-                                    {.reward = *reward,
-                                     .cost = {move_cost.begin(), move_cost.end()},
-                                     .unit = per == "units" ? move_costs::per::units : move_costs::per::steps});
+                                    {.reward = *reward, .cost = {move_cost.begin(), move_cost.end()}, .unit = unit});
   }
   const auto& why = by_utility ? by_utility->why : plan.why;
   py::dict suggestion;

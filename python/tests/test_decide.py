@@ -162,3 +162,5 @@ def test_prevent_with_a_reward_equals_the_program_and_weighs_costs(program, two_
     assert stay["expected_utility"] == pytest.approx(100 * stay["predicted"])
     with pytest.raises(pgm.Error, match="not a controllable parent"):
         pgm.prevent(net, assign, controllable=["xOff2"], reward=100, move_cost={"yOff2": 1})
+    with pytest.raises(pgm.Error, match=r"unknown cost unit 'unit'; did you mean 'units'\?"):
+        pgm.prevent(net, assign, per="unit")

@@ -27,7 +27,8 @@
 namespace pgm {
 
 struct move_costs {
-  enum class per { steps, units };
+  /// Bin steps or units, as the ε-rule measures its distance ("steps", "units": parse_distance).
+  using per = prevention_options::distance;
   /// The utility of success; failure is worth 0.
   double reward = 1;
   /// Cost per bin step (or unit) of each controllable variable; a variable not named is free.

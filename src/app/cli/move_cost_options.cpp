@@ -16,15 +16,14 @@ void add_move_cost_options(CLI::App& cmd, move_cost_arguments& args, const std::
                  "\"xOff2=2,yOff2=2\"; a controllable variable not named moves for free")
       ->needs(reward);
   cmd.add_option("--per", args.per, "With --reward: costs per bin step (steps) or per unit moved (units)")
-      ->check(CLI::IsMember({"steps", "units"}))
+      ->check(CLI::IsMember(known_distances()))
       ->needs(reward)
       ->capture_default_str();
 }
 
 std::optional<move_costs> move_costs_of(const move_cost_arguments& args) {
   if (!args.reward) return std::nullopt;
-  move_costs costs{.reward = *args.reward,
-                   .unit = args.per == "units" ? move_costs::per::units : move_costs::per::steps};
+  move_costs costs{.reward = *args.reward, .unit = parse_distance(args.per)};
   if (args.move_cost.empty()) return costs;
   for (const auto& piece : split_list(args.move_cost, "--move-cost")) {
     const auto eq = piece.find('=');
