@@ -996,11 +996,13 @@ def _tasks_folder(tasks_dir):
     return packaged if os.path.isdir(packaged) else None
 
 
-def simulate(task, rows, seed=0, backend="analytic", variant="sim", *, threads=0, tasks_dir=None):
-    """Runs `rows` experiments of a task (1-stack, 2-stack, drop-plate, …) with a simulator
-    back-end, as `pgm simulate`: the raw data as a DataFrame. The same seed gives the same data
-    for any number of threads. variant "reality" is the stacking tasks' stand-in for the real
-    robot (not real data)."""
+def simulate(task, rows, seed=0, backend="analytic", variant="sim", *, threads=0, tasks_dir=None, long_form=False):
+    """Runs `rows` experiments of a task (1-stack, 2-stack, 3-stack, drop-plate, …) with a
+    simulator back-end, as `pgm simulate`: the raw data as a DataFrame. The same seed gives the
+    same data for any number of threads. variant "reality" is the stacking tasks' stand-in for
+    the real robot (not real data). long_form: each experiment as an episode of the task's
+    numbered actions, one row per action (columns episode, t, xOff, …), as pgm.fit_dynamic
+    reads it."""
     columns = _core.simulate(
         _text(task, "task"),
         _whole(rows, "rows"),
@@ -1009,6 +1011,7 @@ def simulate(task, rows, seed=0, backend="analytic", variant="sim", *, threads=0
         _text(variant, "variant"),
         _threads(threads),
         _tasks_folder(tasks_dir),
+        _flag(long_form, "long_form"),
     )
     return _frame.frame_of(columns)
 

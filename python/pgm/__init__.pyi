@@ -308,6 +308,7 @@ def simulate(
     *,
     threads: int = 0,
     tasks_dir: Optional[_Path] = None,
+    long_form: bool = False,
 ) -> pd.DataFrame: ...
 def experiment(
     scenario: str,

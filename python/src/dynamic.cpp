@@ -228,8 +228,7 @@ void add_dynamic(py::module_& m) {
       .def("most_probable", &most_probable_steps_of)
       .def("to_json", [](const dynamic_network& d) { return to_json(d).dump(2); })
       .def("write", [](const dynamic_network& d, const std::filesystem::path& path) { write_dynamic_json(d, path); });
-  py::class_<dynamic_fit_statistics>(m, "DynamicCounts")
-      .def_property_readonly("episodes", [](const dynamic_fit_statistics& s) { return s.initial.rows; })
+  py::class_<dynamic_fit_statistics>(m, "DynamicCounts")  // opaque: kept, updated and written with its model
       .def("write", [](const dynamic_fit_statistics& s, const dynamic_network& d, const std::filesystem::path& path) {
         write_dynamic_json(d, path, {}, &s);
       });

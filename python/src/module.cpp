@@ -52,6 +52,7 @@
 #include "pgm/learn/structure_prior.hpp"
 #include "pgm/pipeline/fit_pipeline.hpp"
 #include "pgm/sim/simulator.hpp"
+#include "pgm/sim/task_episodes.hpp"
 #include "pgm/sim/task_lookup.hpp"
 #include "pgm/sim/task_variant.hpp"
 #include "pgm/transfer/transfer_settings.hpp"
@@ -481,7 +482,8 @@ std::vector<std::filesystem::path> task_folders(const std::optional<std::string>
 }
 
 py::list simulate_task(const std::string& task, std::size_t rows, std::uint64_t seed, const std::string& backend,
-                       const std::string& variant, unsigned threads, const std::optional<std::string>& tasks_dir) {
+                       const std::string& variant, unsigned threads, const std::optional<std::string>& tasks_dir,
+                       bool long_form) {
   dataset data;
   {
     const py::gil_scoped_release release;
@@ -496,7 +498,9 @@ py::list simulate_task(const std::string& task, std::size_t rows, std::uint64_t 
     options.rows = rows;
     options.seed = seed;
     options.threads = threads;
+    const auto layout = long_form ? std::optional(sim::episode_layout_of(definition)) : std::nullopt;
     data = sim::simulate(definition, options);
+    if (layout) data = sim::episodes_of(data, definition, *layout);
   }
   return dataset_columns(data);
 }

@@ -187,3 +187,20 @@ def test_fit_dynamic_refuses_what_it_cannot_do(program, tmp_path):
         counted.update(data.assign(xOff=7))
     with pytest.raises(pgm.Error, match="has two rows with t = 0"):
         pgm.fit_dynamic(data.assign(t=0), TOWER_EDGES)
+
+
+def test_a_simulated_tower_fits_from_python_alone():
+    long = pgm.simulate("3-stack", 400, seed=6, long_form=True)
+    assert list(long.columns[:3]) == ["episode", "t", "xOff"]
+    assert len(long) == 1200 and list(long["t"][:4]) == [0, 1, 2, 0]
+    wide = pgm.simulate("3-stack", 400, seed=6)
+    assert (long["xOff"].to_numpy()[1::3] == wide["xOff2"].to_numpy()).all()
+    binned, _ = pgm.discretize(long, bins=5, columns=["xOff", "yOff"])
+    model = pgm.fit_dynamic(binned, TOWER_EDGES)
+    # A tower that fell stays fallen: below a fallen one, the tied table has a cube stand only
+    # where no episode reached that configuration (uniform), never from data.
+    table = model.unroll(2).cpt("onTop@1")
+    fallen = table[table["onTop@0"] == "0"]
+    assert set(fallen["1"]) <= {0.0, 0.5} and (fallen["1"] == 0.0).sum() > 100
+    with pytest.raises(pgm.Error, match="task 'drop-glass' has no numbered variables"):
+        pgm.simulate("drop-glass", 10, long_form=True)
