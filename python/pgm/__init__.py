@@ -20,7 +20,7 @@ from ._checks import _assignment, _choice, _did_you_mean, _flag, _names, _path, 
 from ._core import Error
 from . import _checks
 from ._inference import ENGINES, InferenceEngine
-from ._dynamic import DynamicNetwork
+from ._dynamic import DynamicNetwork, _long_form_columns
 from ._markov import MarkovNetwork
 from ._decisions import DecisionSolution, InfluenceDiagram
 
@@ -572,7 +572,7 @@ def fit_dynamic(
     elif map is None:
         raise Error('prior_model needs map, e.g. map="onTop=onTop1, xOff~xOff1, xOff@-1==xOff1"')
     weight = None if w_prior is None else _real(w_prior, "w_prior")
-    wanted = list(variables) + ["t"] + (["episode"] if "episode" in data.columns else [])
+    wanted = _long_form_columns(data, variables)
     data = _frame.with_missing(data, wanted, missing)
     columns = _frame.columns_of(data, wanted)
     found, notes = _core.fit_dynamic(

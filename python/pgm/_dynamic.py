@@ -5,8 +5,8 @@ it into a pgm.Network of T slices whose variables are named X@0 … X@(T−1).""
 
 import numpy as np
 
-from . import _core
-from ._checks import _did_you_mean, _evidence, _path, _whole
+from . import _core, _frame
+from ._checks import _did_you_mean, _evidence, _path, _real, _threads, _whole
 
 
 class DynamicNetwork:
@@ -33,9 +33,6 @@ class DynamicNetwork:
         (long form, as pgm.fit_dynamic reads it, holding the model's states), each table
         estimated again under the prior it was fitted with. With decay 1 it equals fitting all
         the episodes at once, to the last bit. As `pgm update`; this model is unchanged."""
-        from ._checks import _real, _threads
-        from . import _frame
-
         decay = _real(decay, "decay")
         if not 0 < decay <= 1:
             raise _core.Error(f"decay must be in (0, 1], got {decay}")

@@ -21,11 +21,9 @@
 #include "pgm/inference/dynamic_inference.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
-#include "pgm/learn/dynamic_statistics.hpp"
 #include "pgm/learn/estimate.hpp"
 #include "pgm/learn/estimator_choice.hpp"
-#include "pgm/learn/fit_dynamic.hpp"
-#include "pgm/transfer/dynamic_transfer.hpp"
+#include "pgm/pipeline/dynamic_fit_pipeline.hpp"
 
 namespace py = pybind11;
 
@@ -45,19 +43,6 @@ py::object read_dynamic_json(const std::filesystem::path& path) {
   return py::cast(model_and_counts{std::move(file.model), std::move(file.statistics)});
 }
 
-/// What pgm.fit_dynamic passes besides the frame: the prior, and the transfer's settings.
-struct dynamic_fit_arguments {
-  std::string edges;
-  estimator_choice estimator;
-  std::string empty = "uniform";
-  unsigned threads = 0;
-  const dynamic_network* structure_of_model = nullptr;  // `model=`: its structure and states
-  const bayesian_network* prior_model = nullptr;
-  transfer_settings transfer;
-  std::optional<std::string> initial_map, initial_strategy;
-  bool keep_counts = false;
-};
-
 /// The episodes of the frame's columns (episode, t and the template variables), the template
 /// variables recoded onto `model`'s states when there is one.
 dataset episodes_of(const std::vector<column_buffer>& buffers, const dynamic_network* model) {
@@ -74,39 +59,26 @@ dataset episodes_of(const std::vector<column_buffer>& buffers, const dynamic_net
 }
 
 /// pgm.fit_dynamic: the 2-TBN fitted from a frame of episodes in long form, as pgm fit --dynamic.
-py::tuple fit_dynamic_frame(const py::list& columns, const dynamic_fit_arguments& args) {
+/// `model`: the structure and states to fit instead of `edges`'.
+py::tuple fit_dynamic_frame(const py::list& columns, const std::string& edges, const dynamic_network* model,
+                            const dynamic_fit_request& request) {
   std::vector<py::array> keep;
   const auto buffers = read_column_buffers(columns, keep);
-  model_and_counts fitted;
-  std::vector<std::string> notes;
+  fitted_dynamic fitted;
   {
     const py::gil_scoped_release release;
-    const auto data = episodes_of(buffers, args.structure_of_model);
-    const auto structure = args.structure_of_model ? structure_of(*args.structure_of_model)
-                                                   : dynamic_structure_from_data(data, parse_edge_list(args.edges));
-    dynamic_fit_options options;
-    options.fit.prior = prior_of(args.estimator);
-    options.fit.estimation.empty = parse_empty_configuration(args.empty);
-    options.fit.counting.threads = args.threads;
-    const auto counts = count_dynamic(structure, data, options.columns, options.fit.counting);
-    if (args.prior_model) {
-      std::optional<transfer_settings> initial;
-      if (args.initial_map || args.initial_strategy) {
-        initial = args.transfer;
-        if (args.initial_map) initial->map = *args.initial_map;
-        if (args.initial_strategy) initial->strategy = *args.initial_strategy;
-      }
-      const auto report = add_transferred_priors(options, structure, counts, *args.prior_model, args.transfer,
-                                                 initial ? &*initial : nullptr);
-      for (const auto& [node, entry] : report.nodes) {
-        notes.push_back("'" + node + "' gets the " + args.transfer.strategy + " prior from '" + entry.prior_node +
-                        "' with w = " + text::format_short(entry.weight));
-      }
-    }
-    fitted.first = fit_dynamic(structure, counts, options);
-    if (args.keep_counts) fitted.second = dynamic_statistics_of(structure, counts, options);
+    const auto data = episodes_of(buffers, model);
+    const auto structure = model ? structure_of(*model) : dynamic_structure_from_data(data, parse_edge_list(edges));
+    fitted = fit_from_episodes(structure, data, request);
   }
-  return py::make_tuple(py::cast(std::move(fitted)), notes);
+  std::vector<std::string> notes;
+  if (fitted.transfer) {
+    for (const auto& [node, entry] : fitted.transfer->nodes) {
+      notes.push_back("'" + node + "' gets the " + request.transfer.strategy + " prior from '" + entry.prior_node +
+                      "' with w = " + text::format_short(entry.weight));
+    }
+  }
+  return py::make_tuple(py::cast(model_and_counts{std::move(fitted.model), std::move(fitted.statistics)}), notes);
 }
 
 /// DynamicNetwork.update: the frame's episodes added to the model's counts, every table
@@ -121,12 +93,9 @@ model_and_counts update_frame(const model_and_counts& current, const py::list& c
   std::vector<py::array> keep;
   const auto buffers = read_column_buffers(columns, keep);
   const py::gil_scoped_release release;
-  const auto data = episodes_of(buffers, &current.first);
-  const auto structure = structure_of(current.first);
-  const auto counts = count_dynamic(structure, data, {}, {.threads = threads});
-  auto statistics = updated(*current.second, counts, decay);
-  auto model = estimate_dynamic(structure, statistics);
-  return {std::move(model), std::move(statistics)};
+  auto fitted =
+      update_with_episodes(current.first, *current.second, episodes_of(buffers, &current.first), decay, threads);
+  return {std::move(fitted.model), std::move(fitted.statistics)};
 }
 
 using step_evidence = std::vector<std::map<std::string, std::string>>;  // per step: {variable: state}
@@ -240,22 +209,20 @@ void add_dynamic(py::module_& m) {
          const std::string& empty, unsigned threads, const network_handle* prior_model, const std::string& strategy,
          const std::string& map, std::optional<double> w_prior, const std::optional<std::string>& initial_map,
          const std::optional<std::string>& initial_strategy, bool keep_counts) {
-        dynamic_fit_arguments args;
-        args.edges = edges;
-        args.structure_of_model = model;
-        args.estimator = {estimator, prior, {}};
-        for (const auto& [keyword, key, value] : prior_settings)
-          args.estimator.settings.push_back({keyword, key, value});
-        args.empty = empty;
-        args.threads = threads;
-        if (prior_model) args.prior_model = &prior_model->network;
-        args.transfer.strategy = strategy;
-        args.transfer.map = map;
-        args.transfer.weight = w_prior;
-        args.initial_map = initial_map;
-        args.initial_strategy = initial_strategy;
-        args.keep_counts = keep_counts;
-        return fit_dynamic_frame(columns, args);
+        dynamic_fit_request request;
+        estimator_choice choice{estimator, prior, {}};
+        for (const auto& [keyword, key, value] : prior_settings) choice.settings.push_back({keyword, key, value});
+        request.options.fit.prior = prior_of(choice);
+        request.options.fit.estimation.empty = parse_empty_configuration(empty);
+        request.options.fit.counting.threads = threads;
+        if (prior_model) request.prior_network = &prior_model->network;
+        request.transfer.strategy = strategy;
+        request.transfer.map = map;
+        request.transfer.weight = w_prior;
+        request.initial_map = initial_map;
+        request.initial_strategy = initial_strategy;
+        request.keep_statistics = keep_counts;
+        return fit_dynamic_frame(columns, edges, model, request);
       },
       py::arg("columns"), py::arg("edges"), py::arg("model").none(true), py::arg("estimator"), py::arg("prior"),
       py::arg("prior_settings"), py::arg("empty"), py::arg("threads"), py::arg("prior_model").none(true),

@@ -20,13 +20,12 @@
 #include "pgm/io/csv_source.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
-#include "pgm/learn/dynamic_statistics.hpp"
 #include "pgm/learn/estimator_choice.hpp"
 #include "pgm/learn/family_source.hpp"
 #include "pgm/learn/fit_dynamic.hpp"
 #include "pgm/learn/parameter_prior_registry.hpp"
+#include "pgm/pipeline/dynamic_fit_pipeline.hpp"
 #include "pgm/pipeline/fit_pipeline.hpp"
-#include "pgm/transfer/dynamic_transfer.hpp"
 #include "pgm/transfer/transfer_settings.hpp"
 
 namespace pgm::cli {
@@ -179,33 +178,28 @@ void run_dynamic_fit(const fit_arguments& args) {
   const auto data =
       read_episodes(args.data, templates, given ? &*given : nullptr, missing_of(args.missing), args.threads);
   if (!given) structure = dynamic_structure_from_data(data, edges);
-  dynamic_fit_options options;
-  set_estimation(args, options.fit);
-  const auto counts = count_dynamic(structure, data, options.columns, options.fit.counting);
+  dynamic_fit_request request;
+  set_estimation(args, request.options.fit);
+  request.keep_statistics = args.keep_counts;
+  std::optional<bayesian_network> prior;
   if (!args.transfer.prior_model.empty()) {
-    const auto prior = read_network_file(args.transfer.prior_model);
+    prior = read_network_file(args.transfer.prior_model);
     require_map(args.transfer);
-    const auto settings = settings_of(args.transfer);
-    std::optional<transfer_settings> initial;
-    if (!args.initial_map.empty() || !args.initial_strategy.empty()) {
-      initial = settings;
-      if (!args.initial_map.empty()) initial->map = args.initial_map;
-      if (!args.initial_strategy.empty()) initial->strategy = args.initial_strategy;
-    }
-    note_transfer(add_transferred_priors(options, structure, counts, prior, settings, initial ? &*initial : nullptr),
-                  args.transfer.strategy);
+    request.prior_network = &*prior;
+    request.transfer = settings_of(args.transfer);
+    if (!args.initial_map.empty()) request.initial_map = args.initial_map;
+    if (!args.initial_strategy.empty()) request.initial_strategy = args.initial_strategy;
   } else if (!args.transfer.map.empty() || !args.initial_map.empty() || !args.initial_strategy.empty()) {
     throw error("--map, --initial-map and --initial-strategy apply with --prior-model");
   }
-  const auto model = fit_dynamic(structure, counts, options);
-  const auto statistics =
-      args.keep_counts ? std::optional(dynamic_statistics_of(structure, counts, options)) : std::nullopt;
+  const auto fitted = fit_from_episodes(structure, data, request);
+  if (fitted.transfer) note_transfer(*fitted.transfer, args.transfer.strategy);
   std::ostringstream summary;
-  summary << "fitted a dynamic network of " << model.size() << " template variables from " << counts.episodes
-          << (counts.episodes == 1 ? " episode" : " episodes") << " (" << counts.steps << " steps; "
-          << counts.steps - counts.episodes << " transitions counted into the tied tables) -> " << args.out << '\n';
-  write_dynamic_json(model, args.out, summary_before_replacing(summary.str(), args.out),
-                     statistics ? &*statistics : nullptr);
+  summary << "fitted a dynamic network of " << fitted.model.size() << " template variables from " << fitted.episodes
+          << (fitted.episodes == 1 ? " episode" : " episodes") << " (" << fitted.steps << " steps; "
+          << fitted.steps - fitted.episodes << " transitions counted into the tied tables) -> " << args.out << '\n';
+  write_dynamic_json(fitted.model, args.out, summary_before_replacing(summary.str(), args.out),
+                     fitted.statistics ? &*fitted.statistics : nullptr);
 }
 
 void run_fit(const fit_arguments& args) {

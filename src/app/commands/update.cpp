@@ -13,7 +13,7 @@
 #include "pgm/io/csv_source.hpp"
 #include "pgm/io/json_model.hpp"
 #include "pgm/io/network_file.hpp"
-#include "pgm/learn/dynamic_statistics.hpp"
+#include "pgm/pipeline/dynamic_fit_pipeline.hpp"
 #include "pgm/pipeline/fit_pipeline.hpp"
 
 namespace pgm::cli {
@@ -48,16 +48,13 @@ void run_dynamic_update(const update_arguments& args, const std::string& text) {
   std::set<std::string> templates;
   for (const auto& v : file.model.variables()) templates.insert(v.name());
   const auto data = read_episodes(args.data, templates, &file.model, missing_of(args.missing), args.threads);
-  const auto structure = structure_of(file.model);
-  const auto counts = count_dynamic(structure, data, {}, {.threads = args.threads});
-  const auto statistics = updated(*file.statistics, counts, args.decay);
-  const auto model = estimate_dynamic(structure, statistics);
+  const auto fitted = update_with_episodes(file.model, *file.statistics, data, args.decay, args.threads);
   std::ostringstream summary;
-  summary << "updated a dynamic network of " << model.size() << " template variables with " << counts.episodes
-          << (counts.episodes == 1 ? " episode" : " episodes") << " (" << counts.steps << " steps; "
-          << text::format_double(statistics.initial.rows) << " episodes in all"
+  summary << "updated a dynamic network of " << fitted.model.size() << " template variables with " << fitted.episodes
+          << (fitted.episodes == 1 ? " episode" : " episodes") << " (" << fitted.steps << " steps; "
+          << text::format_double(fitted.statistics->initial.rows) << " episodes in all"
           << (args.decay < 1.0 ? ", old ones weighted by the decay" : "") << ") -> " << args.out << '\n';
-  write_dynamic_json(model, args.out, summary_before_replacing(summary.str(), args.out), &statistics);
+  write_dynamic_json(fitted.model, args.out, summary_before_replacing(summary.str(), args.out), &*fitted.statistics);
 }
 
 void run_update(const update_arguments& args) {
