@@ -8,6 +8,7 @@
 #include "pgm/learn/count_values.hpp"
 #include "pgm/learn/cpdag.hpp"
 #include "pgm/learn/dirichlet.hpp"
+#include "pgm/learn/dynamic_em.hpp"
 #include "pgm/learn/dynamic_statistics.hpp"
 #include "pgm/learn/estimate.hpp"
 #include "pgm/learn/estimator_choice.hpp"

@@ -534,6 +534,11 @@ def fit_dynamic(
     initial_strategy=None,
     empty="uniform",
     missing="error",
+    latent=None,
+    restarts=1,
+    seed=0,
+    max_iterations=100,
+    tolerance=1e-6,
     keep_counts=False,
     threads=0,
 ):
@@ -547,18 +552,22 @@ def fit_dynamic(
     pgm.Network (the 1-Stack's, say) whose tables become the priors of the template variables'
     tables by `strategy` through `map` (template variables as targets, "x@-1" for a parent in
     the step before) at `w_prior` (5 by default); initial_map and initial_strategy are the
-    first slice's own (docs/dynamic.md). missing: "error" (the default) or "available" (each
-    family counted over the steps where it is present). keep_counts: keep the counts, so that
-    DynamicNetwork.update can add episodes later. How the priors were transferred is in the
+    first slice's own (docs/dynamic.md). missing: "error" (the default), "available" (each
+    family counted over the steps where it is present) or "em" (expectation-maximization over
+    whole episodes: the missing values and the `latent` template variables, {name: number of
+    states or list of state names}, are estimated; restarts, seed, max_iterations and tolerance
+    as pgm.fit takes them). keep_counts: keep the counts, so that DynamicNetwork.update can add
+    episodes later (not with "em"). How EM went and how the priors were transferred is in the
     model's `notes`.
     """
     if (edges is None) == (model is None):
         raise Error('give the structure as edges ("a->b, a@-1->a") or as model (a pgm.DynamicNetwork), one of them')
     if model is not None and not isinstance(model, DynamicNetwork):
         raise TypeError("model must be a pgm.DynamicNetwork")
-    if missing not in ("error", "available"):
-        raise Error(f"missing must be 'error' or 'available' for a dynamic network, got '{missing}'"
+    if missing not in ("error", "available", "em"):
+        raise Error(f"missing must be 'error', 'available' or 'em' for a dynamic network, got '{missing}'"
                     + ("; 'drop' would leave gaps in the episodes" if missing == "drop" else ""))
+    em = _em_arguments(missing, latent, restarts, seed, max_iterations, tolerance, False, keep_counts)
     text = edges if edges is None or isinstance(edges, str) else ", ".join(f"{a}->{b}" for a, b in _edge_pairs(edges))
     if model is not None:
         variables = model.variables
@@ -572,8 +581,12 @@ def fit_dynamic(
     elif map is None:
         raise Error('prior_model needs map, e.g. map="onTop=onTop1, xOff~xOff1, xOff@-1==xOff1"')
     weight = None if w_prior is None else _real(w_prior, "w_prior")
-    wanted = _long_form_columns(data, variables)
-    data = _frame.with_missing(data, wanted, missing)
+    latent_states = _latent_states(latent, variables)
+    hidden = {name for name, _ in latent_states}
+    if model is not None:  # a model's latent variables keep its states
+        latent_states = []
+    wanted = _long_form_columns(data, [v for v in variables if v not in hidden])
+    data = _frame.with_missing(data, wanted, "available" if missing == "em" else missing)
     columns = _frame.columns_of(data, wanted)
     found, notes = _core.fit_dynamic(
         columns,
@@ -590,6 +603,8 @@ def fit_dynamic(
         5.0 if weight is None else weight,
         _text(initial_map, "initial_map"),
         _text(initial_strategy, "initial_strategy"),
+        em,
+        latent_states,
         _flag(keep_counts, "keep_counts"),
     )
     return DynamicNetwork(*found, notes=notes)

@@ -200,7 +200,12 @@ def fit_dynamic(
     initial_map: Optional[str] = None,
     initial_strategy: Optional[str] = None,
     empty: str = "uniform",
-    missing: Literal["error", "available"] = "error",
+    missing: Literal["error", "available", "em"] = "error",
+    latent: Optional[Mapping[str, Union[int, Sequence[str]]]] = None,
+    restarts: int = 1,
+    seed: int = 0,
+    max_iterations: int = 100,
+    tolerance: float = 1e-6,
     keep_counts: bool = False,
     threads: int = 0,
 ) -> DynamicNetwork: ...

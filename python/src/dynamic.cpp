@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "columns.hpp"
+#include "em_arguments.hpp"
 #include "network_handle.hpp"
 #include "pgm/core/dynamic_network.hpp"
 #include "pgm/core/text.hpp"
@@ -60,18 +61,21 @@ dataset episodes_of(const std::vector<column_buffer>& buffers, const dynamic_net
 
 /// pgm.fit_dynamic: the 2-TBN fitted from a frame of episodes in long form, as pgm fit --dynamic.
 /// `model`: the structure and states to fit instead of `edges`'.
+/// `latent`: template variables in no column, fitted by EM (`request.em`).
 py::tuple fit_dynamic_frame(const py::list& columns, const std::string& edges, const dynamic_network* model,
-                            const dynamic_fit_request& request) {
+                            const std::vector<variable>& latent, const dynamic_fit_request& request) {
   std::vector<py::array> keep;
   const auto buffers = read_column_buffers(columns, keep);
   fitted_dynamic fitted;
   {
     const py::gil_scoped_release release;
     const auto data = episodes_of(buffers, model);
-    const auto structure = model ? structure_of(*model) : dynamic_structure_from_data(data, parse_edge_list(edges));
+    const auto structure =
+        model ? structure_of(*model) : dynamic_structure_from_data(data, parse_edge_list(edges), latent);
     fitted = fit_from_episodes(structure, data, request);
   }
   std::vector<std::string> notes;
+  if (fitted.em) notes.push_back(summary_of(*fitted.em));
   if (fitted.transfer) {
     for (const auto& [node, entry] : fitted.transfer->nodes) {
       notes.push_back("'" + node + "' gets the " + request.transfer.strategy + " prior from '" + entry.prior_node +
@@ -208,7 +212,8 @@ void add_dynamic(py::module_& m) {
          const std::string& prior, const std::vector<std::tuple<std::string, std::string, std::string>>& prior_settings,
          const std::string& empty, unsigned threads, const network_handle* prior_model, const std::string& strategy,
          const std::string& map, std::optional<double> w_prior, const std::optional<std::string>& initial_map,
-         const std::optional<std::string>& initial_strategy, bool keep_counts) {
+         const std::optional<std::string>& initial_strategy, const std::optional<em_arguments>& em,
+         const std::vector<std::pair<std::string, std::vector<std::string>>>& latent, bool keep_counts) {
         dynamic_fit_request request;
         estimator_choice choice{estimator, prior, {}};
         for (const auto& [keyword, key, value] : prior_settings) choice.settings.push_back({keyword, key, value});
@@ -222,12 +227,15 @@ void add_dynamic(py::module_& m) {
         request.initial_map = initial_map;
         request.initial_strategy = initial_strategy;
         request.keep_statistics = keep_counts;
-        return fit_dynamic_frame(columns, edges, model, request);
+        if (em) request.em = dynamic_em_options{.em = em_options_of(*em, threads)};
+        std::vector<variable> hidden;
+        for (const auto& [name, states] : latent) hidden.emplace_back(name, states);
+        return fit_dynamic_frame(columns, edges, model, hidden, request);
       },
       py::arg("columns"), py::arg("edges"), py::arg("model").none(true), py::arg("estimator"), py::arg("prior"),
       py::arg("prior_settings"), py::arg("empty"), py::arg("threads"), py::arg("prior_model").none(true),
       py::arg("strategy"), py::arg("map"), py::arg("w_prior"), py::arg("initial_map"), py::arg("initial_strategy"),
-      py::arg("keep_counts"));
+      py::arg("em").none(true), py::arg("latent"), py::arg("keep_counts"));
   m.def(
       "update_dynamic",
       [](const dynamic_network& model, const dynamic_fit_statistics* counts, const py::list& columns, double decay,

@@ -23,6 +23,7 @@
 #include "columns.hpp"
 #include "decisions.hpp"
 #include "dynamic.hpp"
+#include "em_arguments.hpp"
 #include "inference.hpp"
 #include "markov.hpp"
 #include "network_handle.hpp"
@@ -181,18 +182,6 @@ struct fit_arguments {
   std::vector<std::pair<std::string, std::vector<std::string>>> states;
   bool keep_counts = false;
 };
-
-/// missing="em"'s options as pgm/__init__.py passes them: (restarts, seed, max_iterations,
-/// tolerance, hard).
-using em_arguments = std::tuple<std::size_t, std::uint64_t, std::size_t, double, bool>;
-
-em_options em_options_of(const em_arguments& args, unsigned threads) {
-  em_options options;
-  std::tie(options.restarts, options.seed, options.max_iterations, options.tolerance, std::ignore) = args;
-  options.kind = std::get<4>(args) ? em_kind::hard : em_kind::soft;
-  options.threads = threads;
-  return options;
-}
 
 network_handle fit_frame(const py::list& columns, const std::vector<std::string>& available, const edge_pairs& pairs,
                          const fit_arguments& args) {

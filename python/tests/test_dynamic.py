@@ -166,6 +166,33 @@ def test_fit_dynamic_and_update_write_what_the_program_writes(program, tmp_path)
     assert (tmp_path / "python-mle.json").read_text() == (tmp_path / "mle.json").read_text()
 
 
+def test_fit_dynamic_by_em_writes_what_the_program_writes(program, tmp_path):
+    import numpy as np
+    import pandas as pd
+
+    data = pd.read_csv(tower_episodes(program, tmp_path, "gaps", 150, 5))
+    holes = np.random.default_rng(5).random(len(data)) < 0.2
+    data["onTop"] = data["onTop"].astype("Int64").mask(holes)
+    data.to_csv(tmp_path / "gaps.csv", index=False, na_rep="")
+    program.run("fit", "--dynamic", "--missing", "em", "--data", tmp_path / "gaps.csv", "--edges", TOWER_EDGES,
+                "--estimator", "bayes", "--prior", "bdeu[ess=2]", "--out", tmp_path / "cli.json")
+    model = pgm.fit_dynamic(data, TOWER_EDGES, "bayes", "bdeu[ess=2]", missing="em")
+    assert any(note.startswith("EM: ") and "(converged)" in note for note in model.notes)
+    model.write(tmp_path / "python.json")
+    assert (tmp_path / "python.json").read_text() == (tmp_path / "cli.json").read_text()
+
+    # A hidden Markov model: the state in no column, its two states named.
+    hidden = pgm.fit_dynamic(data[["episode", "t", "onTop"]].fillna(0), "H->onTop, H@-1->H",
+                             missing="em", latent={"H": ["low", "high"]}, restarts=2, seed=3)
+    assert [v for v in hidden.variables] == ["onTop", "H"]
+    with pytest.raises(pgm.Error, match='keep_counts does not apply with missing="em"'):
+        pgm.fit_dynamic(data, TOWER_EDGES, missing="em", keep_counts=True)
+    with pytest.raises(pgm.Error, match='latent applies with missing="em"'):
+        pgm.fit_dynamic(data, TOWER_EDGES, latent={"H": 2})
+    with pytest.raises(pgm.Error, match="the latent variable 'Z' is in no edge"):
+        pgm.fit_dynamic(data, TOWER_EDGES, missing="em", latent={"Z": 2})
+
+
 def test_fit_dynamic_refuses_what_it_cannot_do(program, tmp_path):
     import pandas as pd
 

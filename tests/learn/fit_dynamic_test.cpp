@@ -323,7 +323,6 @@ TEST_F(fit_dynamic_cli_test, fits_from_edges_or_a_model_and_refuses_bad_input) {
   expect_failure("fit --dynamic --data " + data.string() + " --edges '" + v[0].name() + "->" + v[1].name() +
                      "@-1' --out " + out.string(),
                  "ends in another slice", out);
-  expect_failure(fit + "--missing em --out " + out.string(), "--dynamic: --missing em is not available", out);
   expect_failure(fit + "--missing drop --out " + out.string(), "--dynamic: --missing drop leaves gaps", out);
   const auto twice = file(
       "twice.csv", "episode,t," + v[0].name() + "\ne1,0," + v[0].states()[0] + "\ne1,0," + v[0].states()[0] + "\n");

@@ -18,6 +18,7 @@
 #include "pgm/inference/sampling.hpp"
 #include "pgm/io/csv.hpp"
 #include "pgm/io/json_model.hpp"
+#include "pgm/pipeline/dynamic_fit_pipeline.hpp"
 #include "support/long_form.hpp"
 #include "support/program_test.hpp"
 
@@ -110,6 +111,54 @@ TEST_F(tower, a_swamping_weight_gives_the_prior_in_both_slices) {
   const auto mle = fit_dynamic(structure, counts);
   EXPECT_EQ(fitted.transition_tables()[0], mle.transition_tables()[0]);
   EXPECT_EQ(fitted.initial().table(fitted.initial().id("xOff")), mle.initial().table(mle.initial().id("xOff")));
+}
+
+// EM takes the transferred priors as the counted fit does: on complete episodes the two agree;
+// with outcomes missing, a swamping weight still gives the prior.
+TEST_F(tower, em_fits_under_the_transferred_prior) {
+  const auto prior = one_stack();
+  dynamic_fit_request counted;
+  counted.prior_network = &prior;
+  counted.transfer = direct_this_cube(5.0);
+  auto by_em = counted;
+  by_em.em = dynamic_em_options{};
+  const auto a = fit_from_episodes(structure, data, counted);
+  const auto b = fit_from_episodes(structure, data, by_em);
+  ASSERT_TRUE(b.em && b.transfer);
+  EXPECT_EQ(b.transfer->nodes.at("onTop").weight, 5.0);
+  ASSERT_EQ(b.model.transition_tables().size(), templates.size());
+  for (std::size_t i = 0; i < templates.size(); ++i) {
+    const auto x = a.model.transition_tables()[i].values();
+    const auto y = b.model.transition_tables()[i].values();
+    for (std::size_t c = 0; c < x.size(); ++c) EXPECT_NEAR(x[c], y[c], 1e-12) << i << " cell " << c;
+  }
+
+  auto gaps = data;
+  const auto& on_top = gaps.discrete("onTop");
+  auto codes = make_code_vector(3, gaps.rows());
+  std::size_t missing = 0;
+  std::visit(
+      [&](auto& out) {
+        using code = typename std::decay_t<decltype(out)>::value_type;
+        for (std::size_t r = 0; r < gaps.rows(); ++r) {
+          const bool gap = r % 3 == 1;
+          missing += gap;
+          out[r] = gap ? missing_code<code> : static_cast<code>(on_top.code(r));
+        }
+      },
+      codes);
+  gaps.replace(discrete_column(on_top.var(), std::move(codes), std::in_place, missing));
+  by_em.transfer = direct_this_cube(1e12);
+  const auto swamped = fit_from_episodes(structure, gaps, by_em);
+  const auto& source = prior.table(prior.id("onTop1"));
+  const auto& transition = swamped.model.transition_tables()[2];
+  for (std::size_t u = 0; u < 27; ++u) {
+    const auto expected = source.column(source.configuration(std::vector<std::size_t>{u / 9, u / 3 % 3}))[1];
+    EXPECT_NEAR(transition.column(transition.configuration(std::vector<std::size_t>{u / 9, u / 3 % 3, u % 3}))[1],
+                expected, 1e-9);
+  }
+  by_em.keep_statistics = true;
+  EXPECT_THROW(static_cast<void>(fit_from_episodes(structure, gaps, by_em)), model_error);
 }
 
 TEST_F(tower, a_weight_of_zero_is_mle_and_a_weight_chosen_per_slice_from_its_counts) {

@@ -60,6 +60,12 @@ class junction_tree_engine {
         tree_(std::make_shared<const junction_tree>(*model_, options)),
         options_(options) {}
 
+  /// An engine of the same model and compiled tree without evidence or kept messages: its
+  /// answers have the bits a newly compiled engine's have. Kept messages make an answer's last
+  /// bit depend on what was asked before (Hugin's division where a clique has many neighbours),
+  /// so a worker whose results must not depend on its history starts from one of these.
+  [[nodiscard]] junction_tree_engine fresh() const { return junction_tree_engine(model_, tree_, options_); }
+
   static constexpr bool handles_interventions = DirectedModel<M>;
   [[nodiscard]] std::string_view name() const noexcept { return "jt"; }
   [[nodiscard]] const M& model() const noexcept { return *model_; }
@@ -79,6 +85,11 @@ class junction_tree_engine {
 
   /// The marginal of each of `nodes`: after the first, each costs a fold of a kept belief.
   [[nodiscard]] std::vector<posterior> marginals(std::span<const variable_id> nodes);
+
+  /// P(scope | evidence) of each of `scopes`, normalized, in the order of its ids (the last
+  /// fastest): a scope within one clique (a family of a Bayesian network) costs a fold of a
+  /// belief computed once for all of them, as EM's E-step asks; any other, a joint().
+  [[nodiscard]] std::vector<std::vector<double>> joints(std::span<const std::vector<variable_id>> scopes);
 
   [[nodiscard]] double log_probability_of_evidence() { return log_total() - log_partition(); }
 
@@ -105,6 +116,10 @@ class junction_tree_engine {
   /// benchmark of bench/inference_bench.cpp is fastest on every published network it runs
   /// (alarm and hailfinder propagate, insurance and pathfinder eliminate).
   static constexpr std::size_t elimination_cell_cost = 24;
+
+  junction_tree_engine(std::shared_ptr<const M> model, std::shared_ptr<const junction_tree> tree,
+                       const junction_tree_options& options)
+      : model_(std::move(model)), tree_(std::move(tree)), options_(options) {}
 
   static std::shared_ptr<const M> checked(std::shared_ptr<const M> model) {
     if (!model) throw model_error("the junction tree engine was given no model");
@@ -190,6 +205,24 @@ posterior junction_tree_engine<M>::joint(std::span<const variable_id> query) {
                                         [&]<Semiring S>() { return in<S>().joint(query); });
   if constexpr (!DirectedModel<M>) detail::divide_by_partition(result, log_partition());
   return result;
+}
+
+template <GraphicalModel M>
+std::vector<std::vector<double>> junction_tree_engine<M>::joints(std::span<const std::vector<variable_id>> scopes) {
+  auto tables = in<sum_product<double>>().joints_within_cliques(scopes);
+  for (std::size_t i = 0; i < scopes.size(); ++i) {
+    double total = 0.0;
+    for (double v : tables[i]) total += v;
+    if (tables[i].empty() || !detail::well_represented(total)) {
+      // Across cliques, or underflow: this one from joint(), which answers in logarithms then.
+      const auto answer = joint(scopes[i]);
+      const auto values = answer.table.values();
+      tables[i].assign(values.begin(), values.end());
+      continue;
+    }
+    for (double& v : tables[i]) v /= total;
+  }
+  return tables;
 }
 
 template <GraphicalModel M>

@@ -240,6 +240,25 @@ class propagation {
     return result;
   }
 
+  /// The unnormalized joints of `scopes` (ids in the order wanted, the last fastest), each
+  /// within one clique (a family of a Bayesian network is), each clique's belief computed once
+  /// for the scopes it holds; empty for a scope no clique holds.
+  [[nodiscard]] std::vector<std::vector<value_type>> joints_within_cliques(
+      std::span<const std::vector<variable_id>> scopes) {
+    std::vector<std::vector<std::size_t>> at(tree_->cliques().size());  // scope indices by clique
+    for (std::size_t i = 0; i < scopes.size(); ++i) {
+      if (const auto c = smallest_holding(scopes[i]); c < at.size()) at[c].push_back(i);
+    }
+    std::vector<std::vector<value_type>> result(scopes.size());
+    for (std::size_t c = 0; c < at.size(); ++c) {
+      if (at[c].empty()) continue;
+      ensure_incoming(c, tree_->cliques()[c].edges.size());
+      product_into(belief_buffer_, c, tree_->cliques()[c].edges.size());
+      for (auto i : at[c]) result[i] = fold(belief_buffer_, c, scopes[i]);
+    }
+    return result;
+  }
+
   /// The unnormalized joint of `query` (ids in the order wanted) with the evidence.
   [[nodiscard]] factor_of<S> joint(std::span<const variable_id> query) {
     std::vector<std::size_t> cards;

@@ -317,24 +317,36 @@ class em_runner {
     parallel_options parallel;
     parallel.threads = options_->threads;
     parallel.min_items_per_thread = 1;
-    static_cast<void>(parallel_for(
-        blocks, parallel,
-        [&] {
-          // The engines live within this step, the network beyond it: lent, not copied.
-          if constexpr (std::constructible_from<Engine, std::shared_ptr<const bayesian_network>>) {
-            return Engine(borrowed(network));
-          } else {
-            return Engine(network);
-          }
-        },
-        [&](Engine& engine, item_range range) {
-          for (std::size_t b = range.begin; b < range.end; ++b) {
-            sums[b].counts = empty_counts(*structure_);
-            const std::size_t begin = incomplete_.size() * b / blocks;
-            const std::size_t end = incomplete_.size() * (b + 1) / blocks;
-            for (std::size_t k = begin; k < end; ++k) add_pattern(engine, incomplete_[k], sums[b]);
-          }
-        }));
+    const auto make_engine = [&] {
+      // The engines live within this step, the network beyond it: lent, not copied.
+      if constexpr (std::constructible_from<Engine, std::shared_ptr<const bayesian_network>>) {
+        return Engine(borrowed(network));
+      } else {
+        return Engine(network);
+      }
+    };
+    const auto add_block = [&](Engine& engine, std::size_t b) {
+      sums[b].counts = empty_counts(*structure_);
+      const std::size_t begin = incomplete_.size() * b / blocks;
+      const std::size_t end = incomplete_.size() * (b + 1) / blocks;
+      for (std::size_t k = begin; k < end; ++k) add_pattern(engine, incomplete_[k], sums[b]);
+    };
+    if constexpr (requires(const Engine& e) { e.fresh(); }) {
+      // An engine that keeps messages answers with bits that depend on what it was asked
+      // before: each block starts from a fresh one of the tree compiled once, so that the sums
+      // do not depend on which thread ran which blocks.
+      const auto compiled = make_engine();
+      parallel_for(blocks, parallel, [&](item_range range) {
+        for (std::size_t b = range.begin; b < range.end; ++b) {
+          auto engine = compiled.fresh();
+          add_block(engine, b);
+        }
+      });
+    } else {
+      static_cast<void>(parallel_for(blocks, parallel, make_engine, [&](Engine& engine, item_range range) {
+        for (std::size_t b = range.begin; b < range.end; ++b) add_block(engine, b);
+      }));
+    }
     expectation total;
     total.counts = fixed_;
     total.log_likelihood = complete_log_likelihood(network);

@@ -38,9 +38,12 @@ struct dynamic_structure {
                                                               const std::vector<named_edge>& edges);
 
 /// The same, its template variables the discrete columns of `data` that `edges` name, in the
-/// data's column order. Throws data_error for a column that is absent or continuous.
+/// data's column order, then the `latent` ones, which no column holds (EM estimates them,
+/// pgm/learn/dynamic_em.hpp). Throws data_error for a column that is absent or continuous, or
+/// a latent variable the data hold; model_error for a latent variable in no edge.
 [[nodiscard]] PGM_DECL dynamic_structure dynamic_structure_from_data(const dataset& data,
-                                                                     const std::vector<named_edge>& edges);
+                                                                     const std::vector<named_edge>& edges,
+                                                                     const std::vector<variable>& latent = {});
 
 namespace detail {
 

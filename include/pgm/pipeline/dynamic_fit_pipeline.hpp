@@ -13,6 +13,7 @@
 #include "pgm/core/compilation.hpp"
 #include "pgm/core/dynamic_network.hpp"
 #include "pgm/data/dataset.hpp"
+#include "pgm/learn/dynamic_em.hpp"
 #include "pgm/learn/dynamic_statistics.hpp"
 #include "pgm/learn/fit_dynamic.hpp"
 #include "pgm/transfer/transfer_settings.hpp"
@@ -28,8 +29,12 @@ struct dynamic_fit_request {
   transfer_settings transfer;
   /// The first slice's own map and strategy; where unset, the transition's.
   std::optional<std::string> initial_map, initial_strategy;
-  /// Keep the counts with the model, for updates.
+  /// Keep the counts with the model, for updates (not with `em`).
   bool keep_statistics = false;
+  /// Fit by EM (pgm/learn/dynamic_em.hpp) instead of counting once: the missing values and the
+  /// latent template variables (those in no column) estimated. A transfer reads the counts of
+  /// the families observed whole.
+  std::optional<dynamic_em_options> em;
 };
 
 struct fitted_dynamic {
@@ -37,6 +42,8 @@ struct fitted_dynamic {
   std::optional<dynamic_fit_statistics> statistics;
   /// What the transfer into the transition decided, when there was one.
   std::optional<transfer_report> transfer;
+  /// How EM went, when it fitted the model (its `model` moved to the one above).
+  std::optional<dynamic_em_result> em;
   std::size_t episodes = 0;
   std::size_t steps = 0;
 };

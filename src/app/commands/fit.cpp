@@ -132,13 +132,10 @@ void refuse_static_only(const fit_arguments& args) {
   const auto refuse = [](bool given, const std::string& what) {
     if (given) throw error("--dynamic: " + what);
   };
-  refuse(args.missing.policy == "em",
-         "--missing em is not available for dynamic networks yet; --missing available counts each family over the "
-         "steps where its variables are present");
+  refuse(args.hard, "--hard is not available for dynamic networks; their EM is soft");
   refuse(args.missing.policy == "drop",
          "--missing drop leaves gaps in the episodes where it drops a row; --missing available counts each family "
          "over the steps where its variables are present");
-  refuse(!args.latent.empty(), "--latent applies with --missing em, which dynamic networks do not have yet");
   refuse(!args.discretization_file.empty() || !args.intervals_file.empty(),
          "--discretization and --intervals are not available for dynamic networks yet: bin the columns first "
          "(pgm discretize)");
@@ -152,6 +149,19 @@ void refuse_dynamic_only(const fit_arguments& args) {
   }
 }
 
+/// A latent variable is in no column: one that the data hold is refused, as a static fit does.
+void refuse_latent_columns(const std::string& path, const std::vector<latent_variable>& latent) {
+  if (latent.empty() || path == "-") return;
+  const auto header = csv_reader(path).header();
+  for (const auto& v : latent) {
+    if (std::find(header.begin(), header.end(), v.name) != header.end()) {
+      throw error("--latent '" + v.name + "': " + path + " has a column '" + v.name +
+                  "'; a latent variable is one the data do not hold (its missing values are estimated by "
+                  "--missing em without --latent)");
+    }
+  }
+}
+
 /// pgm fit --dynamic: a 2-TBN with tied tables from episodes in long form (episode,t,<variables>).
 void run_dynamic_fit(const fit_arguments& args) {
   refuse_static_only(args);
@@ -160,6 +170,18 @@ void run_dynamic_fit(const fit_arguments& args) {
                 "'; pgm unroll then writes it unrolled in any format");
   }
   pgm::check_output_path(args.out);
+  const bool em = args.missing.policy == "em";
+  if (!em && !args.latent.empty()) throw error("--latent applies with --missing em");
+  if (em && args.keep_counts) {
+    throw error(
+        "--keep-counts does not apply with --missing em: EM's counts are expectations under its tables, which new "
+        "episodes would change");
+  }
+  std::vector<latent_variable> latent;
+  for (const auto& text : args.latent) latent.push_back(latent_of(text));
+  const auto is_latent = [&](const std::string& name) {
+    return std::any_of(latent.begin(), latent.end(), [&](const latent_variable& v) { return v.name == name; });
+  };
   dynamic_structure structure;
   std::optional<dynamic_network> given;
   std::vector<named_edge> edges;
@@ -167,20 +189,33 @@ void run_dynamic_fit(const fit_arguments& args) {
   if (!args.model.empty()) {
     given = read_dynamic_model_file(args.model).model;
     structure = structure_of(*given);
-    for (const auto& v : given->variables()) templates.insert(v.name());
+    for (const auto& v : latent) static_cast<void>(template_id(*given, v.name, "--latent"));
+    for (const auto& v : given->variables()) {
+      if (!is_latent(v.name())) templates.insert(v.name());
+    }
   } else {
     edges = parse_edge_list(args.edges);
     for (const auto& [from, to] : edges) {
-      templates.insert(template_of(from));
-      templates.insert(template_of(to));
+      for (const auto& name : {template_of(from), template_of(to)}) {
+        if (!is_latent(name)) templates.insert(name);
+      }
     }
   }
+  refuse_latent_columns(args.data, latent);
   const auto data =
       read_episodes(args.data, templates, given ? &*given : nullptr, missing_of(args.missing), args.threads);
-  if (!given) structure = dynamic_structure_from_data(data, edges);
+  if (!given) {
+    std::vector<variable> hidden;
+    for (const auto& v : latent) {
+      if (v.states.empty()) throw error("--latent '" + v.name + "' needs its states (NAME:COUNT or NAME=STATE,...)");
+      hidden.emplace_back(v.name, v.states);
+    }
+    structure = dynamic_structure_from_data(data, edges, hidden);
+  }
   dynamic_fit_request request;
   set_estimation(args, request.options.fit);
   request.keep_statistics = args.keep_counts;
+  if (em) request.em = dynamic_em_options{.em = em_options_of(args)};
   std::optional<bayesian_network> prior;
   if (!args.transfer.prior_model.empty()) {
     prior = read_network_file(args.transfer.prior_model);
@@ -193,6 +228,7 @@ void run_dynamic_fit(const fit_arguments& args) {
     throw error("--map, --initial-map and --initial-strategy apply with --prior-model");
   }
   const auto fitted = fit_from_episodes(structure, data, request);
+  if (fitted.em) note(summary_of(*fitted.em));
   if (fitted.transfer) note_transfer(*fitted.transfer, args.transfer.strategy);
   std::ostringstream summary;
   summary << "fitted a dynamic network of " << fitted.model.size() << " template variables from " << fitted.episodes
@@ -357,7 +393,8 @@ void add_fit_command(CLI::App& app) {
                 "\"a->b\" lies within a slice, \"a@-1->b\" runs from the step before; --model takes a dynamic "
                 "model's structure. Each variable's transition table is tied: every step after the first of every "
                 "episode counts towards it. --prior-model transfers into both slices (a previous slice's parent "
-                "has counterparts of its own: \"onTop=onTop1,xOff~xOff1,xOff@-1==xOff1\")");
+                "has counterparts of its own: \"onTop=onTop1,xOff~xOff1,xOff@-1==xOff1\"). --missing em estimates "
+                "missing values and --latent template variables over whole episodes");
   cmd->add_option("--initial-map", args->initial_map,
                   "With --dynamic and --prior-model: the first slice's own map (default: --map less its x@-1 "
                   "entries), or none to leave the first slice to the data");

@@ -74,17 +74,32 @@ PGM_DECL dynamic_structure dynamic_structure_of(std::vector<variable> templates,
   return structure;
 }
 
-PGM_DECL dynamic_structure dynamic_structure_from_data(const dataset& data, const std::vector<named_edge>& edges) {
+PGM_DECL dynamic_structure dynamic_structure_from_data(const dataset& data, const std::vector<named_edge>& edges,
+                                                       const std::vector<variable>& latent) {
+  std::set<std::string, std::less<>> hidden;
+  for (const auto& v : latent) {
+    if (data.contains(v.name())) {
+      throw data_error(data.source() + " has a column '" + v.name() +
+                       "', which is given as latent: a latent variable is one the data do not hold");
+    }
+    hidden.insert(v.name());
+  }
   std::set<std::string, std::less<>> named;
   for (const auto& edge : edges) {
     for (const auto* name : {&edge.from, &edge.to}) {
       const auto plain = template_of(*name);
-      if (named.insert(plain).second) static_cast<void>(data.discrete(plain));  // exists, discrete
+      if (named.insert(plain).second && !hidden.contains(plain)) {
+        static_cast<void>(data.discrete(plain));  // exists, discrete
+      }
     }
   }
   std::vector<variable> templates;
   for (const auto& name : data.names()) {
     if (named.contains(name)) templates.push_back(data.discrete(name).var());
+  }
+  for (const auto& v : latent) {
+    if (!named.contains(v.name())) throw model_error("the latent variable '" + v.name() + "' is in no edge");
+    templates.push_back(v);
   }
   return dynamic_structure_of(std::move(templates), edges);
 }
