@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -85,6 +86,64 @@ TEST(learn_dynamic_structure_test, hill_climbing_finds_a_strong_chain_through_ti
   EXPECT_THAT(edges, Not(Contains(named_edge{"b@-1", "b"})));  // b depends on the past only through a
 }
 
+/// The episodes `picked` of `data`, built from its codes: episode k of the result is picked[k].
+dataset episodes_by_hand(const testing::long_form& data, const dynamic_network& model,
+                         const std::vector<std::size_t>& picked) {
+  std::vector<double> episode, step;
+  std::vector<std::vector<std::uint32_t>> columns(model.size());
+  for (std::size_t k = 0; k < picked.size(); ++k) {
+    const auto& steps = data.codes[picked[k]];
+    for (std::size_t t = 0; t < steps.size(); ++t) {
+      episode.push_back(static_cast<double>(k));
+      step.push_back(static_cast<double>(t));
+      for (std::size_t i = 0; i < model.size(); ++i) columns[i].push_back(steps[t][i]);
+    }
+  }
+  dataset out("resample.csv");
+  out.add(continuous_column("episode", episode));
+  out.add(continuous_column("t", step));
+  for (std::size_t i = 0; i < model.size(); ++i) out.add(discrete_column(model.variables()[i], columns[i]));
+  return out;
+}
+
+TEST(learn_dynamic_structure_test, the_bootstrap_resamples_whole_episodes_and_counts_each_arc) {
+  const auto model = persisting_chain();
+  const auto data = testing::sample_long_form(model, 120, 6, 9);  // episodes in order: k is codes[k]
+  const std::vector<std::string> names{"a", "b", "c"};
+  const auto learner = make_structure_learner("hc");
+  const bootstrap_options options{.replicates = 12, .seed = 5};
+  const auto result = bootstrap_dynamic_structure(data.data, names, learner, {.threads = 1}, options);
+  // Each replicate again, its episodes drawn as the bootstrap draws them but put together here.
+  std::map<std::pair<std::string, std::string>, double> adjacent, forward;
+  for (std::size_t r = 0; r < options.replicates; ++r) {
+    const auto picked = detail::bootstrap_draw(options.seed, r, data.codes.size());
+    const auto learned = learn_dynamic_structure(episodes_by_hand(data, model, picked), names, learner);
+    for (const auto& e : learned.learned.edges) {
+      forward[{e.from, e.to}] += 1.0;
+      adjacent[{e.from, e.to}] += 1.0;
+      adjacent[{e.to, e.from}] += 1.0;
+    }
+  }
+  ASSERT_EQ(result.arcs.arcs.size(), 6u * 5u);  // ordered pairs of a@-1, b@-1, c@-1, a, b, c
+  for (const auto& arc : result.arcs.arcs) {
+    SCOPED_TRACE(arc.from + "->" + arc.to);
+    const double together = adjacent[{arc.from, arc.to}];
+    EXPECT_DOUBLE_EQ(arc.strength, together / 12.0);
+    const double direction = together > 0 ? forward[{arc.from, arc.to}] / together : 0.0;
+    EXPECT_DOUBLE_EQ(arc.direction, direction);
+    if (arc.to.find('@') != std::string::npos) {
+      EXPECT_EQ(arc.direction, 0.0);  // no arc runs into the previous slice
+    }
+  }
+  EXPECT_THAT(result.arcs.averaged, Contains(named_edge{"a@-1", "a"}));
+  EXPECT_THAT(result.structure.transition.edges(), Contains(named_edge{"a@-1", "a"}));
+  // The same for any number of threads.
+  const auto two = bootstrap_dynamic_structure(data.data, names, learner, {.threads = 2}, options);
+  EXPECT_EQ(two.structure, result.structure);
+  EXPECT_THROW(static_cast<void>(bootstrap_dynamic_structure(data.data, names, learner, {}, {.replicates = 0})),
+               model_error);
+}
+
 using learn_dynamic_structure_cli_test = pgm::testing::program_test;
 
 // pgm learn-structure --dynamic prints the learned edges as --edges reads them and writes the
@@ -104,9 +163,18 @@ TEST_F(learn_dynamic_structure_cli_test, prints_the_edges_and_writes_the_fitted_
       {read.discrete("a").var(), read.discrete("b").var(), read.discrete("c").var()}, parse_edge_list("a@-1->a, a->b"));
   const auto written = parse_dynamic_json(slurp(path("chain.json")), "chain.json");
   EXPECT_EQ(written, fit_dynamic(structure, read));
+  // --bootstrap: the arcs' strengths, and the averaged network's model.
+  const auto boot = run("learn-structure --dynamic --algorithm hc --bootstrap 10 --seed 3 --data " + data.string() +
+                        " --out " + path("averaged.json").string());
+  ASSERT_EQ(boot.code, 0) << boot.err;
+  EXPECT_THAT(boot.out, ::testing::HasSubstr("hc on 10 bootstrap resamples of the episodes"));
+  EXPECT_THAT(boot.out, ::testing::HasSubstr("a@-1 -> a  strength 1  direction 1"));
+  const auto averaged = bootstrap_dynamic_structure(read, std::vector<std::string>{"a", "b", "c"},
+                                                    make_structure_learner("hc"), {}, {.replicates = 10, .seed = 3});
+  EXPECT_EQ(parse_dynamic_json(slurp(path("averaged.json")), "averaged.json"), fit_dynamic(averaged.structure, read));
   expect_failure(
-      "learn-structure --dynamic --bootstrap 5 --data " + data.string() + " --out " + path("no.json").string(),
-      "--dynamic: --bootstrap is not available", path("no.json"));
+      "learn-structure --dynamic --threshold 0.5 --data " + data.string() + " --out " + path("no.json").string(),
+      "--threshold applies with --bootstrap", path("no.json"));
 }
 
 }  // namespace learn_dynamic_structure_test

@@ -65,6 +65,18 @@ namespace detail {
 /// bnlearn's L1 threshold over the strengths of every ordered pair.
 [[nodiscard]] PGM_DECL double l1_threshold(std::vector<double> strengths);
 
+/// Replicate r's draw of `count` indices in [0, count) with replacement, from `seed`.
+[[nodiscard]] PGM_DECL std::vector<std::size_t> bootstrap_draw(std::uint64_t seed, std::size_t r, std::size_t count);
+
+/// The strengths, threshold and averaged network of the replicates' arcs: found[r][i·n + j] is
+/// 1 where replicate r learned names[i] -> names[j].
+[[nodiscard]] PGM_DECL bootstrap_result summarize_replicates(std::span<const std::string> names,
+                                                             const std::vector<std::vector<unsigned char>>& found,
+                                                             const bootstrap_options& options);
+
+/// Throws model_error for no replicates or a threshold outside [0, 1].
+PGM_DECL void check_bootstrap_options(const bootstrap_options& options);
+
 }  // namespace detail
 
 /// Learns with `learner` on `options.replicates` bootstrap resamples of the named columns, in

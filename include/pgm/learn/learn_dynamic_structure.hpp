@@ -14,6 +14,7 @@
 #include "pgm/core/network_structure.hpp"
 #include "pgm/data/dataset.hpp"
 #include "pgm/data/episodes.hpp"
+#include "pgm/learn/bootstrap.hpp"
 #include "pgm/learn/fit_dynamic.hpp"
 #include "pgm/learn/learn_structure.hpp"
 
@@ -54,6 +55,23 @@ template <StructureLearner L>
   auto structure = dynamic_structure_of(templates, learned.edges);
   return {std::move(structure), std::move(learned)};
 }
+
+struct dynamic_bootstrap_result {
+  /// The averaged network's structure.
+  dynamic_structure structure;
+  /// Every arc's strength and direction over the two slices' variables (`X@-1` and X), and the
+  /// averaged network's arcs among them.
+  bootstrap_result arcs;
+};
+
+/// learn_dynamic_structure on `options.replicates` bootstrap resamples of the episodes (whole
+/// episodes drawn with replacement, so that a step keeps the step before it; each replicate
+/// seeded by the seed and its number, in parallel on `context.threads`), then the arcs'
+/// strengths and the averaged network as bootstrap_structure gives them: the result is the
+/// same for any number of threads. Throws as learn_dynamic_structure and bootstrap_structure do.
+[[nodiscard]] PGM_DECL dynamic_bootstrap_result bootstrap_dynamic_structure(
+    const dataset& data, std::span<const std::string> names, const structure_learner& learner,
+    const structure_context& context, const bootstrap_options& options, const episode_columns& columns = {});
 
 }  // namespace pgm
 

@@ -74,6 +74,22 @@ std::string edge_list_text(const std::vector<named_edge>& edges) {
   return text::join(shown);
 }
 
+/// Every arc seen in a resample with its strength and direction, then the averaged network.
+std::string strengths_text(const bootstrap_result& result, bool threshold_given) {
+  std::ostringstream out;
+  out << "arc strengths (adjacent in a fraction of the resamples; direction: the fraction of those with the arc):\n";
+  for (const auto& a : result.arcs) {
+    if (a.strength > 0 && a.direction > 0) {
+      out << "  " << a.from << " -> " << a.to << "  strength " << text::format_short(a.strength, 4) << "  direction "
+          << text::format_short(a.direction, 4) << '\n';
+    }
+  }
+  out << "averaged network at threshold " << text::format_short(result.threshold, 4)
+      << (threshold_given ? "" : " (bnlearn's L1 rule)") << " (" << result.averaged.size() << " edges):\n";
+  for (const auto& e : result.averaged) out << "  " << e.from << " -> " << e.to << '\n';
+  return out.str();
+}
+
 /// pgm learn-structure --dynamic: a dynamic network's structure from episodes in long form, by any
 /// learner over the transitions' data, its tables then fitted by MLE.
 void run_dynamic_learn(const learn_structure_arguments& args, const structure_learner& learner,
@@ -81,7 +97,6 @@ void run_dynamic_learn(const learn_structure_arguments& args, const structure_le
   const auto refuse = [](bool given, const std::string& option) {
     if (given) throw error("--dynamic: " + option + " is not available for dynamic networks yet");
   };
-  refuse(args.bootstrap > 0, "--bootstrap");
   refuse(!args.prior_model.empty(), "--prior-model");
   refuse(!args.start.empty(), "--start");
   refuse(args.missing.policy == "drop", "--missing drop (it would leave gaps in the episodes)");
@@ -95,11 +110,24 @@ void run_dynamic_learn(const learn_structure_arguments& args, const structure_le
     if (name != columns.episode && name != columns.step) names.push_back(name);
   }
   if (names.empty()) throw data_error("'" + args.data + "' has no column besides the episode and the step");
-  const auto learned = learn_dynamic_structure(data, names, learner, context, columns);
-  const auto counts = count_dynamic(learned.structure, data, columns);
-  const auto model = fit_dynamic(learned.structure, counts);
-  const auto& edges = learned.learned.edges;
   std::ostringstream out;
+  dynamic_structure structure;
+  std::vector<named_edge> edges;
+  if (args.bootstrap > 0) {
+    auto result = bootstrap_dynamic_structure(data, names, learner, context,
+                                              {args.bootstrap, args.seed, args.threshold}, columns);
+    out << learner.name() << " on " << result.arcs.replicates << " bootstrap resamples of the episodes\n"
+        << strengths_text(result.arcs, args.threshold.has_value());
+    structure = std::move(result.structure);
+    edges = std::move(result.arcs.averaged);
+  } else {
+    if (args.threshold) throw error("--threshold applies with --bootstrap");
+    auto learned = learn_dynamic_structure(data, names, learner, context, columns);
+    structure = std::move(learned.structure);
+    edges = std::move(learned.learned.edges);
+  }
+  const auto counts = count_dynamic(structure, data, columns);
+  const auto model = fit_dynamic(structure, counts);
   out << learner.name() << " over " << names.size() << " template variables and the step before each, from "
       << counts.episodes << " episodes (" << counts.steps << " steps): " << edges.size() << " edges -> " << args.out
       << "\n  --edges \"" << edge_list_text(edges) << "\"\n";
@@ -197,17 +225,8 @@ void write_bootstrap(const learn_structure_arguments& args, const structure_lear
   const auto result = bootstrap_structure(data, names, learner, context, {args.bootstrap, args.seed, args.threshold});
   std::ostringstream out;
   out << learner.name() << " on " << result.replicates << " bootstrap resamples of " << data.rows() << " rows, "
-      << data.size() << " variables\n";
-  out << "arc strengths (adjacent in a fraction of the resamples; direction: the fraction of those with the arc):\n";
-  for (const auto& a : result.arcs) {
-    if (a.strength > 0 && a.direction > 0) {
-      out << "  " << a.from << " -> " << a.to << "  strength " << text::format_short(a.strength, 4) << "  direction "
-          << text::format_short(a.direction, 4) << '\n';
-    }
-  }
-  out << "averaged network at threshold " << text::format_short(result.threshold, 4)
-      << (args.threshold ? "" : " (bnlearn's L1 rule)") << " (" << result.averaged.size() << " edges):\n";
-  for (const auto& e : result.averaged) out << "  " << e.from << " -> " << e.to << '\n';
+      << data.size() << " variables\n"
+      << strengths_text(result, args.threshold.has_value());
 
   std::vector<variable> variables;
   for (const auto& name : names) variables.push_back(data.discrete(name).var());
@@ -492,7 +511,7 @@ void add_learn_structure_command(CLI::App& app) {
                 "Learn a dynamic network (a 2-TBN) from episodes in long form (columns episode, t and the variables): "
                 "the learner runs over each step's variables and the step before's (x@-1), which stay roots, so an "
                 "edge between slices runs forward; the first slice takes the edges within a slice. --tiers, --forbid "
-                "and --require name both slices' variables (\"a@-1->b\")");
+                "and --require name both slices' variables (\"a@-1->b\"); --bootstrap resamples whole episodes");
   add_missing_options(*cmd, args->missing);
   cmd->callback([args] { run_learn_structure(*args); });
 }

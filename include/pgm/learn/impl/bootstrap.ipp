@@ -76,38 +76,53 @@ namespace pgm {
 PGM_DECL bootstrap_result bootstrap_structure(const dataset& data, std::span<const std::string> names,
                                               const structure_learner& learner, const structure_context& context,
                                               const bootstrap_options& options) {
+  detail::check_bootstrap_options(options);
+  const std::size_t n = names.size();
+  std::vector<std::vector<unsigned char>> found(options.replicates);
+  auto inner = context;
+  inner.threads = 1;  // the replicates run in parallel
+  detail::parallel_for(options.replicates, {.threads = context.threads}, [&](detail::item_range chunk) {
+    for (std::size_t r = chunk.begin; r < chunk.end; ++r) {
+      const auto resampled = detail::resample_rows(data, names, detail::bootstrap_draw(options.seed, r, data.rows()));
+      const auto learned = learn_structure(resampled, names, learner, inner);
+      std::vector<unsigned char> edges(n * n, 0);
+      dag index(std::vector<std::string>(names.begin(), names.end()));
+      for (const auto& e : learned.edges) edges[index.id(e.from).value() * n + index.id(e.to).value()] = 1;
+      found[r] = std::move(edges);
+    }
+  });
+  return detail::summarize_replicates(names, found, options);
+}
+
+}  // namespace pgm
+
+namespace pgm::detail {
+
+PGM_DECL void check_bootstrap_options(const bootstrap_options& options) {
   if (options.replicates == 0) throw model_error("the bootstrap needs at least one replicate");
   if (options.threshold && !(*options.threshold >= 0.0 && *options.threshold <= 1.0)) {
     throw model_error("the bootstrap threshold must lie between 0 and 1, got " +
                       text::format_short(*options.threshold));
   }
-  const std::size_t n = names.size();
-  const std::size_t rows = data.rows();
-  std::vector<std::vector<unsigned char>> found(options.replicates);
-  auto inner = context;
-  inner.threads = 1;  // the replicates run in parallel
-  static_cast<void>(detail::parallel_for(
-      options.replicates, {.threads = context.threads}, [] { return 0; },
-      [&](int&, detail::item_range chunk) {
-        for (std::size_t r = chunk.begin; r < chunk.end; ++r) {
-          std::uint64_t stream = detail::splitmix64(options.seed ^ detail::splitmix64(r + 0x5eed));
-          std::vector<std::size_t> picked(rows);
-          for (auto& p : picked) {
-            stream = detail::splitmix64(stream);
-            p = static_cast<std::size_t>(stream % rows);
-          }
-          const auto resampled = detail::resample_rows(data, names, picked);
-          const auto learned = learn_structure(resampled, names, learner, inner);
-          std::vector<unsigned char> edges(n * n, 0);
-          dag index(std::vector<std::string>(names.begin(), names.end()));
-          for (const auto& e : learned.edges) edges[index.id(e.from).value() * n + index.id(e.to).value()] = 1;
-          found[r] = std::move(edges);
-        }
-      }));
+}
 
+PGM_DECL std::vector<std::size_t> bootstrap_draw(std::uint64_t seed, std::size_t r, std::size_t count) {
+  std::uint64_t stream = splitmix64(seed ^ splitmix64(r + 0x5eed));
+  std::vector<std::size_t> picked(count);
+  for (auto& p : picked) {
+    stream = splitmix64(stream);
+    p = static_cast<std::size_t>(stream % count);
+  }
+  return picked;
+}
+
+PGM_DECL bootstrap_result summarize_replicates(std::span<const std::string> names,
+                                               const std::vector<std::vector<unsigned char>>& found,
+                                               const bootstrap_options& options) {
+  const std::size_t n = names.size();
   bootstrap_result result;
-  result.replicates = options.replicates;
-  const auto reps = static_cast<double>(options.replicates);
+  result.replicates = found.size();
+  const auto reps = static_cast<double>(found.size());
   std::vector<double> strengths;
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = 0; j < n; ++j) {
@@ -123,7 +138,7 @@ PGM_DECL bootstrap_result bootstrap_structure(const dataset& data, std::span<con
       strengths.push_back(adjacent / reps);
     }
   }
-  result.threshold = options.threshold ? *options.threshold : detail::l1_threshold(strengths);
+  result.threshold = options.threshold ? *options.threshold : l1_threshold(strengths);
 
   // The averaged network: significant arcs, strongest first, without cycles or both directions.
   std::vector<std::size_t> significant;
@@ -153,4 +168,4 @@ PGM_DECL bootstrap_result bootstrap_structure(const dataset& data, std::span<con
   return result;
 }
 
-}  // namespace pgm
+}  // namespace pgm::detail
