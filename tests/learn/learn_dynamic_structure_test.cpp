@@ -172,6 +172,21 @@ TEST_F(learn_dynamic_structure_cli_test, prints_the_edges_and_writes_the_fitted_
   const auto averaged = bootstrap_dynamic_structure(read, std::vector<std::string>{"a", "b", "c"},
                                                     make_structure_learner("hc"), {}, {.replicates = 10, .seed = 3});
   EXPECT_EQ(parse_dynamic_json(slurp(path("averaged.json")), "averaged.json"), fit_dynamic(averaged.structure, read));
+  // A structure prior from a static network, mapped onto both slices: c is noise, but a prior
+  // that swamps the data keeps c -> b; b -> c@-1, an edge into the previous slice, is dropped.
+  const auto prior = file(
+      "prior.json",
+      to_json(network_structure({variable("c0", {"0", "1"}), variable("c1", {"0", "1"}), variable("b1", {"0", "1"})},
+                                {{"c1", "b1"}, {"b1", "c0"}}))
+          .dump());
+  const auto favoured =
+      run("learn-structure --dynamic --algorithm hc --data " + data.string() + " --prior-model " + prior.string() +
+          " --map 'b=b1, c==c1, c@-1==c0' --prior-weight 1000 --out " + path("favoured.json").string());
+  ASSERT_EQ(favoured.code, 0) << favoured.err;
+  EXPECT_THAT(favoured.err, ::testing::HasSubstr("the structure prior favours 1 edge(s) by 1000 each: c->b"));
+  const auto learned = structure_of(parse_dynamic_json(slurp(path("favoured.json")), "favoured.json"));
+  EXPECT_THAT(learned.transition.edges(), Contains(named_edge{"c", "b"}));
+  EXPECT_THAT(learned.initial.edges(), Contains(named_edge{"c", "b"}));
   expect_failure(
       "learn-structure --dynamic --threshold 0.5 --data " + data.string() + " --out " + path("no.json").string(),
       "--threshold applies with --bootstrap", path("no.json"));

@@ -67,6 +67,29 @@ struct learn_structure_arguments {
   bool dynamic = false;
 };
 
+/// --prior-model and --map: the prior network's edges carried over to `target` (the learned
+/// variables' names), favoured by --prior-weight each in the score of the search.
+void add_structure_prior(const learn_structure_arguments& args, const std::vector<std::string>& target,
+                         structure_context& context) {
+  if (args.prior_model.empty()) {
+    if (!args.map.empty()) throw error("--map applies with --prior-model");
+    return;
+  }
+  const auto prior_structure = read_model_file(args.prior_model).structure;
+  const auto map = args.map.empty() ? correspondence{} : parse_correspondence(args.map);
+  for (const auto& [t, p] : map.transferred) require_prior_variable(prior_structure, p, args.prior_model);
+  for (const auto& [t, p] : map.identical) require_prior_variable(prior_structure, p, args.prior_model);
+  for (const auto& [t, p] : map.related) require_prior_variable(prior_structure, p, args.prior_model);
+  context.favoured = mapped_prior_edges(prior_structure.edges(), map, target);
+  // An edge into the previous slice cannot be learned (a dynamic network's edges run forward).
+  std::erase_if(context.favoured, [](const named_edge& e) { return e.to.find('@') != std::string::npos; });
+  context.favour_weight = args.prior_weight;
+  std::vector<std::string> shown;
+  for (const auto& e : context.favoured) shown.push_back(e.from + "->" + e.to);
+  note("the structure prior favours " + std::to_string(shown.size()) + " edge(s) by " +
+       text::format_short(args.prior_weight) + " each" + (shown.empty() ? "" : ": " + text::join(shown)));
+}
+
 /// "a->b, a@-1->b", as --edges reads them.
 std::string edge_list_text(const std::vector<named_edge>& edges) {
   std::vector<std::string> shown;
@@ -97,7 +120,6 @@ void run_dynamic_learn(const learn_structure_arguments& args, const structure_le
   const auto refuse = [](bool given, const std::string& option) {
     if (given) throw error("--dynamic: " + option + " is not available for dynamic networks yet");
   };
-  refuse(!args.prior_model.empty(), "--prior-model");
   refuse(!args.start.empty(), "--start");
   refuse(args.missing.policy == "drop", "--missing drop (it would leave gaps in the episodes)");
   const episode_columns columns;
@@ -110,11 +132,16 @@ void run_dynamic_learn(const learn_structure_arguments& args, const structure_le
     if (name != columns.episode && name != columns.step) names.push_back(name);
   }
   if (names.empty()) throw data_error("'" + args.data + "' has no column besides the episode and the step");
+  std::vector<std::string> both;  // the learner's variables: the step before's, then this step's
+  for (const auto& name : names) both.push_back(slice_name(name, -1));
+  both.insert(both.end(), names.begin(), names.end());
+  auto with_prior = context;
+  add_structure_prior(args, both, with_prior);
   std::ostringstream out;
   dynamic_structure structure;
   std::vector<named_edge> edges;
   if (args.bootstrap > 0) {
-    auto result = bootstrap_dynamic_structure(data, names, learner, context,
+    auto result = bootstrap_dynamic_structure(data, names, learner, with_prior,
                                               {args.bootstrap, args.seed, args.threshold}, columns);
     out << learner.name() << " on " << result.arcs.replicates << " bootstrap resamples of the episodes\n"
         << strengths_text(result.arcs, args.threshold.has_value());
@@ -122,7 +149,7 @@ void run_dynamic_learn(const learn_structure_arguments& args, const structure_le
     edges = std::move(result.arcs.averaged);
   } else {
     if (args.threshold) throw error("--threshold applies with --bootstrap");
-    auto learned = learn_dynamic_structure(data, names, learner, context, columns);
+    auto learned = learn_dynamic_structure(data, names, learner, with_prior, columns);
     structure = std::move(learned.structure);
     edges = std::move(learned.learned.edges);
   }
@@ -328,21 +355,7 @@ void run_learn_structure(const learn_structure_arguments& args) {
   }
   const auto data = read_discrete_data(args.data, {}, {.missing = missing_of(args.missing)});
   if (data.size() < 2) throw data_error("'" + args.data + "' has fewer than two columns; nothing to learn");
-  if (!args.prior_model.empty()) {
-    const auto prior_structure = read_model_file(args.prior_model).structure;
-    const auto map = args.map.empty() ? correspondence{} : parse_correspondence(args.map);
-    for (const auto& [t, p] : map.transferred) require_prior_variable(prior_structure, p, args.prior_model);
-    for (const auto& [t, p] : map.identical) require_prior_variable(prior_structure, p, args.prior_model);
-    for (const auto& [t, p] : map.related) require_prior_variable(prior_structure, p, args.prior_model);
-    context.favoured = mapped_prior_edges(prior_structure.edges(), map, data.names());
-    context.favour_weight = args.prior_weight;
-    std::vector<std::string> shown;
-    for (const auto& e : context.favoured) shown.push_back(e.from + "->" + e.to);
-    note("the structure prior favours " + std::to_string(shown.size()) + " edge(s) by " +
-         text::format_short(args.prior_weight) + " each" + (shown.empty() ? "" : ": " + text::join(shown)));
-  } else if (!args.map.empty()) {
-    throw error("--map applies with --prior-model");
-  }
+  add_structure_prior(args, data.names(), context);
   if (args.bootstrap > 0) {
     write_bootstrap(args, learner, context, data);
     return;
@@ -471,7 +484,8 @@ void add_learn_structure_command(CLI::App& app) {
   cmd->add_option("--prior-model", args->prior_model,
                   "A related task's network (" + network_file_kinds() +
                       "): favour the edges that --map carries over "
-                      "to this data's variables (hc, tabu, mmhc)");
+                      "to this data's variables (hc, tabu, mmhc; with --dynamic, to both slices' "
+                      "variables: \"b=b1, a@-1==a1\")");
   cmd->add_option("--map", args->map,
                   "Correspondence of this data's variables (left) to the prior's (right), as pgm fit's: "
                   "\"onTop2=onTop1,xOff2~xOff1\"; variables with equal names correspond without an entry");
