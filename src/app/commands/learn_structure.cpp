@@ -68,7 +68,8 @@ struct learn_structure_arguments {
 };
 
 /// --prior-model and --map: the prior network's edges carried over to `target` (the learned
-/// variables' names), favoured by --prior-weight each in the score of the search.
+/// variables' names), favoured by --prior-weight each in the score of the search. With
+/// --dynamic, an edge into the previous slice is left out: no learner may add it.
 void add_structure_prior(const learn_structure_arguments& args, const std::vector<std::string>& target,
                          structure_context& context) {
   if (args.prior_model.empty()) {
@@ -81,8 +82,9 @@ void add_structure_prior(const learn_structure_arguments& args, const std::vecto
   for (const auto& [t, p] : map.identical) require_prior_variable(prior_structure, p, args.prior_model);
   for (const auto& [t, p] : map.related) require_prior_variable(prior_structure, p, args.prior_model);
   context.favoured = mapped_prior_edges(prior_structure.edges(), map, target);
-  // An edge into the previous slice cannot be learned (a dynamic network's edges run forward).
-  std::erase_if(context.favoured, [](const named_edge& e) { return e.to.find('@') != std::string::npos; });
+  if (args.dynamic) {
+    std::erase_if(context.favoured, [](const named_edge& e) { return template_of(e.to) != e.to; });
+  }
   context.favour_weight = args.prior_weight;
   std::vector<std::string> shown;
   for (const auto& e : context.favoured) shown.push_back(e.from + "->" + e.to);
